@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package trailray needs to build, test and benchmark.
+# This is the only place dependencies are listed; each line says why.
+# Idempotent and non-interactive; uses sudo when not run as root.
+set -euo pipefail
+
+packages=(
+  # --- build ---
+  build-essential        # g++ 12 (C++20) and make
+  cmake                  # the build (3.25)
+  ninja-build            # fast incremental builds
+  pkg-config             # locating libraries from CMake
+  # --- libraries used by src/ ---
+  libexpat1-dev          # streaming XML parser for GPX/TCX: bounded memory, line/column errors, billion-laughs guard
+  zlib1g-dev             # reading .gpx.gz / .igc.gz / .tcx.gz transparently
+  libgeographiclib-dev   # WGS84 geodesic distances and local Cartesian frames (geo/)
+  libcli11-dev           # command-line parsing (app/)
+  libfmt-dev             # formatting of tables and messages
+  nlohmann-json3-dev     # correct JSON output of `stats --json`
+  # --- tests, sanitizers, fuzzing ---
+  libgtest-dev           # unit tests through ctest
+  clang                  # libFuzzer builds of the readers
+  libclang-rt-14-dev     # libFuzzer / sanitizer runtimes for clang 14
+  # --- conformance and benchmarks (peers we compare against) ---
+  python3-gpxpy          # conformance test: gpxpy's lengths and durations on every GPX in shared/data
+  gpsbabel               # benchmark peer
+  gdal-bin               # benchmark peer (ogr2ogr)
+  libbenchmark-dev       # micro-benchmarks in bench/
+  time                   # /usr/bin/time -v: peak memory in the benchmark
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

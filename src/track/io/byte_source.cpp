@@ -1,0 +1,203 @@
+#include "track/io/byte_source.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+
+namespace trailray::track {
+namespace {
+
+class GzFileSource final : public ByteSource {
+ public:
+  GzFileSource(gzFile f, std::string path, std::string name)
+      : ByteSource(std::move(path), std::move(name)), file_(f) {
+    gzbuffer(file_, 256 * 1024);
+  }
+  ~GzFileSource() override { gzclose(file_); }
+
+  std::ptrdiff_t read(char* out, std::size_t max) override {
+    int n = gzread(file_, out, static_cast<unsigned>(std::min<std::size_t>(max, 1u << 30)));
+    if (n < 0) {
+      int code = 0;
+      const char* msg = gzerror(file_, &code);
+      error_ = code == Z_ERRNO ? std::strerror(errno) : (msg ? msg : "read error");
+      if (code == Z_DATA_ERROR) error_ = "corrupt gzip data (" + error_ + ")";
+      return -1;
+    }
+    // A gzip stream cut short ends like a plain file; the format reader then sees the cut.
+    return n;
+  }
+  std::string error() const override { return error_; }
+
+ private:
+  gzFile file_;
+  std::string error_;
+};
+
+class MemorySource final : public ByteSource {
+ public:
+  MemorySource(std::string data, std::string name) : ByteSource(name, name), data_(std::move(data)) {}
+  std::ptrdiff_t read(char* out, std::size_t max) override {
+    std::size_t n = std::min(max, data_.size() - pos_);
+    std::memcpy(out, data_.data() + pos_, n);
+    pos_ += n;
+    return static_cast<std::ptrdiff_t>(n);
+  }
+  std::string error() const override { return error_; }
+
+ private:
+  std::string data_;
+  std::size_t pos_ = 0;
+  std::string error_;
+};
+
+bool is_gzip(const std::string& d) {
+  return d.size() >= 2 && static_cast<unsigned char>(d[0]) == 0x1f && static_cast<unsigned char>(d[1]) == 0x8b;
+}
+
+std::string gunzip(const std::string& in, bool& ok) {
+  std::string out;
+  z_stream zs{};
+  ok = inflateInit2(&zs, 16 + MAX_WBITS) == Z_OK;
+  if (!ok) return out;
+  zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  zs.avail_in = static_cast<uInt>(in.size());
+  char buf[65536];
+  int rc = Z_OK;
+  while (rc == Z_OK) {
+    zs.next_out = reinterpret_cast<Bytef*>(buf);
+    zs.avail_out = sizeof buf;
+    rc = inflate(&zs, Z_NO_FLUSH);
+    out.append(buf, sizeof buf - zs.avail_out);
+    if (rc == Z_BUF_ERROR && zs.avail_in == 0) break;  // cut short: keep what we have
+  }
+  ok = rc == Z_STREAM_END || rc == Z_BUF_ERROR;
+  inflateEnd(&zs);
+  return out;
+}
+
+}  // namespace
+
+std::unique_ptr<ByteSource> ByteSource::open(const std::string& path, std::string& error) {
+  if (path == "-") {
+    int fd = dup(STDIN_FILENO);
+    gzFile f = fd >= 0 ? gzdopen(fd, "rb") : nullptr;
+    if (!f) {
+      error = "cannot read standard input";
+      if (fd >= 0) close(fd);
+      return nullptr;
+    }
+    return std::unique_ptr<ByteSource>(new GzFileSource(f, path, "<stdin>"));
+  }
+  struct stat st {};
+  if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    error = "is a directory";
+    return nullptr;
+  }
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    error = std::strerror(errno);
+    return nullptr;
+  }
+  gzFile f = gzdopen(fd, "rb");
+  if (!f) {
+    close(fd);
+    error = "cannot open";
+    return nullptr;
+  }
+  return std::unique_ptr<ByteSource>(new GzFileSource(f, path, path));
+}
+
+std::unique_ptr<ByteSource> ByteSource::from_memory(std::string data, std::string display_name) {
+  if (is_gzip(data)) {
+    bool ok = false;
+    std::string plain = gunzip(data, ok);
+    data = std::move(plain);
+  }
+  return std::unique_ptr<ByteSource>(new MemorySource(std::move(data), std::move(display_name)));
+}
+
+std::string_view ByteSource::peek(std::size_t n) {
+  while (peeked_.size() - peeked_pos_ < n) {
+    char buf[4096];
+    std::ptrdiff_t got = read(buf, std::min(sizeof buf, n - (peeked_.size() - peeked_pos_)));
+    if (got <= 0) break;
+    peeked_.append(buf, static_cast<std::size_t>(got));
+  }
+  std::string_view v(peeked_);
+  v.remove_prefix(peeked_pos_);
+  return v.substr(0, n);
+}
+
+std::ptrdiff_t ByteSource::next(char* out, std::size_t max) {
+  if (peeked_pos_ < peeked_.size()) {
+    std::size_t n = std::min(max, peeked_.size() - peeked_pos_);
+    std::memcpy(out, peeked_.data() + peeked_pos_, n);
+    peeked_pos_ += n;
+    if (peeked_pos_ == peeked_.size()) {
+      peeked_.clear();
+      peeked_pos_ = 0;
+    }
+    return static_cast<std::ptrdiff_t>(n);
+  }
+  return read(out, max);
+}
+
+bool LineReader::fill() {
+  if (eof_) return false;
+  if (pos_ > 0) {
+    consumed_ += static_cast<std::int64_t>(pos_);
+    buf_.erase(0, pos_);
+    pos_ = 0;
+  }
+  char chunk[65536];
+  std::ptrdiff_t n = src_.next(chunk, sizeof chunk);
+  if (n < 0) failed_ = true;
+  if (n <= 0) {
+    eof_ = true;
+    return false;
+  }
+  buf_.append(chunk, static_cast<std::size_t>(n));
+  return true;
+}
+
+bool LineReader::next(std::string_view& line) {
+  current_.clear();
+  cut_ = false;
+  unterminated_ = false;
+  line_offset_ = consumed_ + static_cast<std::int64_t>(pos_);
+  bool any = false;
+  for (;;) {
+    if (pos_ >= buf_.size() && !fill()) {
+      if (!any) return false;
+      unterminated_ = true;
+      break;
+    }
+    any = true;
+    std::size_t end = buf_.find_first_of("\r\n", pos_);
+    std::size_t stop = end == std::string::npos ? buf_.size() : end;
+    std::size_t room = max_line_ > current_.size() ? max_line_ - current_.size() : 0;
+    if (stop - pos_ > room) cut_ = true;
+    current_.append(buf_, pos_, std::min(stop - pos_, room));
+    if (end == std::string::npos) {
+      pos_ = buf_.size();
+      continue;
+    }
+    pos_ = end + 1;
+    if (buf_[end] == '\r') {
+      if (pos_ >= buf_.size()) fill();
+      if (pos_ < buf_.size() && buf_[pos_] == '\n') ++pos_;
+    }
+    break;
+  }
+  ++line_no_;
+  line = current_;
+  return true;
+}
+
+}  // namespace trailray::track

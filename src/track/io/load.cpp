@@ -1,0 +1,44 @@
+#include "track/io/load.hpp"
+
+#include "track/io/byte_source.hpp"
+#include "track/io/format_detect.hpp"
+#include "track/io/readers.hpp"
+
+namespace trailray::track {
+
+void finish_read(ReadResult& result, const WarningCollector& warnings, const ReadOptions& options) {
+  result.warnings = warnings.diagnostics();
+  if (options.strict && !result.error && !result.warnings.empty()) {
+    result.error = result.warnings.front();
+    result.error->message += " (--strict)";
+  }
+}
+
+ReadResult load_track_file(const std::string& path, const ReadOptions& options) {
+  ReadResult result;
+  std::string open_error;
+  auto source = ByteSource::open(path, open_error);
+  const std::string name = path == "-" ? "<stdin>" : path;
+  if (!source) {
+    result.error = Diagnostic{name, {}, "cannot open: " + open_error};
+    return result;
+  }
+  std::string_view head = source->peek(4096);
+  if (head.empty()) {
+    result.error = Diagnostic{name, {}, source->error().empty() ? "file is empty" : "cannot read: " + source->error()};
+    return result;
+  }
+  auto format = detect_format(head, path);
+  if (!format) {
+    result.error = Diagnostic{name, {1, 1, 0}, "not a GPX, IGC or TCX file (unrecognised content)"};
+    return result;
+  }
+  switch (*format) {
+    case Format::Gpx: return read_gpx(*source, options);
+    case Format::Igc: return read_igc(*source, options);
+    case Format::Tcx: return read_tcx(*source, options);
+  }
+  return result;
+}
+
+}  // namespace trailray::track

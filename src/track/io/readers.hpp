@@ -1,0 +1,25 @@
+#pragma once
+// One reader per format. Each reads the whole source, never throws, and returns the file's
+// content with counted warnings, or an error naming the position. Points with invalid
+// coordinates (NaN, |lat|>90, |lon|>180) are dropped with a warning; a cut file keeps every
+// complete point before the cut, with a warning (an error under ReadOptions::strict).
+
+#include "track/diagnostics.hpp"
+#include "track/io/byte_source.hpp"
+
+namespace trailray::track {
+
+ReadResult read_gpx(ByteSource& source, const ReadOptions& options);
+ReadResult read_igc(ByteSource& source, const ReadOptions& options);
+ReadResult read_tcx(ByteSource& source, const ReadOptions& options);
+
+// True when lat/lon are finite and within WGS84 range.
+inline bool valid_coordinates(double lat, double lon) {
+  return lat >= -90.0 && lat <= 90.0 && lon >= -180.0 && lon <= 180.0;  // false for NaN
+}
+
+// Shared tail of every reader: applies `strict` (first warning becomes the error) and fills
+// result.warnings from the collector.
+void finish_read(ReadResult& result, const WarningCollector& warnings, const ReadOptions& options);
+
+}  // namespace trailray::track

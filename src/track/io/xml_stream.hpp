@@ -1,0 +1,63 @@
+#pragma once
+// A streaming XML reader over expat for the GPX and TCX readers: memory stays bounded by the
+// largest single value, not the file, and every event knows its line and column.
+//
+// Element names are given without their namespace prefix ("gpxtpx:hr" -> "hr"), so default,
+// prefixed and missing namespaces read alike. Hardened against hostile input: any DTD entity
+// declaration is rejected (no entity expansion at all), nesting deeper than kMaxDepth and
+// values longer than kMaxValueBytes are errors.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "track/diagnostics.hpp"
+#include "track/io/byte_source.hpp"
+
+namespace trailray::track {
+
+class XmlHandler {
+ public:
+  virtual ~XmlHandler() = default;
+  // `attrs` is expat's null-terminated name/value array (names with their prefix).
+  virtual void start_element(std::string_view local_name, const char** attrs) = 0;
+  // `text` is the character data since the element (or its last child) started, untrimmed.
+  virtual void end_element(std::string_view local_name, std::string_view text) = 0;
+
+  // Position of the current event (inside a callback), for warnings.
+  SourcePosition position() const;
+  // Stops parsing with an error at the current position (inside a callback).
+  void fail(std::string message);
+
+ private:
+  friend class XmlStream;
+  void* context_ = nullptr;
+};
+
+// Local name of an attribute in expat's array, nullptr if absent.
+const char* xml_attribute(const char** attrs, std::string_view local_name);
+// "prefix:name" -> "name".
+std::string_view xml_local_name(std::string_view qualified);
+
+struct XmlParseOutcome {
+  enum class Kind {
+    Complete,   // the document ended properly
+    Truncated,  // the input ended inside the document (a cut file): events so far are valid
+    Error       // malformed, hostile or unreadable
+  } kind = Kind::Complete;
+  SourcePosition position;  // where the error or the cut was found
+  std::string message;      // what was wrong (empty when Complete)
+  bool saw_root = false;    // at least one element started
+};
+
+class XmlStream {
+ public:
+  static constexpr int kMaxDepth = 256;
+  static constexpr std::size_t kMaxValueBytes = 1 << 20;
+
+  // Parses the whole source, calling `handler`. Never throws.
+  static XmlParseOutcome parse(ByteSource& source, XmlHandler& handler);
+};
+
+}  // namespace trailray::track
