@@ -1,7 +1,37 @@
 #include "app/cli.hpp"
 
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/stats_command.hpp"
+
 namespace trailray::app {
 
-int run_cli(int, char**) { return 0; }
+int run_cli(int argc, char** argv) {
+  CLI::App app{"trailray: GPS tracks (GPX, IGC, TCX) in 3D on real terrain", "trailray"};
+  app.set_version_flag("--version", std::string("trailray ") + TRAILRAY_VERSION);
+  app.require_subcommand(1);
+  app.footer("Run `trailray COMMAND --help` for the options of a command.");
+
+  int exit_code = 0;
+  add_stats_command(app, exit_code);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;  // usage error
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "trailray: error: {}\n", e.what());
+    return 1;
+  }
+  return exit_code;
+}
 
 }  // namespace trailray::app

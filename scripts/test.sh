@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Quick start, second command (and CI): set up, build and run every test: the Release build
+# with warnings as errors, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer,
+# and each fuzzer for a bounded time. Real data is read from ../shared/data when present.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+
+scripts/setup.sh
+
+echo "== Release build, all tests"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_WERROR=ON >/dev/null
+cmake --build build
+ctest --test-dir build --output-on-failure -j "$jobs"
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build, all tests"
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTRAILRAY_SANITIZE=ON -DTRAILRAY_WERROR=ON >/dev/null
+cmake --build build-asan
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build-asan --output-on-failure -j "$jobs"
+
+echo "== Fuzzers (bounded)"
+scripts/fuzz.sh "${TRAILRAY_FUZZ_SECONDS:-30}"

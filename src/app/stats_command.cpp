@@ -1,0 +1,65 @@
+#include "app/stats_command.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "app/stats_report.hpp"
+#include "app/track_options.hpp"
+
+namespace trailray::app {
+namespace {
+
+struct StatsArgs {
+  std::vector<std::string> files;
+  bool json = false;
+  TrackOptions track;
+};
+
+int run_stats(const StatsArgs& a) {
+  const bool progress = !a.json && a.files.size() > 1 && isatty(STDERR_FILENO) && !isatty(STDOUT_FILENO);
+  nlohmann::json doc;
+  doc["files"] = nlohmann::json::array();
+  int failed = 0;
+  for (std::size_t i = 0; i < a.files.size(); ++i) {
+    if (progress) fmt::print(stderr, "\r[{}/{}] {}\x1b[K", i + 1, a.files.size(), a.files[i]);
+    FileStats f = compute_file_stats(a.files[i], a.track.read, a.track.analysis);
+    if (progress) fmt::print(stderr, "\r\x1b[K");
+    for (const auto& w : f.warnings) fmt::print(stderr, "trailray: warning: {}\n", w);
+    if (f.error) {
+      fmt::print(stderr, "trailray: error: {}\n", *f.error);
+      ++failed;
+    }
+    if (a.json) {
+      doc["files"].push_back(file_stats_json(f));
+    } else if (!f.error) {
+      fmt::print("{}{}", i > 0 ? "\n" : "", file_stats_table(f));
+      std::fflush(stdout);
+    }
+  }
+  if (a.json) std::cout << doc.dump(2) << '\n';
+  if (failed > 0 && a.files.size() > 1)
+    fmt::print(stderr, "trailray: {} of {} files could not be read\n", failed, a.files.size());
+  return failed > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+void add_stats_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<StatsArgs>();
+  CLI::App* cmd = app.add_subcommand("stats", "Distance, time, climb and speeds per track and segment");
+  cmd->footer(
+      "Each track is measured twice: `raw` as recorded, and `clean` after dropping duplicate or backward\n"
+      "timestamps, enforcing --min-distance and Gaussian smoothing. The table shows clean figures;\n"
+      "--json prints both, per track and per segment. Exit status 1 when any file could not be read.");
+  cmd->add_option("TRACK", args->files, "GPX, IGC or TCX files (gzip too), or - for standard input")
+      ->required();
+  cmd->add_flag("--json", args->json, "Print one JSON document instead of tables");
+  add_track_options(*cmd, args->track);
+  cmd->callback([args, &exit_code] { exit_code = run_stats(*args); });
+}
+
+}  // namespace trailray::app

@@ -1,0 +1,35 @@
+#pragma once
+// What `trailray stats` prints, for one file: JSON and a human-readable table.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "track/diagnostics.hpp"
+#include "track/summary.hpp"
+
+namespace trailray::app {
+
+struct FileStats {
+  std::string path;                  // as given on the command line ("-" for stdin)
+  std::optional<track::Format> format;
+  std::vector<track::TrackSummary> tracks;
+  std::size_t routes = 0;
+  std::size_t waypoints = 0;
+  std::vector<std::string> warnings;  // "file:line:col: message"
+  std::optional<std::string> error;   // set when the file could not be read
+};
+
+// Reads, cleans and measures one file.
+FileStats compute_file_stats(const std::string& path, const track::ReadOptions& read,
+                             const track::AnalysisOptions& analysis);
+
+nlohmann::json statistics_json(const track::Statistics& s);
+nlohmann::json file_stats_json(const FileStats& f);
+
+// The table for one file (clean figures), ending in a newline.
+std::string file_stats_table(const FileStats& f);
+
+}  // namespace trailray::app
