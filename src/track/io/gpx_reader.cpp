@@ -172,7 +172,13 @@ class GpxHandler final : public XmlHandler {
   void set_channel(float& out, std::string_view text, std::string_view what) {
     double v = kMissing;
     set_number(v, text, what);
-    if (!std::isnan(v)) out = static_cast<float>(v);
+    if (std::isnan(v)) return;
+    // Converting a double beyond float range is undefined behaviour: refuse such values.
+    if (std::fabs(v) > 1e30) {
+      warnings_.add(std::string(what), position(), "absurd <" + std::string(what) + "> value ignored");
+      return;
+    }
+    out = static_cast<float>(v);
   }
 
   void end_point() {

@@ -172,6 +172,14 @@ TEST(GpxReader, UnreadableValuesWarnAndEmptyElevationIsSilentlyAbsent) {
   EXPECT_EQ(r.warnings[1].position.line, 2);
 }
 
+TEST(GpxReader, ChannelValueBeyondFloatRangeIsIgnored) {
+  ReadResult r = read(R"(<gpx><trk><trkseg><trkpt lat="1" lon="2"><extensions><hr>1e300</hr></extensions></trkpt></trkseg></trk></gpx>)");
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(std::isnan(r.file.tracks[0].segments[0].points[0].heart_rate));
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].message.find("absurd <hr>"), std::string::npos);
+}
+
 TEST(GpxReader, MalformedXmlNamesLineAndColumn) {
   ReadResult r = read("<gpx>\n<trk>\n  <trkseg></trk>\n</gpx>");
   ASSERT_FALSE(r.ok());
