@@ -1,11 +1,26 @@
 #pragma once
 // Derived per-point channels, computed on the CPU once and used by statistics and (later) the
 // renderer's colour attribute. Every value is finite or NaN ("no value": no time, no
-// elevation, or undefined like the glide ratio while climbing); never infinite.
+// elevation, too little data in the window, or undefined like the glide ratio while
+// climbing); never infinite.
 //
-// Rates are measured over windows, not between two noisy neighbours: speed and vertical speed
-// over a centred time window, steepness over a centred horizontal-distance window. Windows
-// stay inside one segment and do not stretch across a time gap longer than max_gap_s.
+// Distances: geodesic (WGS84) between consecutive points, computed once per pair. The 3D step
+// is sqrt(d2^2 + dz^2) where both points have an elevation, else the 2D step. Cumulative
+// distance starts at 0 and continues across segments; a segment gap adds nothing.
+//
+// Rates are measured over windows, not between two noisy neighbours:
+//   speed, vertical speed  centred time window: the points with |t - t_i| <= speed_window_s/2;
+//   steepness              centred distance window: |d - d_i| <= slope_window_m/2.
+// The rate is (value at the window's last point - value at its first) / (key difference), with
+// key = time or cumulative distance. When no point with a strictly smaller (larger) key lies in
+// the window, the window is widened to the nearest such point, so sparse recordings (e.g. one
+// point every 10 s with a 10 s window) still get a centred difference. A window never leaves
+// its run: a run is a stretch of one segment with keys that do not go backwards and without a
+// pause (two timed points more than max_gap_s apart). Undefined (NaN) when the window has no
+// key difference (< 1 ms or < 1 mm).
+// Speed uses the points with a time; vertical speed the points with a time and an elevation;
+// steepness the points with an elevation. Glide ratio = speed / sink rate while the sink rate
+// (-vertical speed) exceeds min_sink_for_glide_ms, NaN otherwise.
 
 #include <vector>
 
@@ -14,9 +29,10 @@
 namespace trailray::track {
 
 struct MetricsOptions {
-  double speed_window_s = 10.0;  // centred window for speed and vertical speed
-  double slope_window_m = 50.0;  // centred horizontal window for steepness
-  double max_gap_s = 60.0;       // a longer interval is a pause: windows do not cross it
+  double speed_window_s = 10.0;  // centred window for speed and vertical speed (full width)
+  double slope_window_m = 50.0;  // centred horizontal window for steepness (full width)
+  double max_gap_s = 60.0;       // a longer interval is a pause: windows do not cross it;
+                                 // <= 0 or not finite: no pause detection
   double min_sink_for_glide_ms = 0.1;  // glide ratio only while sinking faster than this
 };
 
@@ -29,13 +45,26 @@ struct SegmentMetrics {
   std::vector<double> vspeed_ms;      // vertical speed, m/s (positive = climbing)
   std::vector<double> slope_pct;      // steepness, percent (rise over run * 100)
   std::vector<double> glide_ratio;    // horizontal over sink speed, while sinking
+  MetricsOptions options;             // the options these channels were computed with
+
+  std::size_t size() const { return distance_m.size(); }
 };
 
 struct TrackMetrics {
   std::vector<SegmentMetrics> segments;  // parallel to Track::segments
+  MetricsOptions options;                // the options these channels were computed with
 };
 
-// Cumulative distance continues across segments (a gap adds nothing).
+// Cumulative distance continues across segments (a gap adds nothing). Elapsed time counts from
+// the track's first timestamp in file order (it can be negative on a raw track whose times jump
+// backwards).
 TrackMetrics compute_metrics(const Track& track, const MetricsOptions& options = {});
+
+// One segment on its own: cumulative distances start at `distance_offset_m` (2D) and
+// `distance_3d_offset_m`, elapsed time counts from `time_origin_s` (NaN: from the segment's
+// first timestamp).
+SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOptions& options = {},
+                                       double distance_offset_m = 0.0, double distance_3d_offset_m = 0.0,
+                                       double time_origin_s = kMissing);
 
 }  // namespace trailray::track

@@ -1,18 +1,38 @@
 #pragma once
 // Summary figures of a track or one segment, the numbers `trailray stats` prints.
-// Definitions (also in README):
-//   distance_2d_m   sum over segments of geodesic distances between consecutive points;
-//   distance_3d_m   the same with elevation differences where both points have elevation;
-//   duration_s      sum over segments of (last - first timestamp); absent without times;
-//   elapsed_s       last minus first timestamp over the whole track;
-//   moving_time_s   sum of intervals whose speed is at least moving_speed_kmh (pauses excluded);
-//   elevation_gain_m / loss_m   hysteresis: a climb or descent counts only once it exceeds
-//                   elevation_threshold_m from the last turning point (filters GPS noise);
-//   avg_speed_kmh   distance_2d / moving time;  max_speed_kmh, max_climb_ms, max_sink_ms from
-//                   the windowed channels of metrics.hpp (robust to single-point spikes).
+// Definitions (also in README). "Timed point": a point with a timestamp. Segment gaps are never
+// measured: nothing is added between the last point of one segment and the first of the next.
+//   points, segments  all points; all segments, empty ones included;
+//   distance_2d_m   sum over segments of the WGS84 geodesic distances between consecutive points;
+//   distance_3d_m   the same, each step sqrt(d^2 + dz^2) where both points have an elevation;
+//   duration_s      sum over segments of (last - first timestamp), taking each segment's first
+//                   and last timed points (a segment whose last time is before its first adds
+//                   0); absent when no segment has two timed points;
+//   elapsed_s       last minus first timestamp (file order) over the whole track; absent with
+//                   fewer than two timed points;
+//   moving_time_s   sum of the intervals between consecutive timed points of a segment with
+//                   0 < dt <= max_gap_s (the metrics' pause limit) whose speed is at least
+//                   moving_speed_kmh; an interval's speed is the mean of the windowed speeds
+//                   (metrics.hpp) at its two ends, or its own distance / dt where one of those
+//                   is undefined. Absent like duration_s;
+//   elevation_gain_m / loss_m   per segment over the points with an elevation, with hysteresis:
+//                   a climb (descent) counts only once the elevation has risen (fallen) more
+//                   than elevation_threshold_m above (below) the last turning point, and then
+//                   counts from that turning point to the next confirmed one (or to the highest
+//                   / lowest point reached at the segment's end); wiggles smaller than the
+//                   threshold count nothing. Absent when no segment has two elevations;
+//   min/max_elevation_m   over all points with an elevation;
+//   max_speed_kmh   largest windowed speed;  avg_speed_kmh  distance_2d / moving time (absent
+//                   when the moving time is 0 or absent);
+//   max_climb_ms, max_sink_ms   largest windowed vertical speed upwards / downwards (the sink as
+//                   a positive number, 0 when the track never descends); windowed channels are
+//                   robust to single-point spikes;
+//   bbox            latitude/longitude bounds of all points.
+// Absent values are std::nullopt (JSON null); no field is ever NaN or infinite.
 
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "geo/bounds.hpp"
 #include "track/metrics.hpp"
@@ -44,9 +64,19 @@ struct Statistics {
   std::optional<geo::LatLonBounds> bbox;
 };
 
+// `metrics` should come from compute_metrics(track); a segment whose metrics do not match its
+// point count is measured with freshly computed metrics (with metrics.options).
 Statistics track_statistics(const Track& track, const TrackMetrics& metrics,
                             const StatisticsOptions& options = {});
 Statistics segment_statistics(const Segment& segment, const SegmentMetrics& metrics,
                               const StatisticsOptions& options = {});
+
+// Elevation gain and loss of a sequence of elevations (NaN entries skipped) with the hysteresis
+// rule above. Returns {gain, loss}, both >= 0.
+struct GainLoss {
+  double gain_m = 0.0;
+  double loss_m = 0.0;
+};
+GainLoss elevation_gain_loss(const std::vector<double>& elevations, double threshold_m);
 
 }  // namespace trailray::track

@@ -1,0 +1,305 @@
+#include "track/clean.hpp"
+
+#include <GeographicLib/Geodesic.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "geo/geodesic.hpp"
+#include "geo/local_frame.hpp"
+
+namespace trailray::track {
+namespace {
+
+constexpr double kLat0 = 46.5;
+constexpr double kLon0 = 7.5;
+
+// A point `s` metres from (kLat0, kLon0) along azimuth `azimuth_deg` (0 = north).
+TrackPoint along(double s, double azimuth_deg = 0.0, double ele = kMissing, double time = kMissing) {
+  TrackPoint p;
+  GeographicLib::Geodesic::WGS84().Direct(kLat0, kLon0, azimuth_deg, s, p.lat, p.lon);
+  p.ele = ele;
+  p.time = time;
+  return p;
+}
+
+double dist(const TrackPoint& a, const TrackPoint& b) {
+  return geo::geodesic_distance_m(a.lat, a.lon, b.lat, b.lon);
+}
+
+Track one_segment(std::vector<TrackPoint> pts) {
+  Track t;
+  t.segments.push_back(Segment{std::move(pts)});
+  return t;
+}
+
+CleanOptions no_smoothing(double min_distance_m = 0.0) {
+  CleanOptions o;
+  o.min_distance_m = min_distance_m;
+  o.smooth = false;
+  return o;
+}
+
+TEST(Clean, DropsInvalidCoordinatesAndCountsThem) {
+  std::vector<TrackPoint> pts{along(0), along(10), along(20), along(30)};
+  TrackPoint nan_lat = along(15);
+  nan_lat.lat = std::nan("");
+  TrackPoint lat_91 = along(16);
+  lat_91.lat = 91.0;
+  TrackPoint lon_200 = along(17);
+  lon_200.lon = 200.0;
+  pts.insert(pts.begin() + 2, {nan_lat, lat_91, lon_200});
+
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(), r);
+  EXPECT_EQ(r.invalid_coordinates, 3u);
+  EXPECT_EQ(r.total_dropped(), 3u);
+  ASSERT_EQ(out.segments[0].points.size(), 4u);
+  for (const auto& p : out.segments[0].points) EXPECT_TRUE(std::isfinite(p.lat) && std::abs(p.lat) <= 90);
+}
+
+TEST(Clean, DropsDuplicateAndBackwardTimestampsKeepsUntimedPoints) {
+  // times: 0, 10, 10 (duplicate), 5 (backward), 20, none, 20 (not after the last kept 20), 30
+  const std::vector<double> times{0, 10, 10, 5, 20, kMissing, 20, 30};
+  std::vector<TrackPoint> pts;
+  for (std::size_t i = 0; i < times.size(); ++i) pts.push_back(along(10.0 * double(i), 0, kMissing, times[i]));
+
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(), r);
+  EXPECT_EQ(r.non_increasing_time, 3u);
+  EXPECT_EQ(r.invalid_coordinates, 0u);
+  EXPECT_EQ(r.too_close, 0u);
+  const auto& kept = out.segments[0].points;
+  ASSERT_EQ(kept.size(), 5u);
+  EXPECT_EQ(kept[0].time, 0);
+  EXPECT_EQ(kept[1].time, 10);
+  EXPECT_EQ(kept[2].time, 20);
+  EXPECT_TRUE(std::isnan(kept[3].time));
+  EXPECT_EQ(kept[4].time, 30);
+  // The kept points are the original ones, in order (the first of the duplicates stays).
+  EXPECT_EQ(kept[1].lat, pts[1].lat);
+  EXPECT_EQ(kept[2].lat, pts[4].lat);
+}
+
+TEST(Clean, TimeOrderIsCheckedPerSegmentNotAcrossTheGap) {
+  Track t;
+  t.segments.push_back(Segment{{along(0, 0, kMissing, 100), along(10, 0, kMissing, 110)}});
+  t.segments.push_back(Segment{{along(20, 0, kMissing, 50), along(30, 0, kMissing, 60)}});
+  CleanReport r;
+  const Track out = clean_track(t, no_smoothing(), r);
+  EXPECT_EQ(r.non_increasing_time, 0u);
+  EXPECT_EQ(out.segments[1].points.size(), 2u);
+}
+
+TEST(Clean, MinimumDistanceDropsRepeatedPositions) {
+  // A A A B B C (B 10 m, C 20 m from A), and a final D 30 m.
+  const std::vector<TrackPoint> pts{along(0), along(0), along(1), along(10), along(10), along(20), along(30)};
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(3.0), r);
+  EXPECT_EQ(r.too_close, 3u);
+  const auto& kept = out.segments[0].points;
+  ASSERT_EQ(kept.size(), 4u);
+  for (std::size_t i = 1; i < kept.size(); ++i) EXPECT_GE(dist(kept[i - 1], kept[i]), 3.0);
+  EXPECT_NEAR(dist(kept[0], kept[3]), 30.0, 1e-6);
+}
+
+TEST(Clean, LastPointReplacesThePreviousKeptPointWhenTooClose) {
+  const std::vector<TrackPoint> pts{along(0, 0, 1), along(10, 0, 2), along(11, 0, 3)};
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(3.0), r);
+  EXPECT_EQ(r.too_close, 1u);
+  const auto& kept = out.segments[0].points;
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0].ele, 1);
+  EXPECT_EQ(kept[1].ele, 3);  // the segment's last point survives
+}
+
+TEST(Clean, LastPointTooCloseToTheFirstKeepsBoth) {
+  const std::vector<TrackPoint> pts{along(0, 0, 1), along(1, 0, 2), along(2, 0, 3)};
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(3.0), r);
+  EXPECT_EQ(r.too_close, 1u);  // the middle one
+  const auto& kept = out.segments[0].points;
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0].ele, 1);
+  EXPECT_EQ(kept[1].ele, 3);
+}
+
+TEST(Clean, MinimumDistanceZeroDisables) {
+  const std::vector<TrackPoint> pts{along(0), along(0), along(0.5), along(1)};
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(0.0), r);
+  EXPECT_EQ(r.too_close, 0u);
+  EXPECT_EQ(out.segments[0].points.size(), 4u);
+}
+
+TEST(Clean, MinimumDistanceIsNotMeasuredAcrossSegments) {
+  Track t;
+  t.segments.push_back(Segment{{along(0), along(50)}});
+  t.segments.push_back(Segment{{along(50), along(100)}});  // starts where the first ended
+  CleanReport r;
+  const Track out = clean_track(t, no_smoothing(3.0), r);
+  EXPECT_EQ(r.too_close, 0u);
+  EXPECT_EQ(out.segments[1].points.size(), 2u);
+}
+
+TEST(Clean, EmptyAndTinySegmentsStayValid) {
+  Track t;
+  t.name = "n";
+  t.segments.push_back(Segment{});
+  t.segments.push_back(Segment{{along(0, 0, 500, 0)}});
+  t.segments.push_back(Segment{{along(0, 0, 500, 0), along(0, 0, 500, 1)}});  // identical positions
+  CleanReport r;
+  const Track out = clean_track(t, CleanOptions{}, r);
+  EXPECT_EQ(out.name, "n");
+  ASSERT_EQ(out.segments.size(), 3u);
+  EXPECT_TRUE(out.segments[0].points.empty());
+  ASSERT_EQ(out.segments[1].points.size(), 1u);
+  ASSERT_EQ(out.segments[2].points.size(), 2u);
+  EXPECT_EQ(out.segments[1].points[0].lat, t.segments[1].points[0].lat);
+  for (const auto& s : out.segments)
+    for (const auto& p : s.points) {
+      EXPECT_TRUE(std::isfinite(p.lat) && std::isfinite(p.lon) && std::isfinite(p.ele) && std::isfinite(p.time));
+    }
+  EXPECT_EQ(r.total_dropped(), 0u);
+}
+
+TEST(Clean, SmoothingKeepsAStraightLineStraightAndItsEndpoints) {
+  // 41 points north-east, 10 m apart, climbing 1 m per point.
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i <= 40; ++i) pts.push_back(along(10.0 * i, 45.0, 1000.0 + i, 1000.0 + i));
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), CleanOptions{}, r);
+  const auto& s = out.segments[0].points;
+  ASSERT_EQ(s.size(), pts.size());
+  EXPECT_EQ(s.front().lat, pts.front().lat);
+  EXPECT_EQ(s.front().lon, pts.front().lon);
+  EXPECT_EQ(s.front().ele, pts.front().ele);
+  EXPECT_EQ(s.back().lat, pts.back().lat);
+  EXPECT_EQ(s.back().lon, pts.back().lon);
+  EXPECT_EQ(s.back().ele, pts.back().ele);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    EXPECT_LT(dist(s[i], pts[i]), 0.01) << i;  // not pulled along or off the line
+    EXPECT_NEAR(s[i].ele, pts[i].ele, 1e-9) << i;
+    EXPECT_EQ(s[i].time, pts[i].time);
+  }
+}
+
+TEST(Clean, SmoothingReducesJitter) {
+  // A line due north with deterministic sideways and vertical noise of sigma 3 m.
+  std::mt19937 rng(42);
+  std::normal_distribution<double> noise(0.0, 3.0);
+  std::vector<TrackPoint> pts;
+  std::vector<double> true_ele;
+  for (int i = 0; i < 400; ++i) {
+    TrackPoint p = along(5.0 * i);
+    double lat = 0, lon = 0;
+    GeographicLib::Geodesic::WGS84().Direct(p.lat, p.lon, 90.0, noise(rng), lat, lon);
+    p.lat = lat;
+    p.lon = lon;
+    true_ele.push_back(1000.0 + 0.1 * i);
+    p.ele = true_ele.back() + noise(rng);
+    pts.push_back(p);
+  }
+  const geo::LocalFrame frame(kLat0, kLon0);
+  auto variances = [&](const std::vector<TrackPoint>& v) {
+    double east = 0, up = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      east += std::pow(frame.to_local(v[i].lat, v[i].lon, 0).east, 2);
+      up += std::pow(v[i].ele - true_ele[i], 2);
+    }
+    return std::pair{east / double(v.size()), up / double(v.size())};
+  };
+  CleanOptions o;
+  o.min_distance_m = 0.0;
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), o, r);
+  const auto [east_before, up_before] = variances(pts);
+  const auto [east_after, up_after] = variances(out.segments[0].points);
+  EXPECT_GT(east_before, 5.0);
+  EXPECT_LT(east_after, 0.5 * east_before);
+  EXPECT_LT(up_after, 0.5 * up_before);
+}
+
+TEST(Clean, ElevationIsSmoothedOnlyOverPointsThatHaveOne) {
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i < 20; ++i) pts.push_back(along(10.0 * i, 0, i % 3 == 1 ? kMissing : 500.0));
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), CleanOptions{}, r);
+  const auto& s = out.segments[0].points;
+  ASSERT_EQ(s.size(), pts.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (i % 3 == 1) {
+      EXPECT_FALSE(s[i].has_ele()) << i;
+    } else {
+      EXPECT_DOUBLE_EQ(s[i].ele, 500.0) << i;  // missing neighbours are not zeros
+    }
+  }
+}
+
+TEST(Clean, SmoothingDoesNotCrossSegmentBoundaries) {
+  Track t;
+  Segment low, high;
+  for (int i = 0; i < 10; ++i) low.points.push_back(along(10.0 * i, 0, 0.0));
+  for (int i = 10; i < 20; ++i) high.points.push_back(along(10.0 * i, 0, 1000.0));
+  t.segments = {low, high};
+  CleanReport r;
+  const Track out = clean_track(t, CleanOptions{}, r);
+  for (const auto& p : out.segments[0].points) EXPECT_DOUBLE_EQ(p.ele, 0.0);
+  for (const auto& p : out.segments[1].points) EXPECT_DOUBLE_EQ(p.ele, 1000.0);
+}
+
+TEST(Clean, SmoothingMovesACornerInward) {
+  // An L-shaped path: the corner point is pulled toward the inside, the ends stay.
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i <= 10; ++i) pts.push_back(along(10.0 * i, 0.0));
+  const TrackPoint corner = pts.back();
+  for (int i = 1; i <= 10; ++i) {
+    TrackPoint p;
+    GeographicLib::Geodesic::WGS84().Direct(corner.lat, corner.lon, 90.0, 10.0 * i, p.lat, p.lon);
+    pts.push_back(p);
+  }
+  CleanOptions o;
+  o.min_distance_m = 0.0;
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), o, r);
+  const auto& s = out.segments[0].points;
+  ASSERT_EQ(s.size(), pts.size());
+  EXPECT_GT(dist(s[10], corner), 2.0);
+  EXPECT_LT(s[10].lat, corner.lat);
+  EXPECT_GT(s[10].lon, corner.lon);
+  EXPECT_EQ(s.front().lat, pts.front().lat);
+  EXPECT_EQ(s.back().lon, pts.back().lon);
+}
+
+TEST(Clean, NonFiniteElevationOrTimeBecomesMissing) {
+  TrackPoint p = along(10, 0, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+  CleanReport r;
+  const Track out = clean_track(one_segment({along(0, 0, 1, 0), p, along(20, 0, 3, 2)}), no_smoothing(), r);
+  EXPECT_EQ(r.invalid_values, 1u);
+  EXPECT_EQ(r.total_dropped(), 0u);
+  ASSERT_EQ(out.segments[0].points.size(), 3u);
+  EXPECT_FALSE(out.segments[0].points[1].has_ele());
+  EXPECT_FALSE(out.segments[0].points[1].has_time());
+}
+
+TEST(Clean, ReportAddsUp) {
+  std::vector<TrackPoint> pts{along(0, 0, kMissing, 0), along(0, 0, kMissing, 0), along(1, 0, kMissing, 1),
+                              along(50, 0, kMissing, 2)};
+  TrackPoint bad = along(60);
+  bad.lon = std::nan("");
+  pts.push_back(bad);
+  pts.push_back(along(100, 0, kMissing, 3));
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), CleanOptions{}, r);
+  EXPECT_EQ(r.invalid_coordinates, 1u);
+  EXPECT_EQ(r.non_increasing_time, 1u);
+  EXPECT_EQ(r.too_close, 1u);
+  EXPECT_EQ(r.total_dropped(), 3u);
+  EXPECT_EQ(out.segments[0].points.size() + r.total_dropped(), pts.size());
+}
+
+}  // namespace
+}  // namespace trailray::track
