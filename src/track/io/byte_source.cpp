@@ -179,7 +179,14 @@ bool LineReader::next(std::string_view& line) {
       break;
     }
     any = true;
-    std::size_t end = buf_.find_first_of("\r\n", pos_);
+    // A plain scan: libstdc++'s find_first_of calls memchr once per byte scanned.
+    std::size_t end = std::string::npos;
+    for (std::size_t k = pos_; k < buf_.size(); ++k) {
+      if (buf_[k] == '\n' || buf_[k] == '\r') {
+        end = k;
+        break;
+      }
+    }
     std::size_t stop = end == std::string::npos ? buf_.size() : end;
     std::size_t room = max_line_ > current_.size() ? max_line_ - current_.size() : 0;
     if (stop - pos_ > room) cut_ = true;
