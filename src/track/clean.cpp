@@ -15,10 +15,25 @@ bool valid_coordinates(const TrackPoint& p) {
          std::abs(p.lon) <= 180.0;
 }
 
+// A segment whose clock never advances: at least 3 timestamps spanning less than 1 ms per point
+// (no GPS logs at 1 kHz; seen with placeholder times such as 1901-12-13T20:45:52Z).
+bool frozen_clock(const std::vector<TrackPoint>& in) {
+  std::size_t timed = 0;
+  double lo = 0.0, hi = 0.0;
+  for (const TrackPoint& p : in) {
+    if (!valid_coordinates(p) || !std::isfinite(p.time)) continue;
+    lo = timed == 0 ? p.time : std::min(lo, p.time);
+    hi = timed == 0 ? p.time : std::max(hi, p.time);
+    ++timed;
+  }
+  return timed >= 3 && hi - lo < 1e-3 * static_cast<double>(timed - 1);
+}
+
 // Steps 1 and 2: invalid coordinates, non-finite values, non-increasing timestamps.
 std::vector<TrackPoint> drop_invalid_and_unordered(const std::vector<TrackPoint>& in, CleanReport& report) {
   std::vector<TrackPoint> out;
   out.reserve(in.size());
+  const bool frozen = frozen_clock(in);
   double last_time = kMissing;  // the last kept timestamp of this segment
   for (TrackPoint p : in) {
     if (!valid_coordinates(p)) {
@@ -28,6 +43,10 @@ std::vector<TrackPoint> drop_invalid_and_unordered(const std::vector<TrackPoint>
     const bool repaired = std::isinf(p.ele) || std::isinf(p.time);
     if (std::isinf(p.ele)) p.ele = kMissing;
     if (std::isinf(p.time)) p.time = kMissing;
+    if (frozen && p.has_time()) {
+      p.time = kMissing;
+      ++report.frozen_time;
+    }
     if (p.has_time()) {
       if (!std::isnan(last_time) && !(p.time > last_time)) {
         ++report.non_increasing_time;
@@ -51,7 +70,9 @@ std::vector<TrackPoint> enforce_min_distance(const std::vector<TrackPoint>& in, 
   for (std::size_t i = 1; i < in.size(); ++i) {
     const TrackPoint& p = in[i];
     const TrackPoint& prev = out.back();
-    if (geo::geodesic_distance_m(prev.lat, prev.lon, p.lat, p.lon) >= min_distance_m) {
+    double d = geo::geodesic_distance_m(prev.lat, prev.lon, p.lat, p.lon);
+    if (prev.has_ele() && p.has_ele()) d = std::hypot(d, p.ele - prev.ele);
+    if (d >= min_distance_m) {
       out.push_back(p);
     } else if (i + 1 < in.size()) {
       ++report.too_close;
@@ -65,9 +86,10 @@ std::vector<TrackPoint> enforce_min_distance(const std::vector<TrackPoint>& in, 
   return out;
 }
 
-// Step 4: Gaussian smoothing with a symmetric, renormalised kernel.
-void smooth_gaussian(std::vector<TrackPoint>& pts, int half_width, double sigma) {
-  const std::size_t n = pts.size();
+// Step 4: Gaussian smoothing with a symmetric, renormalised kernel over pts[first, last).
+void smooth_gaussian(std::vector<TrackPoint>& pts, std::size_t first, std::size_t last, int half_width,
+                     double sigma) {
+  const std::size_t n = last - first;
   if (n < 3 || half_width <= 0 || !(sigma > 0.0) || !std::isfinite(sigma)) return;
   const std::size_t half = static_cast<std::size_t>(half_width);
 
@@ -77,13 +99,15 @@ void smooth_gaussian(std::vector<TrackPoint>& pts, int half_width, double sigma)
     weight[j] = std::exp(-x * x / (2.0 * sigma * sigma));
   }
 
-  const TrackPoint& first = pts.front();
-  const double h0 = first.has_ele() ? first.ele : 0.0;
-  const geo::LocalFrame frame(first.lat, first.lon, h0);
+  const TrackPoint& origin = pts[first];
+  const double h0 = origin.has_ele() ? origin.ele : 0.0;
+  const geo::LocalFrame frame(origin.lat, origin.lon, h0);
   std::vector<geo::Enu> enu(n);
-  for (std::size_t i = 0; i < n; ++i) enu[i] = frame.to_local(pts[i].lat, pts[i].lon, h0);
   std::vector<double> ele(n);
-  for (std::size_t i = 0; i < n; ++i) ele[i] = pts[i].ele;
+  for (std::size_t i = 0; i < n; ++i) {
+    enu[i] = frame.to_local(pts[first + i].lat, pts[first + i].lon, h0);
+    ele[i] = pts[first + i].ele;
+  }
 
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const std::size_t k = std::min({half, i, n - 1 - i});
@@ -100,11 +124,28 @@ void smooth_gaussian(std::vector<TrackPoint>& pts, int half_width, double sigma)
         ele_wsum += w;
       }
     }
+    TrackPoint& p = pts[first + i];
     const geo::Enu mean{sum.east / wsum, sum.north / wsum, sum.up / wsum};
     double h = 0.0;
-    frame.to_geodetic(mean, pts[i].lat, pts[i].lon, h);
-    if (pts[i].has_ele()) pts[i].ele = ele_sum / ele_wsum;  // ele_wsum includes the point itself
+    frame.to_geodetic(mean, p.lat, p.lon, h);
+    if (p.has_ele()) p.ele = ele_sum / ele_wsum;  // ele_wsum includes the point itself
   }
+}
+
+// Smooths each stretch between pauses (timed points more than max_gap_s apart) on its own.
+void smooth_pieces(std::vector<TrackPoint>& pts, const CleanOptions& o) {
+  const bool pauses = std::isfinite(o.max_gap_s) && o.max_gap_s > 0.0;
+  std::size_t start = 0;
+  double last_time = kMissing;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!pts[i].has_time()) continue;
+    if (pauses && !std::isnan(last_time) && pts[i].time - last_time > o.max_gap_s) {
+      smooth_gaussian(pts, start, i, o.smooth_half_width, o.smooth_sigma);
+      start = i;
+    }
+    last_time = pts[i].time;
+  }
+  smooth_gaussian(pts, start, pts.size(), o.smooth_half_width, o.smooth_sigma);
 }
 
 }  // namespace
@@ -113,7 +154,7 @@ Segment clean_segment(const Segment& segment, const CleanOptions& options, Clean
   Segment out;
   out.points = drop_invalid_and_unordered(segment.points, report);
   out.points = enforce_min_distance(out.points, options.min_distance_m, report);
-  if (options.smooth) smooth_gaussian(out.points, options.smooth_half_width, options.smooth_sigma);
+  if (options.smooth) smooth_pieces(out.points, options);
   return out;
 }
 

@@ -6,11 +6,15 @@
 //      becomes "missing" (NaN) and the point is kept.
 //   2. drop points whose timestamp is not strictly after the last kept timestamp of the
 //      segment (duplicates and backward jumps), so no speed downstream divides by zero or goes
-//      negative. Points without a time are kept.
-//   3. enforce a minimum geodesic distance between consecutive kept points (repeated positions
-//      and jitter while standing). The segment's last point is always kept: when it is too
-//      close to the previous kept point, it replaces that point, unless that point is the
-//      segment's first (then both stay). The first point is always kept.
+//      negative. Points without a time are kept. Exception, a frozen clock: when a segment's
+//      timestamps (at least 3) span less than 1 ms per point, they are placeholders (such as
+//      1901-12-13T20:45:52Z); its times are removed and its points kept.
+//   3. enforce a minimum distance between consecutive kept points (repeated positions and
+//      jitter while standing): the geodesic distance, combined with the elevation difference
+//      (sqrt(d^2 + dz^2)) where both points have an elevation, so that a vertical climb (a
+//      drone, a balloon, a thermal) is not collapsed. The segment's first point is always
+//      kept, and so is its last: when it is too close to the previous kept point, it replaces
+//      that point, unless that point is the segment's first (then both stay).
 //   4. Gaussian smoothing, weights exp(-j^2 / (2 sigma^2)) for offsets j = -N..N (in points):
 //      - positions in a local east-north-up frame (geo::LocalFrame) with its origin at the
 //        segment's first point; every point is projected at the origin's height, so the
@@ -22,7 +26,10 @@
 //        on both sides (half-width min(N, i, n-1-i)) and renormalised (divided by the sum of
 //        the weights used), so ends are not pulled inward: a segment's first and last points
 //        stay where they are and a straight, evenly sampled line stays straight and in place.
-//      Segments of one or two points are unchanged by smoothing.
+//      The kernel does not cross a pause or a loss of signal either: timed points more than
+//      max_gap_s apart split the segment into stretches that are smoothed on their own (the
+//      points on either side of the pause stay where they are), so positions kilometres apart
+//      in time are never averaged. Stretches of one or two points are unchanged by smoothing.
 // Times and the recorded extension channels are carried over unchanged.
 // Every dropped or repaired point is counted in CleanReport.
 
@@ -37,6 +44,8 @@ struct CleanOptions {
   bool smooth = true;
   int smooth_half_width = 5;    // N: the kernel spans 2N+1 points; 0 disables smoothing
   double smooth_sigma = 1.0;    // in points; <= 0 disables smoothing
+  double max_gap_s = 60.0;      // smoothing does not cross a longer interval; <= 0: no limit
+                                // (same meaning as MetricsOptions::max_gap_s)
 };
 
 struct CleanReport {
@@ -44,6 +53,7 @@ struct CleanReport {
   std::size_t non_increasing_time = 0;  // duplicate or backward timestamps dropped
   std::size_t too_close = 0;            // dropped by the minimum distance
   std::size_t invalid_values = 0;       // kept points whose non-finite elevation/time became missing
+  std::size_t frozen_time = 0;          // points whose placeholder timestamp was removed (kept)
   std::size_t total_dropped() const { return invalid_coordinates + non_increasing_time + too_close; }
 };
 

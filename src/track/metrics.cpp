@@ -36,29 +36,24 @@ struct Sample {
   bool run_start;
 };
 
-// out[sample.point] = d value / d key over the centred window |key - key_i| <= half, widened to
-// the nearest point with a strictly smaller / larger key, never leaving the run. O(n).
+// out[sample.point] = d value / d key over the window covering [key_i - half, key_i + half]:
+// from the nearest point at or before the left edge to the nearest point at or after the right
+// edge, each strictly before / after key_i, clipped to the run. O(n): both ends only move forward.
 void windowed_rate(const std::vector<Sample>& s, double half, double min_span, double scale,
                    std::vector<double>& out) {
   const std::size_t n = s.size();
-  std::vector<std::size_t> group_first(n), group_last(n);  // equal-key groups inside a run
-  for (std::size_t k = 0; k < n; ++k)
-    group_first[k] = (k > 0 && !s[k].run_start && s[k].key == s[k - 1].key) ? group_first[k - 1] : k;
-  for (std::size_t k = n; k-- > 0;)
-    group_last[k] = (k + 1 < n && !s[k + 1].run_start && s[k + 1].key == s[k].key) ? group_last[k + 1] : k;
-
   std::size_t a = 0;
   while (a < n) {
     std::size_t b = a + 1;
     while (b < n && !s[b].run_start) ++b;
-    std::size_t lo = a, hi = a;
+    std::size_t p = a;  // s[a, p): the points at or before the left edge, strictly before key_i
+    std::size_t q = a;  // first point at or after the right edge, strictly after key_i
     for (std::size_t k = a; k < b; ++k) {
-      while (s[lo].key < s[k].key - half) ++lo;
-      hi = std::max(hi, k);
-      while (hi + 1 < b && s[hi + 1].key <= s[k].key + half) ++hi;
-      std::size_t first = lo, last = hi;
-      if (group_first[k] > a) first = std::min(first, group_first[k] - 1);
-      if (group_last[k] + 1 < b) last = std::max(last, group_last[k] + 1);
+      const double key = s[k].key;
+      while (p < b && s[p].key <= key - half && s[p].key < key) ++p;
+      while (q < b && !(s[q].key >= key + half && s[q].key > key)) ++q;
+      const std::size_t first = p > a ? p - 1 : a;
+      const std::size_t last = q < b ? q : b - 1;
       const double span = s[last].key - s[first].key;
       if (span >= min_span) {
         const double rate = (s[last].value - s[first].value) / span * scale;

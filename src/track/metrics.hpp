@@ -9,15 +9,16 @@
 // distance starts at 0 and continues across segments; a segment gap adds nothing.
 //
 // Rates are measured over windows, not between two noisy neighbours:
-//   speed, vertical speed  centred time window: the points with |t - t_i| <= speed_window_s/2;
-//   steepness              centred distance window: |d - d_i| <= slope_window_m/2.
+//   speed, vertical speed  centred time window of speed_window_s: [t_i - w/2, t_i + w/2];
+//   steepness              centred distance window of slope_window_m: [d_i - w/2, d_i + w/2].
 // The rate is (value at the window's last point - value at its first) / (key difference), with
-// key = time or cumulative distance. When no point with a strictly smaller (larger) key lies in
-// the window, the window is widened to the nearest such point, so sparse recordings (e.g. one
-// point every 10 s with a 10 s window) still get a centred difference. A window never leaves
-// its run: a run is a stretch of one segment with keys that do not go backwards and without a
-// pause (two timed points more than max_gap_s apart). Undefined (NaN) when the window has no
-// key difference (< 1 ms or < 1 mm).
+// key = time or cumulative distance. The window reaches out to the nearest point at or beyond
+// each edge (strictly before / after the centre point), so it always spans at least the whole
+// centred interval where the data allow, and sparse recordings (one point every 10 s with a
+// 10 s window) get a centred difference over their neighbours. A window never leaves its run:
+// a run is a stretch of one segment whose keys do not go backwards and that contains no pause
+// (two timed points more than max_gap_s apart); at a run's ends the window is one-sided.
+// Undefined (NaN) when the window has no key difference (< 1 ms or < 1 mm).
 // Speed uses the points with a time; vertical speed the points with a time and an elevation;
 // steepness the points with an elevation. Glide ratio = speed / sink rate while the sink rate
 // (-vertical speed) exceeds min_sink_for_glide_ms, NaN otherwise.

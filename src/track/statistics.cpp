@@ -97,20 +97,22 @@ class Accumulator {
     const double min_speed_ms = options_.moving_speed_kmh / kMsToKmh;
     std::size_t timed = 0, prev = 0;
     double seg_first = 0.0, seg_last = 0.0;
+    double latest = 0.0;  // the latest time seen in this segment: backward jumps add no time twice
     for (std::size_t i = 0; i < pts.size(); ++i) {
       const double t = pts[i].time;
       if (!std::isfinite(t)) continue;
       if (timed_points_++ == 0) first_time_ = t;
       last_time_ = t;
       if (timed++ == 0) {
-        seg_first = t;
+        seg_first = latest = t;
       } else {
-        const double dt = t - pts[prev].time;
-        if (dt > 0.0 && (!pauses || dt <= m.options.max_gap_s)) {
+        const double dt = t - latest;  // time newly covered; = t - previous time on a clean track
+        if (dt > 0.0 && (!pauses || t - pts[prev].time <= m.options.max_gap_s)) {
           double v = 0.5 * (m.speed_ms[prev] + m.speed_ms[i]);
-          if (!std::isfinite(v)) v = (m.distance_m[i] - m.distance_m[prev]) / dt;
+          if (!std::isfinite(v)) v = (m.distance_m[i] - m.distance_m[prev]) / (t - pts[prev].time);
           if (v >= min_speed_ms) moving_time_s_ += dt;
         }
+        latest = std::max(latest, t);
       }
       seg_last = t;
       prev = i;

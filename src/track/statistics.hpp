@@ -14,7 +14,9 @@
 //                   0 < dt <= max_gap_s (the metrics' pause limit) whose speed is at least
 //                   moving_speed_kmh; an interval's speed is the mean of the windowed speeds
 //                   (metrics.hpp) at its two ends, or its own distance / dt where one of those
-//                   is undefined. Absent like duration_s;
+//                   is undefined. On a raw track whose time jumps backwards an interval only
+//                   adds the time beyond the latest timestamp so far, so no second counts
+//                   twice. Absent like duration_s;
 //   elevation_gain_m / loss_m   per segment over the points with an elevation, with hysteresis:
 //                   a climb (descent) counts only once the elevation has risen (fallen) more
 //                   than elevation_threshold_m above (below) the last turning point, and then

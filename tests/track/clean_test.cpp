@@ -83,6 +83,29 @@ TEST(Clean, DropsDuplicateAndBackwardTimestampsKeepsUntimedPoints) {
   EXPECT_EQ(kept[2].lat, pts[4].lat);
 }
 
+TEST(Clean, AFrozenClockLosesItsTimesNotItsPoints) {
+  // Every point stamped 1901-12-13T20:45:52.207Z give or take 0.3 ms (seen in the wild).
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i < 50; ++i) pts.push_back(along(10.0 * i, 0, 1000, -2147483647.793 + (i % 2 ? 0.0003 : 0.0)));
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), no_smoothing(), r);
+  EXPECT_EQ(r.frozen_time, 50u);
+  EXPECT_EQ(r.non_increasing_time, 0u);
+  ASSERT_EQ(out.segments[0].points.size(), 50u);
+  for (const auto& p : out.segments[0].points) EXPECT_FALSE(p.has_time());
+
+  // A real 10 Hz recording is not frozen; two equal stamps are a plain duplicate.
+  std::vector<TrackPoint> fast;
+  for (int i = 0; i < 5; ++i) fast.push_back(along(1.0 * i, 0, kMissing, 0.1 * i));
+  CleanReport r2;
+  EXPECT_EQ(clean_track(one_segment(fast), no_smoothing(), r2).segments[0].points.size(), 5u);
+  EXPECT_EQ(r2.frozen_time, 0u);
+  CleanReport r3;
+  clean_track(one_segment({along(0, 0, kMissing, 5), along(10, 0, kMissing, 5)}), no_smoothing(), r3);
+  EXPECT_EQ(r3.frozen_time, 0u);
+  EXPECT_EQ(r3.non_increasing_time, 1u);
+}
+
 TEST(Clean, TimeOrderIsCheckedPerSegmentNotAcrossTheGap) {
   Track t;
   t.segments.push_back(Segment{{along(0, 0, kMissing, 100), along(10, 0, kMissing, 110)}});
@@ -125,6 +148,20 @@ TEST(Clean, LastPointTooCloseToTheFirstKeepsBoth) {
   ASSERT_EQ(kept.size(), 2u);
   EXPECT_EQ(kept[0].ele, 1);
   EXPECT_EQ(kept[1].ele, 3);
+}
+
+TEST(Clean, MinimumDistanceCountsElevationSoAVerticalClimbSurvives) {
+  // A drone going straight up 2 m per fix, 1 m sideways: 2.2 m in 3D, kept at 2 m minimum...
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i < 10; ++i) pts.push_back(along(1.0 * i, 0, 100.0 + 2.0 * i, double(i)));
+  CleanReport r;
+  EXPECT_EQ(clean_track(one_segment(pts), no_smoothing(2.0), r).segments[0].points.size(), 10u);
+  EXPECT_EQ(r.too_close, 0u);
+  // ...while without elevations the same positions are 1 m apart and thinned.
+  for (auto& p : pts) p.ele = kMissing;
+  CleanReport r2;
+  EXPECT_LT(clean_track(one_segment(pts), no_smoothing(2.0), r2).segments[0].points.size(), 6u);
+  EXPECT_GT(r2.too_close, 4u);
 }
 
 TEST(Clean, MinimumDistanceZeroDisables) {
@@ -249,6 +286,29 @@ TEST(Clean, SmoothingDoesNotCrossSegmentBoundaries) {
   const Track out = clean_track(t, CleanOptions{}, r);
   for (const auto& p : out.segments[0].points) EXPECT_DOUBLE_EQ(p.ele, 0.0);
   for (const auto& p : out.segments[1].points) EXPECT_DOUBLE_EQ(p.ele, 1000.0);
+}
+
+TEST(Clean, SmoothingDoesNotCrossAPause) {
+  // 10 points every 10 s, then signal lost for 10 minutes and 5 km further on, 10 more points.
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i < 10; ++i) pts.push_back(along(10.0 * i, 0, 100.0, 10.0 * i));
+  for (int i = 0; i < 10; ++i) pts.push_back(along(5000.0 + 10.0 * i, 0, 600.0, 700.0 + 10.0 * i));
+  CleanOptions o;
+  o.min_distance_m = 0.0;
+  CleanReport r;
+  const Track kept = clean_track(one_segment(pts), o, r);
+  const auto& s = kept.segments[0].points;
+  ASSERT_EQ(s.size(), pts.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    EXPECT_LT(dist(s[i], pts[i]), 0.01) << i;
+    EXPECT_NEAR(s[i].ele, pts[i].ele, 1e-9) << i;
+  }
+  // With the limit off, the two stretches are averaged into each other.
+  o.max_gap_s = 0.0;
+  const Track blurred_track = clean_track(one_segment(pts), o, r);
+  const auto& blurred = blurred_track.segments[0].points;
+  EXPECT_GT(dist(blurred[9], pts[9]), 100.0);
+  EXPECT_GT(blurred[9].ele, 150.0);
 }
 
 TEST(Clean, SmoothingMovesACornerInward) {

@@ -129,6 +129,19 @@ TEST(Metrics, SpeedWindowIsCentredInTime) {
   for (std::size_t i = 0; i < v.size(); ++i) EXPECT_TRUE(std::isnan(m.segments[0].vspeed_ms[i]));
 }
 
+TEST(Metrics, SpeedWindowReachesBeyondItsEdges) {
+  // Irregular sampling: a fix 1 s after the first (20 m off), then one every 10 s. The window
+  // of the first point reaches the first fix at or after t + 5 s instead of the 1-s neighbour.
+  const std::vector<TrackPoint> pts{north(0, kMissing, 0), north(20, kMissing, 1), north(30, kMissing, 11),
+                                    north(40, kMissing, 21), north(50, kMissing, 31)};
+  const TrackMetrics m = compute_metrics(one_segment(pts));
+  const auto& v = m.segments[0].speed_ms;
+  EXPECT_NEAR(v[0], 30.0 / 11.0, 1e-9);
+  EXPECT_NEAR(v[1], 30.0 / 11.0, 1e-9);  // t = 0 .. 11
+  EXPECT_NEAR(v[2], 20.0 / 20.0, 1e-9);  // t = 1 .. 21
+  EXPECT_NEAR(v[4], 1.0, 1e-9);          // one-sided at the end: t = 21 .. 31
+}
+
 TEST(Metrics, SlopeWindowIsCentredInDistance) {
   // A point every 5 m without times: 0 % for 100 m, then 20 %.
   std::vector<TrackPoint> pts;
