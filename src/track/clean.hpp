@@ -17,9 +17,10 @@
 //      that point, unless that point is the segment's first (then both stay).
 //   4. Gaussian smoothing, weights exp(-j^2 / (2 sigma^2)) for offsets j = -N..N (in points):
 //      - positions in a local east-north-up frame (geo::LocalFrame) with its origin at the
-//        segment's first point; every point is projected at the origin's height, so the
-//        horizontal result does not depend on which points have an elevation; east, north and
-//        up are averaged, then converted back to latitude and longitude;
+//        segment's (or stretch's, see below) first point; every point is projected at the
+//        origin's height, so the horizontal result does not depend on which points have an
+//        elevation; east, north and up are averaged, then converted back to latitude and
+//        longitude;
 //      - elevation (the "up" axis) averaged over the neighbours that have one; a point without
 //        elevation stays without;
 //      - near a segment end the kernel is truncated symmetrically to the neighbours that exist

@@ -7,7 +7,9 @@
 //   distance_3d_m   the same, each step sqrt(d^2 + dz^2) where both points have an elevation;
 //   duration_s      sum over segments of (last - first timestamp), taking each segment's first
 //                   and last timed points (a segment whose last time is before its first adds
-//                   0); absent when no segment has two timed points;
+//                   0); absent when no segment has two timed points. Equal to gpxpy's sum of
+//                   segment durations wherever gpxpy finds a time (it only looks at the first
+//                   two and the last two points of a segment);
 //   elapsed_s       last minus first timestamp (file order) over the whole track; absent with
 //                   fewer than two timed points;
 //   moving_time_s   sum of the intervals between consecutive timed points of a segment with
@@ -19,7 +21,8 @@
 //                   twice. Absent like duration_s;
 //   elevation_gain_m / loss_m   per segment over the points with an elevation, with hysteresis:
 //                   a climb (descent) counts only once the elevation has risen (fallen) more
-//                   than elevation_threshold_m above (below) the last turning point, and then
+//                   than elevation_threshold_m above (below) the last turning point (at the
+//                   segment's start: the lowest / highest elevation so far), and then
 //                   counts from that turning point to the next confirmed one (or to the highest
 //                   / lowest point reached at the segment's end); wiggles smaller than the
 //                   threshold count nothing. Absent when no segment has two elevations;
@@ -27,8 +30,8 @@
 //   max_speed_kmh   largest windowed speed;  avg_speed_kmh  distance_2d / moving time (absent
 //                   when the moving time is 0 or absent);
 //   max_climb_ms, max_sink_ms   largest windowed vertical speed upwards / downwards (the sink as
-//                   a positive number, 0 when the track never descends); windowed channels are
-//                   robust to single-point spikes;
+//                   a positive number, 0 when the track never descends); the windowed
+//                   channels damp single-point spikes;
 //   bbox            latitude/longitude bounds of all points.
 // Absent values are std::nullopt (JSON null); no field is ever NaN or infinite.
 
