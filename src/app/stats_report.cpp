@@ -49,12 +49,14 @@ FileStats compute_file_stats(const std::string& path, const track::ReadOptions& 
     const track::CleanReport& c = f.tracks.back().cleaning;
     const std::string display = path == "-" ? "<stdin>" : path;
     const std::string which = t.name.empty() ? fmt::format("track {}", i + 1) : fmt::format("track '{}'", t.name);
-    if (c.non_increasing_time > 0)
-      f.warnings.push_back(fmt::format("{}: {}: {} with a duplicate or backward timestamp dropped by cleaning",
-                                       display, which, plural(c.non_increasing_time, "point")));
-    if (c.invalid_coordinates > 0)
-      f.warnings.push_back(fmt::format("{}: {}: {} with invalid coordinates dropped by cleaning", display,
-                                       which, plural(c.invalid_coordinates, "point")));
+    auto warn = [&](std::size_t n, const char* what) {
+      if (n > 0) f.warnings.push_back(fmt::format("{}: {}: {} {}", display, which, plural(n, "point"), what));
+    };
+    warn(c.duplicate_points, "repeating the previous fix exactly (time and place) dropped by cleaning");
+    warn(c.spread_time, "sharing a timestamp with the point before got evenly spread sub-second times");
+    warn(c.non_increasing_time, "with a backward timestamp dropped by cleaning");
+    warn(c.frozen_time, "with a placeholder timestamp (the clock never advances) kept without time");
+    warn(c.invalid_coordinates, "with invalid coordinates dropped by cleaning");
   }
   return f;
 }

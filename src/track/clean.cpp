@@ -29,12 +29,54 @@ bool frozen_clock(const std::vector<TrackPoint>& in) {
   return timed >= 3 && hi - lo < 1e-3 * static_cast<double>(timed - 1);
 }
 
-// Steps 1 and 2: invalid coordinates, non-finite values, non-increasing timestamps.
+bool same_fix(const TrackPoint& a, const TrackPoint& b) {
+  const bool same_ele = a.ele == b.ele || (std::isnan(a.ele) && std::isnan(b.ele));
+  return a.time == b.time && a.lat == b.lat && a.lon == b.lon && same_ele;
+}
+
+// Step 2b: runs of one timestamp at different places get evenly spread times over the
+// interval to the next later timestamp (at most 1 s: loggers stamp whole seconds). Real runs
+// are up to 10 long (10 Hz loggers); a longer run than kMaxFixesPerSecond is a stuck clock
+// (seen: 51 fixes, 30 m apart, all stamped 10:24:03) and loses its times instead.
+constexpr std::size_t kMaxFixesPerSecond = 20;
+
+void spread_same_second_runs(std::vector<TrackPoint>& pts, CleanReport& report) {
+  std::size_t i = 0;
+  while (i < pts.size()) {
+    if (!pts[i].has_time()) {
+      ++i;
+      continue;
+    }
+    const double t = pts[i].time;
+    std::size_t end = i + 1;
+    while (end < pts.size() && pts[end].time == t) ++end;
+    const std::size_t run = end - i;
+    if (run > kMaxFixesPerSecond) {
+      // No logger writes that many fixes in one second: the clock stood still. Keep the
+      // places, drop the made-up times.
+      for (std::size_t k = 1; k < run; ++k) pts[i + k].time = kMissing;
+      report.frozen_time += run - 1;
+    } else if (run >= 2) {
+      double next = kMissing;
+      for (std::size_t k = end; k < pts.size(); ++k)
+        if (pts[k].has_time()) {
+          next = pts[k].time;
+          break;
+        }
+      const double span = std::isnan(next) || next <= t ? 1.0 : std::min(next - t, 1.0);
+      for (std::size_t k = 1; k < run; ++k) pts[i + k].time = t + span * static_cast<double>(k) / static_cast<double>(run);
+      report.spread_time += run - 1;
+    }
+    i = end;
+  }
+}
+
+// Steps 1 and 2: invalid coordinates, non-finite values, duplicates, same-second runs,
+// non-increasing timestamps.
 std::vector<TrackPoint> drop_invalid_and_unordered(const std::vector<TrackPoint>& in, CleanReport& report) {
-  std::vector<TrackPoint> out;
-  out.reserve(in.size());
   const bool frozen = frozen_clock(in);
-  double last_time = kMissing;  // the last kept timestamp of this segment
+  std::vector<TrackPoint> valid;
+  valid.reserve(in.size());
   for (TrackPoint p : in) {
     if (!valid_coordinates(p)) {
       ++report.invalid_coordinates;
@@ -43,10 +85,23 @@ std::vector<TrackPoint> drop_invalid_and_unordered(const std::vector<TrackPoint>
     const bool repaired = std::isinf(p.ele) || std::isinf(p.time);
     if (std::isinf(p.ele)) p.ele = kMissing;
     if (std::isinf(p.time)) p.time = kMissing;
+    if (repaired) ++report.invalid_values;
     if (frozen && p.has_time()) {
       p.time = kMissing;
       ++report.frozen_time;
     }
+    if (!valid.empty() && p.has_time() && same_fix(valid.back(), p)) {
+      ++report.duplicate_points;
+      continue;
+    }
+    valid.push_back(p);
+  }
+  spread_same_second_runs(valid, report);
+
+  std::vector<TrackPoint> out;
+  out.reserve(valid.size());
+  double last_time = kMissing;  // the last kept timestamp of this segment
+  for (const TrackPoint& p : valid) {
     if (p.has_time()) {
       if (!std::isnan(last_time) && !(p.time > last_time)) {
         ++report.non_increasing_time;
@@ -54,7 +109,6 @@ std::vector<TrackPoint> drop_invalid_and_unordered(const std::vector<TrackPoint>
       }
       last_time = p.time;
     }
-    if (repaired) ++report.invalid_values;
     out.push_back(p);
   }
   return out;

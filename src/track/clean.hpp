@@ -4,9 +4,16 @@
 //   1. drop points with invalid coordinates (latitude or longitude not finite, |lat| > 90,
 //      |lon| > 180; defensive, readers already drop them). A non-finite elevation or time
 //      becomes "missing" (NaN) and the point is kept.
-//   2. drop points whose timestamp is not strictly after the last kept timestamp of the
-//      segment (duplicates and backward jumps), so no speed downstream divides by zero or goes
-//      negative. Points without a time are kept. Exception, a frozen clock: when a segment's
+//   2. timestamps, so that no speed downstream divides by zero or goes negative:
+//      a. drop exact duplicates: a point with the same time and position as the one before;
+//      b. spread same-second runs: loggers that record several fixes per second but stamp
+//         whole seconds (a 10 Hz SkyTraq, XCTrack) write runs of one timestamp at different
+//         places; their times are spread evenly over the interval to the next timestamp (at
+//         most 1 s), keeping the geometry instead of dropping nine points in ten. A run longer
+//         than 20 (no logger writes 20 fixes a second) is a stuck clock: the places are kept,
+//         the repeated times removed (counted as frozen_time);
+//      c. drop points whose timestamp is not strictly after the last kept timestamp of the
+//         segment (backward jumps). Points without a time are kept. Exception, a frozen clock: when a segment's
 //      timestamps (at least 3) span less than 1 ms per point, they are placeholders (such as
 //      1901-12-13T20:45:52Z); its times are removed and its points kept.
 //   3. enforce a minimum distance between consecutive kept points (repeated positions and
@@ -51,11 +58,13 @@ struct CleanOptions {
 
 struct CleanReport {
   std::size_t invalid_coordinates = 0;
-  std::size_t non_increasing_time = 0;  // duplicate or backward timestamps dropped
+  std::size_t duplicate_points = 0;     // exact repeats (same time and position) dropped
+  std::size_t spread_time = 0;          // same-second points given spread sub-second times (kept)
+  std::size_t non_increasing_time = 0;  // backward (or still repeated) timestamps dropped
   std::size_t too_close = 0;            // dropped by the minimum distance
   std::size_t invalid_values = 0;       // kept points whose non-finite elevation/time became missing
   std::size_t frozen_time = 0;          // points whose placeholder timestamp was removed (kept)
-  std::size_t total_dropped() const { return invalid_coordinates + non_increasing_time + too_close; }
+  std::size_t total_dropped() const { return invalid_coordinates + duplicate_points + non_increasing_time + too_close; }
 };
 
 // A cleaned copy of `track` with the same number of segments (a segment may become empty).

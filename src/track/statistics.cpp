@@ -77,7 +77,7 @@ class Accumulator {
     }
     if (max_speed_ms_) s.max_speed_kmh = *max_speed_ms_ * kMsToKmh;
     if (s.moving_time_s && *s.moving_time_s > 0.0)
-      s.avg_speed_kmh = s.distance_2d_m / *s.moving_time_s * kMsToKmh;
+      s.avg_speed_kmh = moving_distance_m_ / *s.moving_time_s * kMsToKmh;
     if (max_vspeed_ms_) s.max_climb_ms = std::max(0.0, *max_vspeed_ms_);
     if (min_vspeed_ms_) s.max_sink_ms = std::max(0.0, -*min_vspeed_ms_);
     if (!bbox_.empty()) s.bbox = bbox_;
@@ -107,10 +107,18 @@ class Accumulator {
         seg_first = latest = t;
       } else {
         const double dt = t - latest;  // time newly covered; = t - previous time on a clean track
-        if (dt > 0.0 && (!pauses || t - pts[prev].time <= m.options.max_gap_s)) {
-          double v = 0.5 * (m.speed_ms[prev] + m.speed_ms[i]);
-          if (!std::isfinite(v)) v = (m.distance_m[i] - m.distance_m[prev]) / (t - pts[prev].time);
-          if (v >= min_speed_ms) moving_time_s_ += dt;
+        if (dt > 0.0) {
+          // Short intervals use the windowed speeds (robust to jitter); an interval longer than
+          // the pause limit (a pause, lost signal, or a sparse logger) its own distance / dt.
+          const double step_m = m.distance_m[i] - m.distance_m[prev];
+          const double own = step_m / (t - pts[prev].time);
+          const bool long_interval = pauses && t - pts[prev].time > m.options.max_gap_s;
+          double v = long_interval ? own : 0.5 * (m.speed_ms[prev] + m.speed_ms[i]);
+          if (!std::isfinite(v)) v = own;
+          if (v >= min_speed_ms) {
+            moving_time_s_ += dt;
+            moving_distance_m_ += step_m;
+          }
         }
         latest = std::max(latest, t);
       }
@@ -144,7 +152,7 @@ class Accumulator {
   geo::LatLonBounds bbox_;
   std::size_t timed_points_ = 0, timed_segments_ = 0, elevation_segments_ = 0;
   double first_time_ = 0.0, last_time_ = 0.0;
-  double duration_s_ = 0.0, moving_time_s_ = 0.0;
+  double duration_s_ = 0.0, moving_time_s_ = 0.0, moving_distance_m_ = 0.0;
   double gain_m_ = 0.0, loss_m_ = 0.0;
   std::optional<double> max_speed_ms_, max_vspeed_ms_, min_vspeed_ms_;
 };

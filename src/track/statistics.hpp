@@ -12,13 +12,14 @@
 //                   two and the last two points of a segment);
 //   elapsed_s       last minus first timestamp (file order) over the whole track; absent with
 //                   fewer than two timed points;
-//   moving_time_s   sum of the intervals between consecutive timed points of a segment with
-//                   0 < dt <= max_gap_s (the metrics' pause limit) whose speed is at least
-//                   moving_speed_kmh; an interval's speed is the mean of the windowed speeds
-//                   (metrics.hpp) at its two ends, or its own distance / dt where one of those
-//                   is undefined. On a raw track whose time jumps backwards an interval only
-//                   adds the time beyond the latest timestamp so far, so no second counts
-//                   twice. Absent like duration_s;
+//   moving_time_s   sum of the intervals between consecutive timed points of a segment whose
+//                   speed is at least moving_speed_kmh. An interval up to max_gap_s long (the
+//                   metrics' pause limit) takes the mean of the windowed speeds (metrics.hpp) at
+//                   its two ends, robust to jitter while standing; a longer one (a pause, lost
+//                   signal, a sparse logger) its own distance / dt, so a 3-hour stop counts
+//                   nothing and 3 hours of flight logged every 20 minutes count in full. On a raw
+//                   track whose time jumps backwards an interval only adds the time beyond the
+//                   latest timestamp so far, so no second counts twice. Absent like duration_s;
 //   elevation_gain_m / loss_m   per segment over the points with an elevation, with hysteresis:
 //                   a climb (descent) counts only once the elevation has risen (fallen) more
 //                   than elevation_threshold_m above (below) the last turning point (at the
@@ -27,7 +28,7 @@
 //                   / lowest point reached at the segment's end); wiggles smaller than the
 //                   threshold count nothing. Absent when no segment has two elevations;
 //   min/max_elevation_m   over all points with an elevation;
-//   max_speed_kmh   largest windowed speed;  avg_speed_kmh  distance_2d / moving time (absent
+//   max_speed_kmh   largest windowed speed;  avg_speed_kmh  distance covered in the moving intervals / moving time (absent
 //                   when the moving time is 0 or absent);
 //   max_climb_ms, max_sink_ms   largest windowed vertical speed upwards / downwards (the sink as
 //                   a positive number, 0 when the track never descends); the windowed

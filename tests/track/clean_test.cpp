@@ -60,27 +60,65 @@ TEST(Clean, DropsInvalidCoordinatesAndCountsThem) {
   for (const auto& p : out.segments[0].points) EXPECT_TRUE(std::isfinite(p.lat) && std::abs(p.lat) <= 90);
 }
 
-TEST(Clean, DropsDuplicateAndBackwardTimestampsKeepsUntimedPoints) {
-  // times: 0, 10, 10 (duplicate), 5 (backward), 20, none, 20 (not after the last kept 20), 30
+TEST(Clean, SpreadsSameSecondRunsDropsBackwardTimestampsKeepsUntimedPoints) {
+  // times: 0, 10, 10 (same second, another place), 5 (backward), 20, none, 20 (not after the
+  // last kept 20), 30
   const std::vector<double> times{0, 10, 10, 5, 20, kMissing, 20, 30};
   std::vector<TrackPoint> pts;
   for (std::size_t i = 0; i < times.size(); ++i) pts.push_back(along(10.0 * double(i), 0, kMissing, times[i]));
 
   CleanReport r;
   const Track out = clean_track(one_segment(pts), no_smoothing(), r);
-  EXPECT_EQ(r.non_increasing_time, 3u);
+  EXPECT_EQ(r.non_increasing_time, 2u);
+  EXPECT_EQ(r.spread_time, 1u);
+  EXPECT_EQ(r.duplicate_points, 0u);
   EXPECT_EQ(r.invalid_coordinates, 0u);
   EXPECT_EQ(r.too_close, 0u);
   const auto& kept = out.segments[0].points;
-  ASSERT_EQ(kept.size(), 5u);
+  ASSERT_EQ(kept.size(), 6u);
   EXPECT_EQ(kept[0].time, 0);
   EXPECT_EQ(kept[1].time, 10);
-  EXPECT_EQ(kept[2].time, 20);
-  EXPECT_TRUE(std::isnan(kept[3].time));
-  EXPECT_EQ(kept[4].time, 30);
-  // The kept points are the original ones, in order (the first of the duplicates stays).
-  EXPECT_EQ(kept[1].lat, pts[1].lat);
-  EXPECT_EQ(kept[2].lat, pts[4].lat);
+  EXPECT_EQ(kept[2].time, 10.5);  // the next timestamp goes backward: spread over 1 s
+  EXPECT_EQ(kept[3].time, 20);
+  EXPECT_TRUE(std::isnan(kept[4].time));
+  EXPECT_EQ(kept[5].time, 30);
+  // The kept points are the original ones, in order.
+  EXPECT_EQ(kept[2].lat, pts[2].lat);
+  EXPECT_EQ(kept[3].lat, pts[4].lat);
+}
+
+TEST(Clean, TenHertzLoggerWithWholeSecondStampsKeepsItsGeometry) {
+  // 10 fixes per second, 1 m apart, stamped with the whole second (a SkyTraq logger), plus
+  // exact repeats of some fixes (XCTrack writes those).
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i < 30; ++i) {
+    pts.push_back(along(1.0 * i, 0, kMissing, 100.0 + i / 10));
+    if (i % 7 == 0) pts.push_back(pts.back());
+  }
+  CleanOptions o = no_smoothing();
+  o.min_distance_m = 0.0;
+  CleanReport r;
+  const auto kept = clean_track(one_segment(pts), o, r).segments[0].points;
+  EXPECT_EQ(r.duplicate_points, 5u);
+  EXPECT_EQ(r.non_increasing_time, 0u);
+  EXPECT_EQ(r.spread_time, 27u);  // 9 in each of the 3 seconds
+  ASSERT_EQ(kept.size(), 30u);
+  for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_NEAR(kept[i].time, 100.0 + 0.1 * double(i), 1e-9) << i;
+}
+
+TEST(Clean, AStuckClockRunLosesItsTimesNotItsPlaces) {
+  // 51 fixes 30 m apart all stamped t=100 (igclib's no_time_increment.igc), then the clock runs.
+  std::vector<TrackPoint> pts{along(0, 0, kMissing, 99)};
+  for (int i = 0; i < 51; ++i) pts.push_back(along(30.0 * (i + 1), 0, kMissing, 100));
+  pts.push_back(along(30.0 * 53, 0, kMissing, 160));
+  CleanReport r;
+  const auto kept = clean_track(one_segment(pts), no_smoothing(), r).segments[0].points;
+  ASSERT_EQ(kept.size(), pts.size());
+  EXPECT_EQ(r.frozen_time, 50u);
+  EXPECT_EQ(r.spread_time, 0u);
+  EXPECT_EQ(kept[1].time, 100.0);
+  for (std::size_t i = 2; i + 1 < kept.size(); ++i) EXPECT_FALSE(kept[i].has_time()) << i;
+  EXPECT_EQ(kept.back().time, 160.0);
 }
 
 TEST(Clean, AFrozenClockLosesItsTimesNotItsPoints) {
@@ -94,7 +132,7 @@ TEST(Clean, AFrozenClockLosesItsTimesNotItsPoints) {
   ASSERT_EQ(out.segments[0].points.size(), 50u);
   for (const auto& p : out.segments[0].points) EXPECT_FALSE(p.has_time());
 
-  // A real 10 Hz recording is not frozen; two equal stamps are a plain duplicate.
+  // A real 10 Hz recording is not frozen; two equal stamps at two places are a same-second run.
   std::vector<TrackPoint> fast;
   for (int i = 0; i < 5; ++i) fast.push_back(along(1.0 * i, 0, kMissing, 0.1 * i));
   CleanReport r2;
@@ -103,7 +141,8 @@ TEST(Clean, AFrozenClockLosesItsTimesNotItsPoints) {
   CleanReport r3;
   clean_track(one_segment({along(0, 0, kMissing, 5), along(10, 0, kMissing, 5)}), no_smoothing(), r3);
   EXPECT_EQ(r3.frozen_time, 0u);
-  EXPECT_EQ(r3.non_increasing_time, 1u);
+  EXPECT_EQ(r3.non_increasing_time, 0u);
+  EXPECT_EQ(r3.spread_time, 1u);
 }
 
 TEST(Clean, TimeOrderIsCheckedPerSegmentNotAcrossTheGap) {
@@ -355,7 +394,8 @@ TEST(Clean, ReportAddsUp) {
   CleanReport r;
   const Track out = clean_track(one_segment(pts), CleanOptions{}, r);
   EXPECT_EQ(r.invalid_coordinates, 1u);
-  EXPECT_EQ(r.non_increasing_time, 1u);
+  EXPECT_EQ(r.duplicate_points, 1u);
+  EXPECT_EQ(r.non_increasing_time, 0u);
   EXPECT_EQ(r.too_close, 1u);
   EXPECT_EQ(r.total_dropped(), 3u);
   EXPECT_EQ(out.segments[0].points.size() + r.total_dropped(), pts.size());

@@ -143,7 +143,9 @@ TEST(Statistics, RawTrackWithDuplicatesAndBackwardTimes) {
   // And cleaning removes the offenders.
   CleanReport r;
   const Track cleaned = clean_track(t, CleanOptions{}, r);
-  EXPECT_EQ(r.non_increasing_time, 4u);
+  EXPECT_EQ(r.duplicate_points, 1u);     // (100, t=10) twice
+  EXPECT_EQ(r.spread_time, 2u);          // 150 m and 300 m share their second with the point before
+  EXPECT_EQ(r.non_increasing_time, 1u);  // t=15 after t=20
   expect_finite(stats(cleaned));
 }
 
@@ -292,9 +294,22 @@ TEST(Statistics, MovingTimeExcludesAStopAndAPause) {
   EXPECT_EQ(st.duration_s, 899.0);  // t = 0 .. 899, the pause included: duration is not moving time
   EXPECT_NEAR(st.distance_2d_m, 895.0, 1e-6);
   ASSERT_TRUE(st.avg_speed_kmh);
-  EXPECT_NEAR(*st.avg_speed_kmh, st.distance_2d_m / *st.moving_time_s * 3.6, 1e-9);
+  // The 5 m step across the 10-minute pause is not moving distance.
+  EXPECT_NEAR(*st.avg_speed_kmh, (st.distance_2d_m - 5.0) / *st.moving_time_s * 3.6, 1e-6);
   EXPECT_GT(*st.avg_speed_kmh, 16.0);
   EXPECT_NEAR(*st.max_speed_kmh, 18.0, 1e-6);
+}
+
+TEST(Statistics, ASparseLoggerStillMoves) {
+  // A fix every 20 minutes at 30 km/h (10 km apart), then a 3-hour stop in one place.
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i < 10; ++i) pts.push_back(north(10000.0 * i, kMissing, 1200.0 * i));
+  pts.push_back(north(90000.0 + 2.0, kMissing, 1200.0 * 9 + 3 * 3600.0));
+  const Statistics st = stats(one_segment(pts));
+  ASSERT_TRUE(st.moving_time_s);
+  EXPECT_NEAR(*st.moving_time_s, 9 * 1200.0, 1e-6);
+  ASSERT_TRUE(st.avg_speed_kmh);
+  EXPECT_NEAR(*st.avg_speed_kmh, 30.0, 1e-6);
 }
 
 TEST(Statistics, SegmentStatisticsMatchATrackOfOneSegment) {
