@@ -147,7 +147,7 @@ XmlParseOutcome XmlStream::parse(ByteSource& source, XmlHandler& handler) {
       out.position = position_of(c.parser);
     } else {
       out.kind = XmlParseOutcome::Kind::Error;
-      out.message = std::string("malformed XML: ") + XML_ErrorString(e);
+      out.message = std::string(c.saw_root ? "malformed XML: " : "not an XML document: ") + XML_ErrorString(e);
       out.position = position_of(c.parser);
     }
     break;

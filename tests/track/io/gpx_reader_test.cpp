@@ -193,6 +193,7 @@ TEST(GpxReader, PlainTextIsAnError) {
   ReadResult r = read("Error: no such file\n");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error->position.line, 1);
+  EXPECT_EQ(r.error->message, "not an XML document: syntax error");
 }
 
 TEST(GpxReader, WrongRootIsAnError) {
