@@ -11,7 +11,6 @@ packages=(
   ninja-build            # fast incremental builds
   pkg-config             # locating libraries from CMake
   # --- libraries used by src/ ---
-  libexpat1-dev          # streaming XML parser for GPX/TCX: bounded memory, line/column errors, billion-laughs guard
   zlib1g-dev             # reading .gpx.gz / .igc.gz / .tcx.gz transparently
   libgeographiclib-dev   # WGS84 geodesic distances and local Cartesian frames (geo/)
   libcli11-dev           # command-line parsing (app/)

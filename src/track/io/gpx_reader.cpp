@@ -117,7 +117,6 @@ class GpxHandler final : public XmlHandler {
     point_depth_ = depth_;
     point_ = TrackPoint{};
     waypoint_ = Waypoint{};
-    point_position_ = position();
     const char* lat = xml_attribute(attrs, "lat");
     const char* lon = xml_attribute(attrs, "lon");
     auto la = lat ? parse_double(lat) : std::nullopt;
@@ -127,7 +126,7 @@ class GpxHandler final : public XmlHandler {
       point_.lat = *la;
       point_.lon = *lo;
     } else {
-      warnings_.add("coords", point_position_,
+      warnings_.add("coords", position(),
                     "point with invalid coordinates dropped (lat=\"" + std::string(lat ? lat : "<missing>").substr(0, 40) +
                         "\" lon=\"" + std::string(lon ? lon : "<missing>").substr(0, 40) + "\")");
     }
@@ -204,7 +203,6 @@ class GpxHandler final : public XmlHandler {
   TrackPoint point_;
   Waypoint waypoint_;
   bool point_valid_ = false;
-  SourcePosition point_position_;
   std::size_t complete_points_ = 0;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
-// A streaming XML reader over expat for the GPX and TCX readers: memory stays bounded by the
-// largest single value, not the file, and every event knows its line and column.
+// A streaming XML reader for the GPX and TCX readers (a scanner of our own, see
+// xml_stream.cpp for why): memory stays bounded by the largest single piece of markup, not the
+// file, and every event knows its line and column. Input may be UTF-8, UTF-16, ISO-8859-1/15 or
+// Windows-1252 (xml_encoding.hpp); handlers always see UTF-8.
 //
 // Element names are given without their namespace prefix ("gpxtpx:hr" -> "hr"), so default,
 // prefixed and missing namespaces read alike. Hardened against hostile input: any DTD entity
@@ -20,7 +22,7 @@ namespace trailray::track {
 class XmlHandler {
  public:
   virtual ~XmlHandler() = default;
-  // `attrs` is expat's null-terminated name/value array (names with their prefix).
+  // `attrs` is a null-terminated name/value array (names with their prefix, values decoded).
   virtual void start_element(std::string_view local_name, const char** attrs) = 0;
   // `text` is the character data since the element (or its last child) started, untrimmed.
   virtual void end_element(std::string_view local_name, std::string_view text) = 0;
@@ -32,10 +34,10 @@ class XmlHandler {
 
  private:
   friend class XmlStream;
-  void* context_ = nullptr;
+  void* context_ = nullptr;  // the running scanner
 };
 
-// Local name of an attribute in expat's array, nullptr if absent.
+// Value of the attribute with this local name, nullptr if absent.
 const char* xml_attribute(const char** attrs, std::string_view local_name);
 // "prefix:name" -> "name".
 std::string_view xml_local_name(std::string_view qualified);

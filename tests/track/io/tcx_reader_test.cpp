@@ -407,7 +407,7 @@ TEST(TcxReader, MalformedXmlNamesLineAndColumn) {
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error->message.find("malformed XML"), std::string::npos) << r.error->message;
   EXPECT_EQ(r.error->position.line, 5);
-  EXPECT_EQ(r.error->position.column, 29);  // expat points at the name in "</Idd>"
+  EXPECT_EQ(r.error->position.column, 29);  // the error points at the name in "</Idd>"
   EXPECT_EQ(r.error->to_string(), "test.tcx:5:29: malformed XML: mismatched tag");
 }
 
