@@ -437,7 +437,8 @@ class IgcParser {
     std::int64_t d = 0, m = 0, y = 0;
     static constexpr int kDays[] = {31, 29, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
     const bool digits_ok = read_digits(v, 0, 2, d) && read_digits(v, 2, 2, m) && read_digits(v, 4, 2, y);
-    const bool tail_ok = v.size() == 6 || v[6] == ',' || v[6] == ' ';
+    // digits_ok implies v.size() >= 6; only then may v[6] be looked at.
+    const bool tail_ok = digits_ok && (v.size() == 6 || v[6] == ',' || v[6] == ' ');
     if (digits_ok && tail_ok && m >= 1 && m <= 12 && d >= 1 && d <= kDays[m - 1]) {
       const long long year = y >= 80 ? 1900 + y : 2000 + y;
       const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
