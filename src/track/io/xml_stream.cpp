@@ -10,6 +10,7 @@
 #include "track/io/xml_stream.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <vector>
 
@@ -21,15 +22,22 @@ namespace {
 constexpr std::size_t kChunk = 1 << 20;
 constexpr std::size_t kMaxToken = XmlStream::kMaxValueBytes + (64 << 10);
 
-bool is_ws(char c) { return c == ' ' || c == '\n' || c == '\t' || c == '\r'; }
-bool is_name_start(char c) {
-  auto u = static_cast<unsigned char>(c);
-  return (u >= 'a' && u <= 'z') || (u >= 'A' && u <= 'Z') || u == '_' || u == ':' || u >= 0x80;
+// Character classes by table: the scanner asks these for every byte of every name.
+enum : unsigned char { kWs = 1, kNameStart = 2, kName = 4 };
+constexpr std::array<unsigned char, 256> make_classes() {
+  std::array<unsigned char, 256> t{};
+  for (int c = 0; c < 256; ++c) {
+    const bool start = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' || c >= 0x80;
+    const bool name = start || (c >= '0' && c <= '9') || c == '-' || c == '.';
+    t[static_cast<std::size_t>(c)] = static_cast<unsigned char>((start ? kNameStart : 0) | (name ? kName : 0) |
+                                                                (c == ' ' || c == '\n' || c == '\t' || c == '\r' ? kWs : 0));
+  }
+  return t;
 }
-bool is_name_char(char c) {
-  auto u = static_cast<unsigned char>(c);
-  return is_name_start(c) || (u >= '0' && u <= '9') || u == '-' || u == '.';
-}
+constexpr std::array<unsigned char, 256> kClass = make_classes();
+inline bool is_ws(char c) { return kClass[static_cast<unsigned char>(c)] & kWs; }
+inline bool is_name_start(char c) { return kClass[static_cast<unsigned char>(c)] & kNameStart; }
+inline bool is_name_char(char c) { return kClass[static_cast<unsigned char>(c)] & kName; }
 
 void put_utf8(std::string& out, unsigned long c) {
   if (c < 0x80) {
@@ -165,6 +173,7 @@ class XmlScanner {
   std::vector<Attribute> attrs_;
   std::string attr_store_;
   std::vector<const char*> attr_ptrs_;
+  std::vector<std::size_t> attr_offsets_;
   XmlParseOutcome out_;
 };
 
@@ -453,7 +462,8 @@ XmlScanner::Step XmlScanner::start_tag(std::size_t p) {
   attr_store_.clear();
   attr_store_.reserve(need);
   attr_ptrs_.clear();
-  std::vector<std::size_t> offsets;
+  std::vector<std::size_t>& offsets = attr_offsets_;
+  offsets.clear();
   for (const Attribute& a : attrs_) {
     offsets.push_back(attr_store_.size());
     attr_store_.append(buf_.data() + a.name, a.name_len);

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
 using namespace trailray::track;
 
 TEST(ParseDouble, AcceptsDecimalForms) {
@@ -46,4 +51,37 @@ TEST(DaysFromCivil, KnownDates) {
   EXPECT_EQ(days_from_civil(1970, 1, 1), 0);
   EXPECT_EQ(days_from_civil(2000, 3, 1), 11017);
   EXPECT_EQ(days_from_civil(1969, 12, 31), -1);
+}
+
+TEST(ParseDouble, AgreesWithFromCharsToOneUlp) {
+  // Short decimals must be exact, long ones (Garmin's 30-digit expansions) within 1 ulp.
+  std::uint64_t x = 88172645463325252ull;
+  for (int n = 0; n < 20000; ++n) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    const int int_digits = static_cast<int>(x % 4);
+    const int frac_digits = static_cast<int>((x >> 8) % 32);
+    std::string text = (x >> 16) % 2 ? "-" : "";
+    std::uint64_t y = x;
+    for (int k = 0; k < int_digits + 1; ++k, y /= 7) text += static_cast<char>('0' + y % 10);
+    text += '.';
+    for (int k = 0; k < frac_digits; ++k, y = y * 6364136223846793005ull + 1) text += static_cast<char>('0' + (y >> 33) % 10);
+    double want = 0;
+    std::from_chars(text.data(), text.data() + text.size(), want);
+    auto got = parse_double(text);
+    ASSERT_TRUE(got) << text;
+    const int significant = int_digits + 1 + frac_digits;
+    if (significant <= 15) EXPECT_EQ(*got, want) << text;
+    else EXPECT_LE(std::fabs(*got - want), std::fabs(std::nextafter(want, 0.0) - want) + 1e-300) << text;
+  }
+  auto within_ulp = [](double got, double want) { return std::fabs(got - want) <= std::fabs(std::nextafter(want, 0.0) - want); };
+  EXPECT_TRUE(within_ulp(*parse_double("47.05000556074082851409912109375"), 47.05000556074082851409912109375));
+  EXPECT_EQ(parse_double("000123.4500"), 123.45);
+  EXPECT_EQ(parse_double(".5"), 0.5);
+  EXPECT_EQ(parse_double("5."), 5.0);
+  EXPECT_FALSE(parse_double("."));
+  EXPECT_FALSE(parse_double("-"));
+  EXPECT_FALSE(parse_double("1.2.3"));
+  EXPECT_TRUE(within_ulp(*parse_double("123456789012345678901234"), 123456789012345678901234.0));
 }
