@@ -130,6 +130,18 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
     cov=$(grep -oE '(INITED|DONE|pulse|NEW|REDUCE) +cov: [0-9]+ ft: [0-9]+ corp: [0-9]+/[0-9]+[a-zA-Z]*' "$log" | tail -n1)
     if save_artifacts "$fmt" && [ $rc -eq 0 ]; then
       echo "$fmt: ok, $execs executions; $cov"
+      # Keep the corpus small: merge it into the inputs that still add coverage (the big
+      # inputs real files produce make it grow by ~100 MB a run otherwise).
+      rm -rf "$CORPUS/$fmt.merged" && mkdir -p "$CORPUS/$fmt.merged"
+      if "$bin" -merge=1 -max_len="${FUZZ_MAX_LEN:-1048576}" -rss_limit_mb=2048 -timeout=10 \
+           "$CORPUS/$fmt.merged" "$CORPUS/$fmt" >"$LOGS/merge-$fmt.log" 2>&1; then
+        before=$(du -sh "$CORPUS/$fmt" | cut -f1)
+        rm -rf "${CORPUS:?}/$fmt" && mv "$CORPUS/$fmt.merged" "$CORPUS/$fmt"
+        echo "$fmt: corpus minimised, $before -> $(du -sh "$CORPUS/$fmt" | cut -f1)"
+      else
+        rm -rf "$CORPUS/$fmt.merged"
+        echo "$fmt: corpus merge failed (see $LOGS/merge-$fmt.log); corpus kept as is"
+      fi
     else
       echo "$fmt: FAILED (libFuzzer exit $rc) after $execs executions; $cov"
       report "$log"
