@@ -11,6 +11,7 @@ packages=(
   ninja-build            # fast incremental builds
   pkg-config             # locating libraries from CMake
   # --- libraries used by src/ ---
+  libfast-float-dev      # correctly rounded number parsing, several times faster than strtod/from_chars
   zlib1g-dev             # reading .gpx.gz / .igc.gz / .tcx.gz transparently
   libgeographiclib-dev   # WGS84 geodesic distances and local Cartesian frames (geo/)
   libcli11-dev           # command-line parsing (app/)

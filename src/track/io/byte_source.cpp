@@ -39,6 +39,29 @@ class GzFileSource final : public ByteSource {
   std::string error_;
 };
 
+// A plain (uncompressed) file: read() straight into the caller's buffer, without zlib's
+// pass-through copy.
+class PlainFileSource final : public ByteSource {
+ public:
+  PlainFileSource(int fd, std::string path) : ByteSource(path, path), fd_(fd) {}
+  ~PlainFileSource() override { close(fd_); }
+
+  std::ptrdiff_t read(char* out, std::size_t max) override {
+    for (;;) {
+      ssize_t n = ::read(fd_, out, max);
+      if (n >= 0) return n;
+      if (errno == EINTR) continue;
+      error_ = std::strerror(errno);
+      return -1;
+    }
+  }
+  std::string error() const override { return error_; }
+
+ private:
+  int fd_;
+  std::string error_;
+};
+
 class MemorySource final : public ByteSource {
  public:
   MemorySource(std::string data, std::string name) : ByteSource(name, name), data_(std::move(data)) {}
@@ -104,6 +127,9 @@ std::unique_ptr<ByteSource> ByteSource::open(const std::string& path, std::strin
     error = std::strerror(errno);
     return nullptr;
   }
+  unsigned char magic[2] = {0, 0};
+  if (pread(fd, magic, 2, 0) == 2 && !(magic[0] == 0x1f && magic[1] == 0x8b))
+    return std::unique_ptr<ByteSource>(new PlainFileSource(fd, path));
   gzFile f = gzdopen(fd, "rb");
   if (!f) {
     close(fd);

@@ -19,7 +19,8 @@ enum class Channel { None, HeartRate, Cadence, Temperature, Power, Speed };
 // Extension element (any depth inside a point) -> recorded channel. Case-insensitive.
 Channel extension_channel(std::string_view name) {
   char buf[24];
-  if (name.size() >= sizeof buf) return Channel::None;
+  // Known names are 2 to 12 letters; containers like TrackPointExtension are longer.
+  if (name.size() < 2 || name.size() > 12) return Channel::None;
   for (std::size_t i = 0; i < name.size(); ++i)
     buf[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(name[i])));
   std::string_view n(buf, name.size());

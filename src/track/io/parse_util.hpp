@@ -11,7 +11,7 @@ std::string_view trim(std::string_view s);
 
 // A finite decimal number ("12", "-3.5", "1e3", leading '+' allowed), surrounding
 // whitespace ignored; nullopt for anything else, including NaN and infinities. Correctly
-// rounded up to 15 significant digits, within 1 ulp for longer ones.
+// rounded.
 std::optional<double> parse_double(std::string_view s);
 
 // ISO 8601 / XML Schema dateTime to seconds since the Unix epoch, UTC.

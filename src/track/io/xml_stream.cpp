@@ -143,6 +143,7 @@ class XmlScanner {
   Step start_tag(std::size_t p);
   Step end_tag(std::size_t p);
   Step special(std::size_t p);
+  bool collect_attributes();  // attrs_ -> attr_store_/attr_ptrs_; false on a bad reference
   void text(std::size_t from, std::size_t to);
   void materialize_text();
   void error(const std::string& what, std::size_t at) {
@@ -167,6 +168,7 @@ class XmlScanner {
   int depth_ = 0;
   std::string names_;                  // open element names, concatenated
   std::vector<std::uint32_t> starts_;  // where each open name starts in names_
+  std::vector<std::uint32_t> locals_;  // where its local part (after any prefix) starts
   std::string text_;                   // owned text of the current element
   std::string_view text_view_;         // or a view into buf_ when it is one piece
   bool text_owned_ = false;
@@ -209,10 +211,21 @@ SourcePosition XmlScanner::position_of(std::int64_t absolute) {
   std::int64_t to = std::min(absolute, abs(end_));
   if (from < to) {
     const char* first = buf_.data() + (from - base_);
-    const char* last = buf_.data() + (to - base_);
-    for (const char* nl = first; (nl = static_cast<const char*>(std::memchr(nl, '\n', static_cast<std::size_t>(last - nl)))); ++nl) {
-      ++line_;
-      line_start_ = base_ + (nl - buf_.data()) + 1;
+    const std::size_t len = static_cast<std::size_t>(to - from);
+    // Counted in blocks of 255 with a byte-sized sum, which the compiler vectorises (a plain
+    // std::count is not); memrchr finds where the last line starts.
+    std::int64_t lines = 0;
+    for (std::size_t at = 0; at < len;) {
+      const std::size_t block = std::min<std::size_t>(255, len - at);
+      unsigned char in_block = 0;
+      for (std::size_t k = 0; k < block; ++k) in_block = static_cast<unsigned char>(in_block + (first[at + k] == '\n'));
+      lines += in_block;
+      at += block;
+    }
+    if (lines > 0) {
+      line_ += lines;
+      const char* last_nl = static_cast<const char*>(memrchr(first, '\n', len));
+      line_start_ = from + (last_nl - first) + 1;
     }
   }
   counted_ = std::max(counted_, to);
@@ -359,15 +372,48 @@ XmlScanner::Step XmlScanner::end_tag(std::size_t p) {
   }
   event_abs_ = abs(p);
   std::string_view body = text_owned_ ? std::string_view(text_) : text_view_;
-  handler_.end_element(xml_local_name(name), body);
+  handler_.end_element(std::string_view(names_).substr(locals_.back()), body);
   text_.clear();
   text_view_ = {};
   text_owned_ = false;
   names_.resize(starts_.back());
   starts_.pop_back();
+  locals_.pop_back();
   if (--depth_ == 0) root_closed_ = true;
   pos_ = n + 1;
   return Step::Done;
+}
+
+bool XmlScanner::collect_attributes() {
+  std::size_t need = 1;
+  for (const Attribute& a : attrs_) need += a.name_len + a.value_len + 2;
+  attr_store_.clear();
+  attr_store_.reserve(need);
+  attr_ptrs_.clear();
+  std::vector<std::size_t>& offsets = attr_offsets_;
+  offsets.clear();
+  for (const Attribute& a : attrs_) {
+    offsets.push_back(attr_store_.size());
+    attr_store_.append(buf_.data() + a.name, a.name_len);
+    attr_store_.push_back('\0');
+    offsets.push_back(attr_store_.size());
+    std::string_view raw(buf_.data() + a.value, a.value_len);
+    if (raw.find('&') == std::string_view::npos) {
+      attr_store_.append(raw);
+    } else {
+      std::string why;
+      std::size_t bad = decode_references(raw, attr_store_, why);
+      if (bad != std::string_view::npos) {
+        error(why, a.value + bad);
+        return false;
+      }
+    }
+    attr_store_.push_back('\0');
+  }
+  for (std::size_t off : offsets) attr_ptrs_.push_back(attr_store_.data() + off);
+  attr_ptrs_.push_back(nullptr);
+
+  return true;
 }
 
 XmlScanner::Step XmlScanner::start_tag(std::size_t p) {
@@ -457,47 +503,28 @@ XmlScanner::Step XmlScanner::start_tag(std::size_t p) {
   std::string_view name(buf_.data() + i, name_end - i);
 
   // Attribute names and decoded values, NUL-terminated, in one store that never reallocates.
-  std::size_t need = 1;
-  for (const Attribute& a : attrs_) need += a.name_len + a.value_len + 2;
-  attr_store_.clear();
-  attr_store_.reserve(need);
-  attr_ptrs_.clear();
-  std::vector<std::size_t>& offsets = attr_offsets_;
-  offsets.clear();
-  for (const Attribute& a : attrs_) {
-    offsets.push_back(attr_store_.size());
-    attr_store_.append(buf_.data() + a.name, a.name_len);
-    attr_store_.push_back('\0');
-    offsets.push_back(attr_store_.size());
-    std::string_view raw(buf_.data() + a.value, a.value_len);
-    if (raw.find('&') == std::string_view::npos) {
-      attr_store_.append(raw);
-    } else {
-      std::string why;
-      std::size_t bad = decode_references(raw, attr_store_, why);
-      if (bad != std::string_view::npos) {
-        error(why, a.value + bad);
-        return Step::Done;
-      }
-    }
-    attr_store_.push_back('\0');
+  static const char* const kNoAttributes[] = {nullptr};
+  const char** attributes = const_cast<const char**>(kNoAttributes);
+  if (!attrs_.empty()) {
+    if (!collect_attributes()) return Step::Done;
+    attributes = attr_ptrs_.data();
   }
-  for (std::size_t off : offsets) attr_ptrs_.push_back(attr_store_.data() + off);
-  attr_ptrs_.push_back(nullptr);
 
   event_abs_ = abs(p);
+  std::string_view local = xml_local_name(name);
   starts_.push_back(static_cast<std::uint32_t>(names_.size()));
+  locals_.push_back(static_cast<std::uint32_t>(names_.size() + (local.data() - name.data())));
   names_.append(name);
   ++depth_;
   text_.clear();
   text_view_ = {};
   text_owned_ = false;
-  std::string_view local = xml_local_name(name);
-  handler_.start_element(local, attr_ptrs_.data());
+  handler_.start_element(local, attributes);
   if (empty && !stopped_) {
     handler_.end_element(local, {});
     names_.resize(starts_.back());
     starts_.pop_back();
+    locals_.pop_back();
     if (--depth_ == 0) root_closed_ = true;
   }
   pos_ = n + 1;
