@@ -133,7 +133,7 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
       # Keep the corpus small: merge it into the inputs that still add coverage (the big
       # inputs real files produce make it grow by ~100 MB a run otherwise).
       rm -rf "$CORPUS/$fmt.merged" && mkdir -p "$CORPUS/$fmt.merged"
-      if "$bin" -merge=1 -max_len="${FUZZ_MAX_LEN:-1048576}" -rss_limit_mb=2048 -timeout=10 \
+      if "$bin" -merge=1 -max_len=1048576 -rss_limit_mb=2048 -timeout=10 \
            "$CORPUS/$fmt.merged" "$CORPUS/$fmt" >"$LOGS/merge-$fmt.log" 2>&1; then
         before=$(du -sh "$CORPUS/$fmt" | cut -f1)
         rm -rf "${CORPUS:?}/$fmt" && mv "$CORPUS/$fmt.merged" "$CORPUS/$fmt"
