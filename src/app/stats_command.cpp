@@ -52,11 +52,13 @@ void add_stats_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<StatsArgs>();
   CLI::App* cmd = app.add_subcommand("stats", "Distance, time, climb and speeds per track and segment");
   cmd->footer(
-      "Each track is measured twice: `raw` as recorded, and `clean` after dropping duplicate or backward\n"
-      "timestamps, enforcing --min-distance and Gaussian smoothing. The table shows clean figures;\n"
-      "--json prints both, per track and per segment. Exit status 1 when any file could not be read.");
+      "Each track is measured twice: `raw` as recorded, and `clean` after repairing timestamps\n"
+      "(duplicates, same-second runs, backward jumps), enforcing --min-distance and Gaussian\n"
+      "smoothing. The table shows clean figures; --json prints both, per track and per segment.\n"
+      "Exit status: 0 all read, 1 when any file could not be read, 2 for a usage error.");
   cmd->add_option("TRACK", args->files, "GPX, IGC or TCX files (gzip too), or - for standard input")
-      ->required();
+      ->required()
+      ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of tables");
   add_track_options(*cmd, args->track);
   cmd->callback([args, &exit_code] { exit_code = run_stats(*args); });

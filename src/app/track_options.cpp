@@ -1,5 +1,6 @@
 #include "app/track_options.hpp"
 
+#include <cctype>
 #include <map>
 
 namespace trailray::app {
@@ -11,22 +12,28 @@ void add_track_options(CLI::App& cmd, TrackOptions& o) {
       {"auto", track::ReadOptions::IgcAltitude::Auto},
       {"gnss", track::ReadOptions::IgcAltitude::Gnss},
       {"pressure", track::ReadOptions::IgcAltitude::Pressure}};
-  cmd.add_option("--igc-altitude", o.read.igc_altitude,
-                 "IGC altitude used as elevation: auto (GNSS when valid, else pressure), gnss, pressure")
-      ->transform(CLI::CheckedTransformer(altitudes, CLI::ignore_case))
-      ->default_str("auto");
+  cmd.add_option_function<std::string>(
+         "--igc-altitude",
+         [&o, altitudes](const std::string& v) {
+           std::string key = v;
+           for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+           o.read.igc_altitude = altitudes.at(key);
+         },
+         "IGC altitude used as elevation: auto (GNSS when the fix is valid, else pressure), gnss, pressure")
+      ->check(CLI::IsMember({"auto", "gnss", "pressure"}, CLI::ignore_case))
+      ->type_name("auto|gnss|pressure");
   cmd.add_option("--min-distance", o.analysis.clean.min_distance_m,
-                 "Cleaning: minimum distance between consecutive points, metres (0 = off)")
+                 "Cleaning: minimum distance between consecutive points, metres (0 = off; default 3)")
       ->check(CLI::Range(0.0, 1000.0))
-      ->capture_default_str();
-  cmd.add_flag("--no-smooth{false}", o.analysis.clean.smooth, "Cleaning: no Gaussian smoothing");
+      ->type_name("M");
+  cmd.add_flag_callback("--no-smooth", [&o] { o.analysis.clean.smooth = false; }, "Cleaning: no Gaussian smoothing");
   cmd.add_option("--smooth-width", o.analysis.clean.smooth_half_width,
-                 "Cleaning: Gaussian half-width N in points (kernel of 2N+1)")
+                 "Cleaning: Gaussian half-width in points, kernel of 2N+1 (default 5)")
       ->check(CLI::Range(1, 100))
-      ->capture_default_str();
-  cmd.add_option("--smooth-sigma", o.analysis.clean.smooth_sigma, "Cleaning: Gaussian sigma in points")
+      ->type_name("N");
+  cmd.add_option("--smooth-sigma", o.analysis.clean.smooth_sigma, "Cleaning: Gaussian sigma in points (default 1)")
       ->check(CLI::Range(0.1, 100.0))
-      ->capture_default_str();
+      ->type_name("S");
 }
 
 }  // namespace trailray::app
