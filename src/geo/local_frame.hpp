@@ -1,8 +1,17 @@
 #pragma once
-// A local east-north-up Cartesian frame (metres) tangent to the WGS84 ellipsoid at an
-// origin. Used where metric operations (smoothing, slopes) need a flat frame.
+// Local metric frames on the WGS84 ellipsoid, for metric operations (smoothing, slopes) that
+// need flat coordinates:
+//   - LocalFrame: an east-north-up Cartesian frame (metres) tangent at an origin (exact,
+//     GeographicLib; a few hundred nanoseconds a point);
+//   - to_ecef / from_ecef: Earth-centred Cartesian coordinates of points on the ellipsoid;
+//   - local_mean_offset: the mean of nearby points from the moments of their latitude and
+//     longitude offsets, a closed form of the 3D mean for clusters a few kilometres across
+//     (no trigonometry per point: the hot path of the track smoothing).
 
+#include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
+
+#include "geo/wgs84.hpp"
 
 namespace trailray::geo {
 
@@ -26,5 +35,56 @@ class LocalFrame {
  private:
   GeographicLib::LocalCartesian cartesian_;
 };
+
+// Earth-centred, Earth-fixed coordinates (metres) of a point on the ellipsoid (height 0), and
+// back: the point of the ellipsoid whose normal passes through (x, y, z).
+struct Ecef {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+inline Ecef to_ecef(double lat, double lon) {
+  Ecef p;
+  GeographicLib::Geocentric::WGS84().Forward(lat, lon, 0.0, p.x, p.y, p.z);
+  return p;
+}
+inline void from_ecef(const Ecef& p, double& lat, double& lon) {
+  double h = 0.0;
+  GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, lat, lon, h);
+}
+
+// The weighted mean of points near (lat0, lon0), averaged as 3D points on the ellipsoid (as in
+// an east-north-up frame, or ECEF) and projected back onto it along the normal, from the
+// weighted moments of their offsets a = lat - lat0, b = lon - lon0 (degrees; b unwrapped
+// across the antimeridian): the means of a and b, their variances and covariance. Returns the
+// mean point's offset from (lat0, lon0) in degrees. Expansion to second order in the offsets
+// (with phi = lat0, M, N the radii of curvature there, angles in radians):
+//   dlat = <a> + (N sin(phi) cos(phi) / (2 M)) var(b) + (M' / (2 M)) var(a),
+//   dlon = <b> - (M sin(phi) / (N cos(phi))) cov(a, b),      M' = dM/dphi,
+// i.e. the first-order mean corrected for the curvature of parallels and meridians. Against
+// the exact 3D mean, for offsets up to kLocalMeanMaxOffsetDeg at |lat0| <= kLocalMeanMaxLatDeg:
+// within 0.1 mm (measured over random windows: 0.03 mm at worst; below a micrometre for windows
+// of +-500 m under 80 degrees of latitude). The terms matter: without them, up to 19 mm.
+// Outside those limits use the exact computation (to_ecef / from_ecef).
+inline constexpr double kLocalMeanMaxOffsetDeg = 0.02;
+inline constexpr double kLocalMeanMaxLatDeg = 89.5;
+
+struct LatLonOffset {
+  double dlat = 0.0, dlon = 0.0;
+};
+inline LatLonOffset local_mean_offset(double lat0, double mean_a, double mean_b, double var_a, double var_b,
+                                      double cov_ab) {
+  using namespace wgs84;
+  const double phi = lat0 * kRadPerDeg;
+  const double s = sin_lat(phi), c = cos_lat(phi);
+  const double w2 = 1.0 - kE2 * s * s;
+  const double q = 1.0 / (w2 * c);  // one division: 1 / W^2 = q c, 1 / c = q W^2
+  const double m_over_n = (1.0 - kE2) * q * c;
+  const double n_over_m = w2 * (1.0 / (1.0 - kE2));
+  // Variances and covariance are in degrees^2: one factor kRadPerDeg turns the correction
+  // (radians^2 -> radians) back into degrees.
+  LatLonOffset o;
+  o.dlat = mean_a + kRadPerDeg * s * c * (0.5 * n_over_m * var_b + 1.5 * kE2 * q * c * var_a);
+  o.dlon = mean_b - kRadPerDeg * m_over_n * s * (q * w2) * cov_ab;
+  return o;
+}
 
 }  // namespace trailray::geo

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "geo/geodesic.hpp"
 
@@ -18,49 +19,103 @@ bool valid_coordinates(const TrackPoint& p) {
          std::abs(p.lon) <= 180.0;
 }
 
-// Geodesic step between consecutive points; 0 where a coordinate is unusable.
-double step_2d_m(const TrackPoint& a, const TrackPoint& b) {
-  if (!valid_coordinates(a) || !valid_coordinates(b)) return 0.0;
-  const double d = geo::geodesic_distance_m(a.lat, a.lon, b.lat, b.lon);
-  return std::isfinite(d) ? d : 0.0;
-}
-
 double non_negative_or_zero(double v) { return std::isfinite(v) && v > 0.0 ? v : 0.0; }
 
-// One point taking part in a windowed rate: its window coordinate (time or cumulative
-// distance), the value whose rate is measured, and whether a new run starts at it.
-struct Sample {
-  double key;
-  double value;
-  std::size_t point;
-  bool run_start;
+// For each sample k of one run [a, b) (keys non-decreasing), the window covering
+// [key_k - half, key_k + half]: from the nearest sample at or before the left edge to the
+// nearest sample at or after the right edge, each strictly before / after key_k, clipped to the
+// run. Calls emit(k, first, last). O(b - a): both ends only move forward.
+template <class Key, class Emit>
+void windows_over_run(std::size_t a, std::size_t b, const Key& key, double half, const Emit& emit) {
+  std::size_t p = a;  // samples [a, p): at or before the left edge, strictly before key_k
+  std::size_t q = a;  // first sample at or after the right edge, strictly after key_k
+  for (std::size_t k = a; k < b; ++k) {
+    const double kk = key(k);
+    while (p < b && key(p) <= kk - half && key(p) < kk) ++p;
+    while (q < b && !(key(q) >= kk + half && key(q) > kk)) ++q;
+    emit(k, p > a ? p - 1 : a, q < b ? q : b - 1);
+  }
+}
+
+// out = d_value / span * scale, unless the span is below min_span or the rate is not finite
+// (then out stays NaN).
+inline void put_rate(double d_value, double span, double min_span, double scale, double& out) {
+  if (span >= min_span) {
+    const double rate = d_value / span * scale;
+    if (std::isfinite(rate)) out = rate;
+  }
+}
+
+// The points taking part in one windowed rate, in order, split into runs: a run is a stretch
+// whose keys do not go backwards and that contains no pause (see metrics.hpp). When every
+// point of the segment takes part (the usual case) the samples are the points themselves and
+// only the run boundaries are stored; otherwise keys, values and point indices are gathered.
+struct Samples {
+  bool direct = true;                   // sample k is point k
+  std::vector<double> key, value;       // gathered (not direct) only
+  std::vector<std::size_t> point;       // gathered (not direct) only
+  std::vector<std::size_t> run_starts;  // first sample of each run, then the sample count
 };
 
-// out[sample.point] = d value / d key over the window covering [key_i - half, key_i + half]:
-// from the nearest point at or before the left edge to the nearest point at or after the right
-// edge, each strictly before / after key_i, clipped to the run. O(n): both ends only move forward.
-void windowed_rate(const std::vector<Sample>& s, double half, double min_span, double scale,
-                   std::vector<double>& out) {
-  const std::size_t n = s.size();
-  std::size_t a = 0;
-  while (a < n) {
-    std::size_t b = a + 1;
-    while (b < n && !s[b].run_start) ++b;
-    std::size_t p = a;  // s[a, p): the points at or before the left edge, strictly before key_i
-    std::size_t q = a;  // first point at or after the right edge, strictly after key_i
-    for (std::size_t k = a; k < b; ++k) {
-      const double key = s[k].key;
-      while (p < b && s[p].key <= key - half && s[p].key < key) ++p;
-      while (q < b && !(s[q].key >= key + half && s[q].key > key)) ++q;
-      const std::size_t first = p > a ? p - 1 : a;
-      const std::size_t last = q < b ? q : b - 1;
-      const double span = s[last].key - s[first].key;
-      if (span >= min_span) {
-        const double rate = (s[last].value - s[first].value) / span * scale;
-        if (std::isfinite(rate)) out[s[k].point] = rate;
-      }
+// Fills `s` with the points where eligible(i), keyed by key(i) with value(i). A run starts at
+// the first sample, where the piece (pause-free stretch: a new one starts at a timed point more
+// than max_gap_s after the previous timed point) changes, where the key goes backwards, and,
+// for time keys, after a key step longer than max_gap_s.
+template <class Eligible, class Key, class Value>
+void collect_samples(const std::vector<TrackPoint>& pts, bool all_eligible, const Eligible& eligible, const Key& key,
+                     const Value& value, bool time_key, bool pauses, double max_gap_s, Samples& s) {
+  const std::size_t n = pts.size();
+  s.direct = all_eligible;
+  s.key.clear();
+  s.value.clear();
+  s.point.clear();
+  s.run_starts.clear();
+  if (!all_eligible) {
+    s.key.reserve(n);
+    s.value.reserve(n);
+    s.point.reserve(n);
+  }
+  std::size_t count = 0, piece = 0, prev_piece = 0;
+  double last_time = kMissing, prev_key = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = pts[i].time;
+    if (std::isfinite(t)) {
+      if (pauses && !std::isnan(last_time) && t - last_time > max_gap_s) ++piece;
+      last_time = t;
     }
-    a = b;
+    if (!all_eligible && !eligible(i)) continue;
+    const double k = key(i);
+    const bool start = count == 0 || piece != prev_piece || k < prev_key ||
+                       (time_key && pauses && k - prev_key > max_gap_s);
+    if (start) s.run_starts.push_back(count);
+    if (!all_eligible) {
+      s.key.push_back(k);
+      s.value.push_back(value(i));
+      s.point.push_back(i);
+    }
+    prev_piece = piece;
+    prev_key = k;
+    ++count;
+  }
+  s.run_starts.push_back(count);
+}
+
+template <class Key, class Value>
+void windowed_rate(const Samples& s, const Key& key, const Value& value, double half, double min_span,
+                   double scale, std::vector<double>& out) {
+  for (std::size_t r = 0; r + 1 < s.run_starts.size(); ++r) {
+    const std::size_t a = s.run_starts[r], b = s.run_starts[r + 1];
+    if (s.direct) {
+      windows_over_run(a, b, key, half, [&](std::size_t k, std::size_t first, std::size_t last) {
+        put_rate(value(last) - value(first), key(last) - key(first), min_span, scale, out[k]);
+      });
+    } else {
+      windows_over_run(
+          a, b, [&](std::size_t k) { return s.key[k]; }, half,
+          [&](std::size_t k, std::size_t first, std::size_t last) {
+            put_rate(s.value[last] - s.value[first], s.key[last] - s.key[first], min_span, scale, out[s.point[k]]);
+          });
+    }
   }
 }
 
@@ -84,77 +139,106 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
   m.glide_ratio.assign(n, kMissing);
   if (n == 0) return m;
 
-  auto has_time = [&](std::size_t i) { return std::isfinite(pts[i].time); };
-  auto has_ele = [&](std::size_t i) { return std::isfinite(pts[i].ele); };
-
-  // Cumulative distances: one geodesic per consecutive pair.
+  // Geodesic steps, one per consecutive pair (0 where a coordinate is unusable), stored in
+  // distance_m for now. A loop of its own: no chain through the cumulative sums, so the
+  // processor overlaps consecutive steps.
   m.distance_m[0] = std::isfinite(distance_offset_m) ? distance_offset_m : 0.0;
   m.distance_3d_m[0] = std::isfinite(distance_3d_offset_m) ? distance_3d_offset_m : 0.0;
+  bool prev_valid = valid_coordinates(pts[0]);
   for (std::size_t i = 1; i < n; ++i) {
-    const double d2 = step_2d_m(pts[i - 1], pts[i]);
-    double d3 = d2;
-    if (has_ele(i - 1) && has_ele(i)) d3 = std::hypot(d2, pts[i].ele - pts[i - 1].ele);
-    m.distance_m[i] = m.distance_m[i - 1] + d2;
-    m.distance_3d_m[i] = m.distance_3d_m[i - 1] + (std::isfinite(d3) ? d3 : d2);
+    const TrackPoint& p = pts[i];
+    const TrackPoint& q = pts[i - 1];
+    const bool valid = valid_coordinates(p);
+    double d2 = 0.0;
+    if (valid && prev_valid) {
+      d2 = geo::geodesic_distance_m(q.lat, q.lon, p.lat, p.lon);
+      if (!std::isfinite(d2)) d2 = 0.0;
+    }
+    m.distance_m[i] = d2;
+    prev_valid = valid;
   }
 
-  // Elapsed time.
+  // Cumulative distances (3D steps with the elevation difference where both points have one),
+  // elapsed time, and the runs used below when every point has a time and an elevation: time
+  // runs (a new one after a pause or where the time goes back) and pieces (after a pause).
   double origin = time_origin_s;
   if (!std::isfinite(origin)) {
     origin = kMissing;
     for (std::size_t i = 0; i < n && std::isnan(origin); ++i)
-      if (has_time(i)) origin = pts[i].time;
+      if (std::isfinite(pts[i].time)) origin = pts[i].time;
   }
-  for (std::size_t i = 0; i < n; ++i)
-    if (has_time(i) && std::isfinite(origin)) m.elapsed_s[i] = pts[i].time - origin;
-
-  // Pieces: a new piece starts at a timed point more than max_gap_s after the previous timed point.
   const bool pauses = std::isfinite(options.max_gap_s) && options.max_gap_s > 0.0;
-  std::vector<std::size_t> piece(n, 0);
-  {
-    std::size_t id = 0;
-    double last_time = kMissing;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (has_time(i)) {
-        if (pauses && !std::isnan(last_time) && pts[i].time - last_time > options.max_gap_s) ++id;
-        last_time = pts[i].time;
-      }
-      piece[i] = id;
+  std::size_t timed = 0, with_ele = 0, timed_with_ele = 0;
+  std::vector<std::size_t> time_runs{0}, pieces{0};
+  for (std::size_t i = 0; i < n; ++i) {
+    const TrackPoint& p = pts[i];
+    const bool t_ok = std::isfinite(p.time), e_ok = std::isfinite(p.ele);
+    timed += t_ok;
+    with_ele += e_ok;
+    timed_with_ele += t_ok && e_ok;
+    if (t_ok && std::isfinite(origin)) m.elapsed_s[i] = p.time - origin;
+    if (i == 0) continue;
+    const TrackPoint& q = pts[i - 1];
+    const double d2 = m.distance_m[i];
+    double d3 = d2;
+    if (e_ok && std::isfinite(q.ele)) {
+      const double dz = p.ele - q.ele;
+      d3 = std::sqrt(d2 * d2 + dz * dz);                // hypot is slow in glibc; it is only
+      if (!std::isfinite(d3)) d3 = std::hypot(d2, dz);  // needed where the squares overflow
     }
+    m.distance_m[i] = m.distance_m[i - 1] + d2;
+    m.distance_3d_m[i] = m.distance_3d_m[i - 1] + (std::isfinite(d3) ? d3 : d2);
+    const bool pause = pauses && p.time - q.time > options.max_gap_s;
+    if (pause) pieces.push_back(i);
+    if (pause || p.time < q.time) time_runs.push_back(i);
   }
+  time_runs.push_back(n);
+  pieces.push_back(n);
 
-  std::vector<Sample> samples;
-  samples.reserve(n);
-  auto build = [&](auto eligible, auto key, auto value, bool time_key) {
-    samples.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!eligible(i)) continue;
-      const double k = key(i);
-      bool start = samples.empty();
-      if (!start) {
-        const Sample& prev = samples.back();
-        start = piece[prev.point] != piece[i] || k < prev.key ||
-                (time_key && pauses && k - prev.key > options.max_gap_s);
-      }
-      samples.push_back(Sample{k, value(i), i, start});
-    }
-  };
-
+  // Windowed rates.
+  auto time_of = [&](std::size_t i) { return pts[i].time; };
+  auto ele_of = [&](std::size_t i) { return pts[i].ele; };
+  auto distance_of = [&](std::size_t i) { return m.distance_m[i]; };
   const double half_time = half_window(options.speed_window_s);
-  // Horizontal speed: points with a time; distance over time.
-  build(has_time, [&](std::size_t i) { return pts[i].time; }, [&](std::size_t i) { return m.distance_m[i]; },
-        true);
-  windowed_rate(samples, half_time, kMinTimeSpan_s, 1.0, m.speed_ms);
+  const double half_slope = half_window(options.slope_window_m);
+  if (timed == n && with_ele == n) {
+    // The usual case: every point takes part in every rate. Speed and vertical speed share
+    // their windows; steepness runs over the pieces (the cumulative distance never goes back).
+    for (std::size_t r = 0; r + 1 < time_runs.size(); ++r) {
+      windows_over_run(time_runs[r], time_runs[r + 1], time_of, half_time,
+                       [&](std::size_t k, std::size_t first, std::size_t last) {
+                         const double span = pts[last].time - pts[first].time;
+                         put_rate(m.distance_m[last] - m.distance_m[first], span, kMinTimeSpan_s, 1.0, m.speed_ms[k]);
+                         put_rate(pts[last].ele - pts[first].ele, span, kMinTimeSpan_s, 1.0, m.vspeed_ms[k]);
+                       });
+    }
+    for (std::size_t r = 0; r + 1 < pieces.size(); ++r) {
+      windows_over_run(pieces[r], pieces[r + 1], distance_of, half_slope,
+                       [&](std::size_t k, std::size_t first, std::size_t last) {
+                         put_rate(pts[last].ele - pts[first].ele, m.distance_m[last] - m.distance_m[first],
+                                  kMinDistanceSpan_m, 100.0, m.slope_pct[k]);
+                       });
+    }
+  } else {
+    // Each rate over the points that take part in it. Pieces and runs: see collect_samples.
+    auto has_time = [&](std::size_t i) { return std::isfinite(pts[i].time); };
+    auto has_ele = [&](std::size_t i) { return std::isfinite(pts[i].ele); };
+    Samples samples;
 
-  // Vertical speed: points with a time and an elevation.
-  build([&](std::size_t i) { return has_time(i) && has_ele(i); }, [&](std::size_t i) { return pts[i].time; },
-        [&](std::size_t i) { return pts[i].ele; }, true);
-  windowed_rate(samples, half_time, kMinTimeSpan_s, 1.0, m.vspeed_ms);
+    // Horizontal speed: points with a time; distance over time.
+    collect_samples(pts, timed == n, has_time, time_of, distance_of, true, pauses, options.max_gap_s, samples);
+    windowed_rate(samples, time_of, distance_of, half_time, kMinTimeSpan_s, 1.0, m.speed_ms);
 
-  // Steepness: points with an elevation; elevation over horizontal distance, in percent.
-  build(has_ele, [&](std::size_t i) { return m.distance_m[i]; }, [&](std::size_t i) { return pts[i].ele; },
-        false);
-  windowed_rate(samples, half_window(options.slope_window_m), kMinDistanceSpan_m, 100.0, m.slope_pct);
+    // Vertical speed: points with a time and an elevation.
+    collect_samples(
+        pts, timed_with_ele == n, [&](std::size_t i) { return has_time(i) && has_ele(i); }, time_of, ele_of, true,
+        pauses, options.max_gap_s, samples);
+    windowed_rate(samples, time_of, ele_of, half_time, kMinTimeSpan_s, 1.0, m.vspeed_ms);
+
+    // Steepness: points with an elevation; elevation over horizontal distance, in percent.
+    collect_samples(pts, with_ele == n, has_ele, distance_of, ele_of, false, pauses, options.max_gap_s, samples);
+    windowed_rate(samples, distance_of, ele_of, half_slope, kMinDistanceSpan_m, 100.0, m.slope_pct);
+  }
 
   // Glide ratio while sinking.
   const double min_sink = non_negative_or_zero(options.min_sink_for_glide_ms);

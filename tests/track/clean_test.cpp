@@ -3,8 +3,10 @@
 #include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "geo/geodesic.hpp"
@@ -399,6 +401,172 @@ TEST(Clean, ReportAddsUp) {
   EXPECT_EQ(r.too_close, 1u);
   EXPECT_EQ(r.total_dropped(), 3u);
   EXPECT_EQ(out.segments[0].points.size() + r.total_dropped(), pts.size());
+}
+
+
+// --- Smoothing and the minimum distance against straightforward reference implementations ------
+
+// Smoothing as defined in clean.hpp, computed the slow, obvious way: for every point the
+// exact weighted 3D (ECEF) mean of its window, projected back onto the ellipsoid; elevations
+// summed over the window in order, skipping missing ones. Stretches split at pauses.
+void reference_smooth(std::vector<TrackPoint>& pts, const CleanOptions& o) {
+  auto smooth = [&](std::size_t first, std::size_t last) {
+    const std::size_t n = last - first;
+    if (n < 3) return;
+    const std::size_t half = static_cast<std::size_t>(o.smooth_half_width);
+    std::vector<geo::Ecef> ecef;
+    std::vector<double> ele;
+    for (std::size_t i = first; i < last; ++i) {
+      ecef.push_back(geo::to_ecef(pts[i].lat, pts[i].lon));
+      ele.push_back(pts[i].ele);
+    }
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      const std::size_t k = std::min({half, i, n - 1 - i});
+      geo::Ecef sum;
+      double wsum = 0.0, ele_sum = 0.0, ele_wsum = 0.0;
+      for (std::size_t j = i - k; j <= i + k; ++j) {
+        const double d = static_cast<double>(j > i ? j - i : i - j);
+        const double w = std::exp(-d * d / (2.0 * o.smooth_sigma * o.smooth_sigma));
+        sum.x += w * ecef[j].x;
+        sum.y += w * ecef[j].y;
+        sum.z += w * ecef[j].z;
+        wsum += w;
+        if (!std::isnan(ele[j])) {
+          ele_sum += w * ele[j];
+          ele_wsum += w;
+        }
+      }
+      sum.x /= wsum;
+      sum.y /= wsum;
+      sum.z /= wsum;
+      TrackPoint& p = pts[first + i];
+      geo::from_ecef(sum, p.lat, p.lon);
+      if (p.has_ele()) p.ele = ele_sum / ele_wsum;
+    }
+  };
+  std::size_t start = 0;
+  double last_time = kMissing;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!pts[i].has_time()) continue;
+    if (!std::isnan(last_time) && pts[i].time - last_time > o.max_gap_s) {
+      smooth(start, i);
+      start = i;
+    }
+    last_time = pts[i].time;
+  }
+  smooth(start, pts.size());
+}
+
+// A random walk of n points from (lat, lon), steps of about step_m in a slowly turning
+// direction, 1 s apart; a pause (2 minutes) every 1500 points; some points without an
+// elevation or a time.
+std::vector<TrackPoint> random_walk(std::size_t n, double lat, double lon, double step_m, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> turn(0.0, 20.0), jitter(0.0, 0.3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<TrackPoint> pts;
+  double azimuth = 360.0 * u(rng), t = 0.0, ele = 500.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    TrackPoint p;
+    p.lat = lat;
+    p.lon = lon;
+    p.time = t;
+    ele += 2.0 * jitter(rng);
+    p.ele = ele;
+    if (u(rng) < 0.02) p.ele = kMissing;
+    if (u(rng) < 0.01 && i > 0) p.time = kMissing;
+    pts.push_back(p);
+    t += (i + 1) % 1500 == 0 ? 120.0 : 1.0;
+    azimuth += turn(rng);
+    double lat2 = 0.0, lon2 = 0.0;
+    GeographicLib::Geodesic::WGS84().Direct(lat, lon, azimuth, step_m * (1.0 + jitter(rng)), lat2, lon2);
+    lat = lat2;
+    lon = lon2;
+  }
+  return pts;
+}
+
+void expect_smoothing_matches_reference(const std::vector<TrackPoint>& pts, const CleanOptions& o,
+                                        const char* what) {
+  CleanReport r;
+  const Track out = clean_track(one_segment(pts), o, r);
+  ASSERT_EQ(r.total_dropped(), 0u) << what;
+  std::vector<TrackPoint> expected = pts;
+  reference_smooth(expected, o);
+  const auto& got = out.segments[0].points;
+  ASSERT_EQ(got.size(), expected.size()) << what;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    ASSERT_TRUE(std::abs(got[i].lon) <= 180.0) << what << " " << i;
+    worst = std::max(worst, dist(got[i], expected[i]));
+    // Elevations: the same sums in the same order, bit for bit.
+    if (expected[i].has_ele()) {
+      ASSERT_EQ(got[i].ele, expected[i].ele) << what << " " << i;
+    } else {
+      ASSERT_FALSE(got[i].has_ele()) << what << " " << i;
+    }
+    ASSERT_TRUE(got[i].time == expected[i].time || (!got[i].has_time() && !expected[i].has_time())) << what << i;
+  }
+  EXPECT_LT(worst, 1e-4) << what;  // clean.hpp: within 0.1 mm of the exact 3D mean
+}
+
+TEST(Clean, SmoothingMatchesTheExact3DMean) {
+  CleanOptions o;
+  o.min_distance_m = 0.0;
+  // Several blocks, pauses, missing elevations and times; a cyclist, a car, a sparse logger.
+  expect_smoothing_matches_reference(random_walk(5000, 46.5, 7.5, 5.0, 1), o, "5 m steps");
+  expect_smoothing_matches_reference(random_walk(3000, -33.9, 151.2, 30.0, 2), o, "30 m steps");
+  expect_smoothing_matches_reference(random_walk(2000, 60.0, 10.0, 1500.0, 3), o, "1.5 km steps");
+  // Across the antimeridian, and around a pole (the exact path).
+  expect_smoothing_matches_reference(random_walk(3000, -16.5, 179.99, 20.0, 4), o, "antimeridian");
+  expect_smoothing_matches_reference(random_walk(3000, 89.98, 0.0, 10.0, 5), o, "north pole");
+  // Other kernels: no smoothing of ends beyond the stretch, a kernel wider than a block.
+  for (const auto& [half_width, sigma] : std::vector<std::pair<int, double>>{{1, 1.0}, {2, 0.7}, {8, 3.0}, {1500, 400.0}}) {
+    o.smooth_half_width = half_width;
+    o.smooth_sigma = sigma;
+    expect_smoothing_matches_reference(random_walk(3500, 46.5, 7.5, 5.0, 6), o, "kernel");
+  }
+}
+
+// The minimum distance as defined in clean.hpp, point by point.
+std::vector<TrackPoint> reference_min_distance(const std::vector<TrackPoint>& in, double min_distance_m,
+                                               std::size_t& too_close) {
+  std::vector<TrackPoint> out{in.front()};
+  for (std::size_t i = 1; i < in.size(); ++i) {
+    const TrackPoint& p = in[i];
+    const TrackPoint& prev = out.back();
+    double d = geo::geodesic_distance_m(prev.lat, prev.lon, p.lat, p.lon);
+    if (prev.has_ele() && p.has_ele()) d = std::hypot(d, p.ele - prev.ele);
+    if (d >= min_distance_m) {
+      out.push_back(p);
+    } else if (i + 1 < in.size()) {
+      ++too_close;
+    } else if (out.size() >= 2) {
+      out.back() = p;
+      ++too_close;
+    } else {
+      out.push_back(p);
+    }
+  }
+  return out;
+}
+
+TEST(Clean, MinimumDistanceMatchesThePointByPointDefinition) {
+  for (const double step : {1.0, 3.0, 5.0}) {
+    std::vector<TrackPoint> pts = random_walk(4000, 46.5, 7.5, step, 7);
+    for (auto& p : pts) p.time = kMissing;  // no time checks: only the distance drops points
+    std::size_t too_close = 0;
+    const std::vector<TrackPoint> expected = reference_min_distance(pts, 3.0, too_close);
+    CleanReport r;
+    const Track out = clean_track(one_segment(pts), no_smoothing(3.0), r);
+    const auto& got = out.segments[0].points;
+    EXPECT_EQ(r.too_close, too_close) << step;
+    ASSERT_EQ(got.size(), expected.size()) << step;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      ASSERT_EQ(got[i].lat, expected[i].lat) << step << " " << i;
+      ASSERT_EQ(got[i].lon, expected[i].lon) << step << " " << i;
+    }
+  }
 }
 
 }  // namespace

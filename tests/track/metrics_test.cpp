@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "geo/geodesic.hpp"
@@ -291,6 +292,42 @@ TEST(Metrics, SegmentMetricsAloneMatchTheTrackRun) {
   EXPECT_EQ(s.distance_m, m.segments[0].distance_m);
   EXPECT_EQ(s.speed_ms, m.segments[0].speed_ms);
   EXPECT_EQ(s.elapsed_s, m.segments[0].elapsed_s);
+}
+
+
+TEST(Metrics, RatesDoNotDependOnWhetherEveryPointHasEveryChannel) {
+  // A segment where every point has a time and an elevation takes a shorter path through the
+  // rates; adding a point without either must not change anything for the others. Times with
+  // pauses and backward jumps (a raw track), 2000 points.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<TrackPoint> pts;
+  double t = 1000.0, ele = 800.0, s = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    pts.push_back(north(s, ele, t));
+    const double r = u(rng);
+    t += r < 0.01 ? 120.0 : r < 0.02 ? -3.0 : 1.0;
+    ele += 4.0 * (u(rng) - 0.5);
+    s += 8.0 * u(rng);
+  }
+  std::vector<TrackPoint> with_bare = pts;
+  with_bare.push_back(north(s));  // no time, no elevation
+  const TrackMetrics a = compute_metrics(one_segment(pts));
+  const TrackMetrics b = compute_metrics(one_segment(with_bare));
+  const SegmentMetrics& ma = a.segments[0];
+  const SegmentMetrics& mb = b.segments[0];
+  auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  std::size_t rates = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    ASSERT_TRUE(same(ma.distance_m[i], mb.distance_m[i])) << i;
+    ASSERT_TRUE(same(ma.speed_ms[i], mb.speed_ms[i])) << i;
+    ASSERT_TRUE(same(ma.vspeed_ms[i], mb.vspeed_ms[i])) << i;
+    ASSERT_TRUE(same(ma.slope_pct[i], mb.slope_pct[i])) << i;
+    ASSERT_TRUE(same(ma.glide_ratio[i], mb.glide_ratio[i])) << i;
+    rates += std::isfinite(ma.speed_ms[i]) && std::isfinite(ma.vspeed_ms[i]) && std::isfinite(ma.slope_pct[i]);
+  }
+  EXPECT_GT(rates, 1900u);
+  expect_sane(one_segment(with_bare), b);
 }
 
 }  // namespace
