@@ -109,17 +109,17 @@ std::string file_stats_table(const FileStats& f) {
                                 plural(f.tracks.size(), "track"), plural(f.routes, "route"),
                                 plural(f.waypoints, "waypoint"));
   if (f.tracks.empty()) return out;
-  out += fmt::format("  {:<24} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "track",
+  out += fmt::format("  {:<32} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "track",
                      "points", "segs", "distance", "duration", "moving", "gain", "loss", "min", "max", "avg",
                      "max");
-  out += fmt::format("  {:<24} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "", "",
+  out += fmt::format("  {:<32} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "", "",
                      "", "km", "h:mm:ss", "h:mm:ss", "m", "m", "m", "m", "km/h", "km/h");
   for (std::size_t i = 0; i < f.tracks.size(); ++i) {
     const auto& t = f.tracks[i];
     const auto& s = t.clean;
     std::string name = t.name.empty() ? fmt::format("#{}", i + 1) : t.name;
-    if (name.size() > 24) name = name.substr(0, 23) + "~";
-    out += fmt::format("  {:<24} {:>7} {:>4} {:>10.3f} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", name,
+    if (name.size() > 32) name = name.substr(0, 31) + "~";
+    out += fmt::format("  {:<32} {:>7} {:>4} {:>10.3f} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", name,
                        s.points, s.segments, s.distance_2d_m / 1000.0, hms(s.duration_s), hms(s.moving_time_s),
                        num(s.elevation_gain_m, 0, "+"), num(s.elevation_loss_m, 0, "-"), num(s.min_elevation_m, 0),
                        num(s.max_elevation_m, 0), num(s.avg_speed_kmh, 1), num(s.max_speed_kmh, 1));

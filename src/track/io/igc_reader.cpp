@@ -514,6 +514,21 @@ class IgcParser {
   bool gnss_present_ = false;
 };
 
+// "Flight 2024-07-14 from Amisbühl": the date and take-off site, never the pilot (IGC headers
+// carry personal data), so tables and legends can tell flights apart.
+void name_flight(TrackFile& file) {
+  if (file.tracks.empty()) return;
+  std::string date, site;
+  for (const auto& [key, value] : file.metadata.fields) {
+    if (key == "date" && date.empty()) date = value;
+    if (key == "site" && site.empty()) site = value;
+  }
+  std::string name = "Flight";
+  if (!date.empty()) name += " " + date;
+  if (!site.empty()) name += " from " + site;
+  file.tracks.front().name = name;
+}
+
 }  // namespace
 
 ReadResult read_igc(ByteSource& source, const ReadOptions& options) {
@@ -539,6 +554,7 @@ ReadResult read_igc(ByteSource& source, const ReadOptions& options) {
                               std::to_string(parser.points().size()) + " complete points before it");
     }
     parser.finish(result, source.display_name());
+    name_flight(result.file);
   } catch (const std::bad_alloc&) {
     result.file.tracks.clear();
     result.error = Diagnostic{source.display_name(), {}, "out of memory while reading the IGC file"};

@@ -848,3 +848,13 @@ TEST(IgcRealFiles, CutCopyOfARealFile) {
   EXPECT_EQ(points(r).size(), 499u);
   EXPECT_TRUE(has_warning(r, "file ends inside a record"));
 }
+
+TEST(IgcReader, FlightIsNamedByDateAndSiteNotPilot) {
+  auto src = ByteSource::from_memory(
+      "AXCT123\r\nHFDTEDATE:140724,01\r\nHFPLTPILOTINCHARGE:Jane Doe\r\nHOSITSite:Amisb\xC3\xBChl\r\n"
+      "B1200004642850N00749446EA0159401594\r\n",
+      "named.igc");
+  ReadResult r = read_igc(*src, {});
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.file.tracks.at(0).name, "Flight 2024-07-14 from Amisb\xC3\xBChl");
+}
