@@ -118,7 +118,11 @@ std::string file_stats_table(const FileStats& f) {
     const auto& t = f.tracks[i];
     const auto& s = t.clean;
     std::string name = t.name.empty() ? fmt::format("#{}", i + 1) : t.name;
-    if (name.size() > 32) name = name.substr(0, 31) + "~";
+    if (name.size() > 32) {
+      std::size_t cut = 31;
+      while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+      name = name.substr(0, cut) + "~";
+    }
     out += fmt::format("  {:<32} {:>7} {:>4} {:>10.3f} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", name,
                        s.points, s.segments, s.distance_2d_m / 1000.0, hms(s.duration_s), hms(s.moving_time_s),
                        num(s.elevation_gain_m, 0, "+"), num(s.elevation_loss_m, 0, "-"), num(s.min_elevation_m, 0),
