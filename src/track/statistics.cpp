@@ -160,10 +160,10 @@ class Accumulator {
           // Short intervals use the windowed speeds (robust to jitter); an interval longer than
           // the pause limit (a pause, lost signal, or a sparse logger) its own distance / dt.
           const double step_m = m.distance_m[i] - m.distance_m[prev];
-          const double own = step_m / (t - pts[prev].time);
-          const bool long_interval = pauses && t - pts[prev].time > max_gap_s;
-          double v = long_interval ? own : 0.5 * (m.speed_ms[prev] + m.speed_ms[i]);
-          if (!std::isfinite(v)) v = own;
+          const double interval = t - pts[prev].time;
+          const bool long_interval = pauses && interval > max_gap_s;
+          double v = long_interval ? kMissing : 0.5 * (m.speed_ms[prev] + m.speed_ms[i]);
+          if (!std::isfinite(v)) v = step_m / interval;  // its own speed
           if (v >= min_speed_ms) {
             moving_time_s_ += dt;
             moving_distance_m_ += step_m;
