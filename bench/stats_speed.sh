@@ -9,9 +9,9 @@
 # to 5 (gpxpy gets at most 3: it is slow). Environment: BENCH_POINTS (default 120000),
 # BENCH_KEEP=1 keeps the temporary directory.
 #
-# Each run goes through /usr/bin/time -f '%e %M' for its peak RSS (KiB); its wall time is read
-# from the clock around that call, since %e has only 10 ms resolution. The table shows the
-# median wall time and the largest peak RSS over the runs. Targets: trailray >=10x faster
+# Peak RSS comes from one run under /usr/bin/time -f %M; wall times from hyperfine (Debian
+# package, installed by scripts/setup.sh) over RUNS runs after a warm-up. The table shows the
+# median wall time and the peak RSS. Targets: trailray >=10x faster
 # than gpsbabel, >=40x faster than gpxpy, trailray's peak memory < 3x the file size.
 
 set -u
@@ -49,35 +49,47 @@ echo "bench: $(printf "%'d" "$SIZE" 2>/dev/null || echo "$SIZE") bytes, $POINTS 
 echo "bench: host $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
 
+have() { command -v "$1" >/dev/null 2>&1; }
+
 RESULTS="$TMP/results.txt"   # lines: tool status wall_s peak_kib
 : > "$RESULTS"
 
-# run_tool NAME RUNS CMD...: times CMD RUNS times; a failing run is recorded as such.
+# run_tool NAME RUNS CMD...: one run under /usr/bin/time for the peak RSS (KiB) and the output,
+# then the timed runs: through hyperfine when present (no shell, one warm-up run: nothing but
+# the command is timed), else from the clock around each /usr/bin/time call (which then counts
+# the fork of /usr/bin/time and date, a few ms, against every tool alike).
 run_tool() {
   local name=$1 runs=$2
   shift 2
+  rm -rf "$TMP/ogr_out.csv"
+  if ! "$TIME" -f '%e %M' -o "$TMP/time.txt" "$@" >"$TMP/$name.out" 2>"$TMP/$name.err"; then
+    echo "$name failed 0 0" >> "$RESULTS"
+    echo "bench: $name failed: $*"
+    sed 's/^/  | /' "$TMP/$name.err" | head -n 8
+    tail -n 3 "$TMP/time.txt" | sed 's/^/  | /'
+    return
+  fi
+  local kib
+  kib=$(tail -n1 "$TMP/time.txt" | cut -d' ' -f2)
+  if have hyperfine; then
+    hyperfine -N --style none --warmup 1 --runs "$runs" --prepare "rm -f $TMP/ogr_out.csv" \
+      --export-json "$TMP/$name.json" -- "$*" >/dev/null 2>"$TMP/$name.hf.err" || {
+      echo "bench: hyperfine failed for $name"; sed 's/^/  | /' "$TMP/$name.hf.err" | head -n 5; return; }
+    "$PY" -c 'import json,sys; [print(sys.argv[2], "ok", "%.5f" % t, sys.argv[3]) for t in json.load(open(sys.argv[1]))["results"][0]["times"]]' \
+      "$TMP/$name.json" "$name" "$kib" >> "$RESULTS"
+    return
+  fi
   local i
   for ((i = 1; i <= runs; i++)); do
     rm -rf "$TMP/ogr_out.csv"
-    local t0 t1 ok=1
+    local t0 t1
     t0=$(date +%s%N)
-    "$TIME" -f '%e %M' -o "$TMP/time.txt" "$@" >"$TMP/$name.out" 2>"$TMP/$name.err" || ok=0
+    "$TIME" -f '%e %M' -o "$TMP/time.txt" "$@" >/dev/null 2>&1
     t1=$(date +%s%N)
-    if [ $ok = 1 ]; then
-      # Wall time from the clock around the run (ns resolution; %e only has 10 ms), peak RSS
-      # from %M.
-      echo "$name ok $(awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.4f", (b - a) / 1e9}') $(tail -n1 "$TMP/time.txt" | cut -d' ' -f2)" >> "$RESULTS"
-    else
-      echo "$name failed 0 0" >> "$RESULTS"
-      echo "bench: $name run $i failed: $*"
-      sed 's/^/  | /' "$TMP/$name.err" | head -n 8
-      tail -n 3 "$TMP/time.txt" | sed 's/^/  | /'
-      return
-    fi
+    echo "$name ok $(awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.4f", (b - a) / 1e9}') $kib" >> "$RESULTS"
   done
 }
 
-have() { command -v "$1" >/dev/null 2>&1; }
 
 if [ -x "$TRAILRAY" ]; then
   echo "bench: trailray   ($TRAILRAY) x$RUNS"

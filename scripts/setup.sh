@@ -26,7 +26,8 @@ packages=(
   gpsbabel               # benchmark peer
   gdal-bin               # benchmark peer (ogr2ogr)
   libbenchmark-dev       # micro-benchmarks in bench/
-  time                   # /usr/bin/time -v: peak memory in the benchmark
+  time                   # /usr/bin/time: peak memory in the benchmark
+  hyperfine              # benchmark timings without shell or fork overhead
 )
 
 missing=()
