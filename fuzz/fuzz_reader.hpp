@@ -46,9 +46,15 @@ inline track::ReadOptions options_for(std::size_t size) {
   track::ReadOptions o;
   o.strict = size % 5 == 3;
   switch (size % 3) {
-    case 0: o.igc_altitude = track::ReadOptions::IgcAltitude::Auto; break;
-    case 1: o.igc_altitude = track::ReadOptions::IgcAltitude::Gnss; break;
-    default: o.igc_altitude = track::ReadOptions::IgcAltitude::Pressure; break;
+    case 0:
+      o.igc_altitude = track::ReadOptions::IgcAltitude::Auto;
+      break;
+    case 1:
+      o.igc_altitude = track::ReadOptions::IgcAltitude::Gnss;
+      break;
+    default:
+      o.igc_altitude = track::ReadOptions::IgcAltitude::Pressure;
+      break;
   }
   return o;
 }

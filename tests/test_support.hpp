@@ -3,21 +3,20 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace trailray::test {
 
 inline std::filesystem::path shared_data() { return std::filesystem::path(TRAILRAY_SHARED_DATA); }
 
 // Path of a file under ../shared/data, or skips the current test with a clear message.
-#define TRAILRAY_REQUIRE_DATA(var, relative)                                                 \
-  const std::filesystem::path var = ::trailray::test::shared_data() / (relative);            \
-  if (!std::filesystem::exists(var))                                                          \
-    GTEST_SKIP() << "shared test data absent: " << var.string()                             \
-                 << " (tests that read ../shared/data skip without it)";
+#define TRAILRAY_REQUIRE_DATA(var, relative)                                      \
+  const std::filesystem::path var = ::trailray::test::shared_data() / (relative); \
+  if (!std::filesystem::exists(var))                                              \
+    GTEST_SKIP() << "shared test data absent: " << var.string() << " (tests that read ../shared/data skip without it)";
 
 // A file in a fresh temporary folder, removed at scope end.
 class TempFile {

@@ -13,9 +13,7 @@ nlohmann::json opt(const std::optional<double>& v) {
   return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-std::string plural(std::size_t n, const char* word) {
-  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
-}
+std::string plural(std::size_t n, const char* word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); }
 
 std::string hms(const std::optional<double>& s) {
   if (!s) return "-";
@@ -92,8 +90,11 @@ nlohmann::json file_stats_json(const FileStats& f) {
   nlohmann::json tracks = nlohmann::json::array();
   for (const auto& t : f.tracks) {
     nlohmann::json segments = nlohmann::json::array();
-    for (const auto& s : t.segments) segments.push_back({{"raw", statistics_json(s.raw)}, {"clean", statistics_json(s.clean)}});
-    tracks.push_back({{"name", t.name}, {"raw", statistics_json(t.raw)}, {"clean", statistics_json(t.clean)},
+    for (const auto& s : t.segments)
+      segments.push_back({{"raw", statistics_json(s.raw)}, {"clean", statistics_json(s.clean)}});
+    tracks.push_back({{"name", t.name},
+                      {"raw", statistics_json(t.raw)},
+                      {"clean", statistics_json(t.clean)},
                       {"segments", std::move(segments)}});
   }
   j["tracks"] = std::move(tracks);
@@ -105,15 +106,14 @@ nlohmann::json file_stats_json(const FileStats& f) {
 }
 
 std::string file_stats_table(const FileStats& f) {
-  std::string out = fmt::format("{} ({}, {}, {}, {})\n", f.path, f.format ? track::format_name(*f.format) : "?",
-                                plural(f.tracks.size(), "track"), plural(f.routes, "route"),
-                                plural(f.waypoints, "waypoint"));
+  std::string out =
+      fmt::format("{} ({}, {}, {}, {})\n", f.path, f.format ? track::format_name(*f.format) : "?",
+                  plural(f.tracks.size(), "track"), plural(f.routes, "route"), plural(f.waypoints, "waypoint"));
   if (f.tracks.empty()) return out;
-  out += fmt::format("  {:<32} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "track",
-                     "points", "segs", "distance", "duration", "moving", "gain", "loss", "min", "max", "avg",
-                     "max");
-  out += fmt::format("  {:<32} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "", "",
-                     "", "km", "h:mm:ss", "h:mm:ss", "m", "m", "m", "m", "km/h", "km/h");
+  out += fmt::format("  {:<32} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "track", "points",
+                     "segs", "distance", "duration", "moving", "gain", "loss", "min", "max", "avg", "max");
+  out += fmt::format("  {:<32} {:>7} {:>4} {:>10} {:>9} {:>9} {:>7} {:>7} {:>7} {:>7} {:>6} {:>6}\n", "", "", "", "km",
+                     "h:mm:ss", "h:mm:ss", "m", "m", "m", "m", "km/h", "km/h");
   for (std::size_t i = 0; i < f.tracks.size(); ++i) {
     const auto& t = f.tracks[i];
     const auto& s = t.clean;

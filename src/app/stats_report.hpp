@@ -13,7 +13,7 @@
 namespace trailray::app {
 
 struct FileStats {
-  std::string path;                  // as given on the command line ("-" for stdin)
+  std::string path;  // as given on the command line ("-" for stdin)
   std::optional<track::Format> format;
   std::vector<track::TrackSummary> tracks;
   std::size_t routes = 0;

@@ -26,7 +26,8 @@ void add_track_options(CLI::App& cmd, TrackOptions& o) {
                  "Cleaning: minimum distance between consecutive points, metres (0 = off; default 3)")
       ->check(CLI::Range(0.0, 1000.0))
       ->type_name("M");
-  cmd.add_flag_callback("--no-smooth", [&o] { o.analysis.clean.smooth = false; }, "Cleaning: no Gaussian smoothing");
+  cmd.add_flag_callback(
+      "--no-smooth", [&o] { o.analysis.clean.smooth = false; }, "Cleaning: no Gaussian smoothing");
   cmd.add_option("--smooth-width", o.analysis.clean.smooth_half_width,
                  "Cleaning: Gaussian half-width in points, kernel of 2N+1 (default 5)")
       ->check(CLI::Range(1, 100))

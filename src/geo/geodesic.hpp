@@ -44,7 +44,7 @@ inline double short_step_distance_m(double lat1, double lat2, double dlat_deg, d
   const double dphi = dlat_deg * kRadPerDeg;
   const double dlambda = dlon_deg * kRadPerDeg;
   const double dlambda2 = dlambda * dlambda;
-  const double x2 = r.meridional_m2 * (dphi * dphi);     // (M dphi)^2
+  const double x2 = r.meridional_m2 * (dphi * dphi);      // (M dphi)^2
   const double y2 = r.prime_vertical_m2 * c2 * dlambda2;  // (N cos(phi_m) dlambda)^2
   // Mid-latitude formula plus the fourth-order term of the spherical law (sphere of radius N):
   // the parallel through the mean latitude is not a geodesic, and meridians converge.

@@ -9,9 +9,9 @@
 
 namespace trailray::geo::wgs84 {
 
-inline constexpr double kA = 6378137.0;                    // semi-major axis, metres
-inline constexpr double kF = 1.0 / 298.257223563;          // flattening
-inline constexpr double kE2 = kF * (2.0 - kF);             // first eccentricity squared
+inline constexpr double kA = 6378137.0;            // semi-major axis, metres
+inline constexpr double kF = 1.0 / 298.257223563;  // flattening
+inline constexpr double kE2 = kF * (2.0 - kF);     // first eccentricity squared
 inline constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 // sin and cos of x in radians for |x| <= pi/2 (a latitude): polynomials of degree 8 in x^2

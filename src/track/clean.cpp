@@ -13,8 +13,7 @@ namespace trailray::track {
 namespace {
 
 bool valid_coordinates(const TrackPoint& p) {
-  return std::isfinite(p.lat) && std::isfinite(p.lon) && std::abs(p.lat) <= 90.0 &&
-         std::abs(p.lon) <= 180.0;
+  return std::isfinite(p.lat) && std::isfinite(p.lon) && std::abs(p.lat) <= 90.0 && std::abs(p.lon) <= 180.0;
 }
 
 // A segment whose clock never advances: at least 3 timestamps spanning less than 1 ms per point
@@ -66,7 +65,8 @@ void spread_same_second_runs(std::vector<TrackPoint>& pts, CleanReport& report) 
           break;
         }
       const double span = std::isnan(next) || next <= t ? 1.0 : std::min(next - t, 1.0);
-      for (std::size_t k = 1; k < run; ++k) pts[i + k].time = t + span * static_cast<double>(k) / static_cast<double>(run);
+      for (std::size_t k = 1; k < run; ++k)
+        pts[i + k].time = t + span * static_cast<double>(k) / static_cast<double>(run);
       report.spread_time += run - 1;
     }
     i = end;
@@ -80,9 +80,9 @@ void spread_same_second_runs(std::vector<TrackPoint>& pts, CleanReport& report) 
 std::vector<TrackPoint> drop_invalid_and_unordered(const std::vector<TrackPoint>& in, CleanReport& report) {
   std::vector<TrackPoint> pts;
   pts.reserve(in.size());
-  CleanReport r;  // added to `report` once the pass is final
-  bool repeats = false;   // two consecutive kept points with one timestamp: runs to spread
-  bool ordered = true;    // every timestamp after the last earlier one: nothing to drop
+  CleanReport r;         // added to `report` once the pass is final
+  bool repeats = false;  // two consecutive kept points with one timestamp: runs to spread
+  bool ordered = true;   // every timestamp after the last earlier one: nothing to drop
   for (const bool frozen : {false, true}) {
     pts.clear();
     r = CleanReport{};
@@ -207,8 +207,8 @@ void enforce_min_distance(std::vector<TrackPoint>& pts, double min_distance_m, C
 constexpr std::size_t kSmoothBlock = 1024;
 
 struct SmoothScratch {
-  std::vector<double> weight;         // w[j] = exp(-j^2 / (2 sigma^2)), j = 0..h
-  std::vector<double> window_weight;  // the full kernel in window order: w[|t - h|], t = 0..2h
+  std::vector<double> weight;          // w[j] = exp(-j^2 / (2 sigma^2)), j = 0..h
+  std::vector<double> window_weight;   // the full kernel in window order: w[|t - h|], t = 0..2h
   std::vector<double> inv_weight_sum;  // for each k <= h: 1 / the sum of the 2k + 1 weights
   double window_weight_sum = 0.0;      // the sum of window_weight, added in window order
   // A block's originals, [g0, g1) of the stretch. a, b in degrees (b across the antimeridian);
@@ -242,13 +242,20 @@ void convolve(const double* x, const std::vector<double>& kernel, std::size_t co
   y.resize(count);
   const double* k = kernel.data();
   switch (kernel.size()) {
-    case 3: return convolve_fixed<3>(x, k, count, y.data());
-    case 5: return convolve_fixed<5>(x, k, count, y.data());
-    case 7: return convolve_fixed<7>(x, k, count, y.data());
-    case 9: return convolve_fixed<9>(x, k, count, y.data());
-    case 11: return convolve_fixed<11>(x, k, count, y.data());  // the default half-width, 5
-    case 13: return convolve_fixed<13>(x, k, count, y.data());
-    case 15: return convolve_fixed<15>(x, k, count, y.data());
+    case 3:
+      return convolve_fixed<3>(x, k, count, y.data());
+    case 5:
+      return convolve_fixed<5>(x, k, count, y.data());
+    case 7:
+      return convolve_fixed<7>(x, k, count, y.data());
+    case 9:
+      return convolve_fixed<9>(x, k, count, y.data());
+    case 11:
+      return convolve_fixed<11>(x, k, count, y.data());  // the default half-width, 5
+    case 13:
+      return convolve_fixed<13>(x, k, count, y.data());
+    case 15:
+      return convolve_fixed<15>(x, k, count, y.data());
     default:
       for (std::size_t c = 0; c < count; ++c) {
         double sum = 0.0;
@@ -456,8 +463,8 @@ class StretchSmoother {
 };
 
 // Gaussian smoothing with a symmetric, renormalised kernel over pts[first, last), in place.
-void smooth_gaussian(std::vector<TrackPoint>& pts, std::size_t first, std::size_t last, int half_width,
-                     double sigma, SmoothScratch& scratch) {
+void smooth_gaussian(std::vector<TrackPoint>& pts, std::size_t first, std::size_t last, int half_width, double sigma,
+                     SmoothScratch& scratch) {
   const std::size_t n = last - first;
   if (n < 3 || half_width <= 0 || !(sigma > 0.0) || !std::isfinite(sigma)) return;
   const std::size_t half = std::min(static_cast<std::size_t>(half_width), (n - 1) / 2);

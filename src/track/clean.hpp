@@ -51,10 +51,10 @@ namespace trailray::track {
 struct CleanOptions {
   double min_distance_m = 3.0;  // 0 disables
   bool smooth = true;
-  int smooth_half_width = 5;    // N: the kernel spans 2N+1 points; 0 disables smoothing
-  double smooth_sigma = 1.0;    // in points; <= 0 disables smoothing
-  double max_gap_s = 60.0;      // smoothing does not cross a longer interval; <= 0: no limit
-                                // (same meaning as MetricsOptions::max_gap_s)
+  int smooth_half_width = 5;  // N: the kernel spans 2N+1 points; 0 disables smoothing
+  double smooth_sigma = 1.0;  // in points; <= 0 disables smoothing
+  double max_gap_s = 60.0;    // smoothing does not cross a longer interval; <= 0: no limit
+                              // (same meaning as MetricsOptions::max_gap_s)
 };
 
 struct CleanReport {

@@ -17,8 +17,7 @@ std::string Diagnostic::to_string() const {
   return out;
 }
 
-void WarningCollector::add(const std::string& kind, const SourcePosition& where,
-                           const std::string& message) {
+void WarningCollector::add(const std::string& kind, const SourcePosition& where, const std::string& message) {
   auto [it, inserted] = groups_.try_emplace(kind);
   Group& g = it->second;
   if (inserted) {
@@ -46,8 +45,7 @@ std::vector<Diagnostic> WarningCollector::diagnostics() const {
     if (g.count > 1) msg += " (" + std::to_string(g.count) + " times in all; first shown)";
     ordered.emplace_back(g.order, Diagnostic{file_, g.first, msg});
   }
-  std::sort(ordered.begin(), ordered.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Diagnostic> out = singles_;
   for (auto& [order, d] : ordered) out.push_back(std::move(d));
   return out;

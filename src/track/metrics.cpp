@@ -15,8 +15,7 @@ constexpr double kMinTimeSpan_s = 1e-3;
 constexpr double kMinDistanceSpan_m = 1e-3;
 
 bool valid_coordinates(const TrackPoint& p) {
-  return std::isfinite(p.lat) && std::isfinite(p.lon) && std::abs(p.lat) <= 90.0 &&
-         std::abs(p.lon) <= 180.0;
+  return std::isfinite(p.lat) && std::isfinite(p.lon) && std::abs(p.lat) <= 90.0 && std::abs(p.lon) <= 180.0;
 }
 
 double non_negative_or_zero(double v) { return std::isfinite(v) && v > 0.0 ? v : 0.0; }
@@ -85,8 +84,8 @@ void collect_samples(const std::vector<TrackPoint>& pts, bool all_eligible, cons
     }
     if (!all_eligible && !eligible(i)) continue;
     const double k = key(i);
-    const bool start = count == 0 || piece != prev_piece || k < prev_key ||
-                       (time_key && pauses && k - prev_key > max_gap_s);
+    const bool start =
+        count == 0 || piece != prev_piece || k < prev_key || (time_key && pauses && k - prev_key > max_gap_s);
     if (start) s.run_starts.push_back(count);
     if (!all_eligible) {
       s.key.push_back(k);
@@ -101,8 +100,8 @@ void collect_samples(const std::vector<TrackPoint>& pts, bool all_eligible, cons
 }
 
 template <class Key, class Value>
-void windowed_rate(const Samples& s, const Key& key, const Value& value, double half, double min_span,
-                   double scale, std::vector<double>& out) {
+void windowed_rate(const Samples& s, const Key& key, const Value& value, double half, double min_span, double scale,
+                   std::vector<double>& out) {
   for (std::size_t r = 0; r + 1 < s.run_starts.size(); ++r) {
     const std::size_t a = s.run_starts[r], b = s.run_starts[r + 1];
     if (s.direct) {
@@ -123,9 +122,8 @@ double half_window(double full) { return std::isfinite(full) && full > 0.0 ? ful
 
 }  // namespace
 
-SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOptions& options,
-                                       double distance_offset_m, double distance_3d_offset_m,
-                                       double time_origin_s) {
+SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOptions& options, double distance_offset_m,
+                                       double distance_3d_offset_m, double time_origin_s) {
   const auto& pts = segment.points;
   const std::size_t n = pts.size();
   SegmentMetrics m;

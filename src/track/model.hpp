@@ -18,10 +18,10 @@ inline constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 inline constexpr float kMissingF = std::numeric_limits<float>::quiet_NaN();
 
 struct TrackPoint {
-  double lat = 0.0;         // degrees, WGS84
-  double lon = 0.0;         // degrees, WGS84
-  double ele = kMissing;    // metres
-  double time = kMissing;   // seconds since 1970-01-01T00:00:00Z (UTC), sub-second allowed
+  double lat = 0.0;        // degrees, WGS84
+  double lon = 0.0;        // degrees, WGS84
+  double ele = kMissing;   // metres
+  double time = kMissing;  // seconds since 1970-01-01T00:00:00Z (UTC), sub-second allowed
   // Recorded channels from extensions (NaN when the device did not record them).
   float heart_rate = kMissingF;   // beats per minute
   float cadence = kMissingF;      // revolutions (or steps) per minute
@@ -76,9 +76,12 @@ enum class Format { Gpx, Igc, Tcx };
 
 inline const char* format_name(Format f) {
   switch (f) {
-    case Format::Gpx: return "gpx";
-    case Format::Igc: return "igc";
-    case Format::Tcx: return "tcx";
+    case Format::Gpx:
+      return "gpx";
+    case Format::Igc:
+      return "igc";
+    case Format::Tcx:
+      return "tcx";
   }
   return "unknown";
 }

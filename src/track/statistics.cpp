@@ -11,19 +11,15 @@ constexpr double kMsToKmh = 3.6;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 bool valid_coordinates(const TrackPoint& p) {
-  return std::isfinite(p.lat) && std::isfinite(p.lon) && std::abs(p.lat) <= 90.0 &&
-         std::abs(p.lon) <= 180.0;
+  return std::isfinite(p.lat) && std::isfinite(p.lon) && std::abs(p.lat) <= 90.0 && std::abs(p.lon) <= 180.0;
 }
 
 bool matches(const SegmentMetrics& m, std::size_t n) {
-  return m.distance_m.size() == n && m.distance_3d_m.size() == n && m.elapsed_s.size() == n &&
-         m.speed_ms.size() == n && m.vspeed_ms.size() == n && m.slope_pct.size() == n &&
-         m.glide_ratio.size() == n;
+  return m.distance_m.size() == n && m.distance_3d_m.size() == n && m.elapsed_s.size() == n && m.speed_ms.size() == n &&
+         m.vspeed_ms.size() == n && m.slope_pct.size() == n && m.glide_ratio.size() == n;
 }
 
-std::optional<double> finite_or_null(std::optional<double> v) {
-  return v && std::isfinite(*v) ? v : std::nullopt;
-}
+std::optional<double> finite_or_null(std::optional<double> v) { return v && std::isfinite(*v) ? v : std::nullopt; }
 
 void keep_max(std::optional<double>& current, double v) {
   if (std::isfinite(v) && (!current || v > *current)) current = v;
@@ -205,15 +201,14 @@ class Accumulator {
       s.elevation_loss_m = loss_m_;
     }
     if (max_speed_ms_) s.max_speed_kmh = *max_speed_ms_ * kMsToKmh;
-    if (s.moving_time_s && *s.moving_time_s > 0.0)
-      s.avg_speed_kmh = moving_distance_m_ / *s.moving_time_s * kMsToKmh;
+    if (s.moving_time_s && *s.moving_time_s > 0.0) s.avg_speed_kmh = moving_distance_m_ / *s.moving_time_s * kMsToKmh;
     if (max_vspeed_ms_) s.max_climb_ms = std::max(0.0, *max_vspeed_ms_);
     if (min_vspeed_ms_) s.max_sink_ms = std::max(0.0, -*min_vspeed_ms_);
     if (!bbox_.empty()) s.bbox = bbox_;
 
-    for (auto* v : {&s.duration_s, &s.elapsed_s, &s.moving_time_s, &s.elevation_gain_m, &s.elevation_loss_m,
-                    &s.min_elevation_m, &s.max_elevation_m, &s.max_speed_kmh, &s.avg_speed_kmh,
-                    &s.max_climb_ms, &s.max_sink_ms})
+    for (auto* v :
+         {&s.duration_s, &s.elapsed_s, &s.moving_time_s, &s.elevation_gain_m, &s.elevation_loss_m, &s.min_elevation_m,
+          &s.max_elevation_m, &s.max_speed_kmh, &s.avg_speed_kmh, &s.max_climb_ms, &s.max_sink_ms})
       *v = finite_or_null(*v);
     if (!std::isfinite(s.distance_2d_m)) s.distance_2d_m = 0.0;
     if (!std::isfinite(s.distance_3d_m)) s.distance_3d_m = 0.0;
@@ -254,8 +249,7 @@ Statistics track_statistics(const Track& track, const TrackMetrics& metrics, con
   return acc.result();
 }
 
-Statistics segment_statistics(const Segment& segment, const SegmentMetrics& metrics,
-                              const StatisticsOptions& options) {
+Statistics segment_statistics(const Segment& segment, const SegmentMetrics& metrics, const StatisticsOptions& options) {
   Accumulator acc(options);
   acc.add(segment, metrics);
   return acc.result();

@@ -28,7 +28,8 @@
 //                   / lowest point reached at the segment's end); wiggles smaller than the
 //                   threshold count nothing. Absent when no segment has two elevations;
 //   min/max_elevation_m   over all points with an elevation;
-//   max_speed_kmh   largest windowed speed;  avg_speed_kmh  distance covered in the moving intervals / moving time (absent
+//   max_speed_kmh   largest windowed speed;  avg_speed_kmh  distance covered in the moving intervals / moving time
+//   (absent
 //                   when the moving time is 0 or absent);
 //   max_climb_ms, max_sink_ms   largest windowed vertical speed upwards / downwards (the sink as
 //                   a positive number, 0 when the track never descends); the windowed
@@ -72,8 +73,7 @@ struct Statistics {
 
 // `metrics` should come from compute_metrics(track); a segment whose metrics do not match its
 // point count is measured with freshly computed metrics (with metrics.options).
-Statistics track_statistics(const Track& track, const TrackMetrics& metrics,
-                            const StatisticsOptions& options = {});
+Statistics track_statistics(const Track& track, const TrackMetrics& metrics, const StatisticsOptions& options = {});
 Statistics segment_statistics(const Segment& segment, const SegmentMetrics& metrics,
                               const StatisticsOptions& options = {});
 

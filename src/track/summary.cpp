@@ -23,8 +23,10 @@ TrackSummary summarize_track(const Track& track, const AnalysisOptions& options)
   std::future<std::pair<TrackMetrics, Statistics>> raw_future;
   std::pair<TrackMetrics, Statistics> raw;
   const bool parallel = track.point_count() >= kParallelPoints;
-  if (parallel) raw_future = std::async(std::launch::async, analyse_raw);
-  else raw = analyse_raw();
+  if (parallel)
+    raw_future = std::async(std::launch::async, analyse_raw);
+  else
+    raw = analyse_raw();
 
   const Track cleaned = clean_track(track, options.clean, s.cleaning);
   const TrackMetrics clean_metrics = compute_metrics(cleaned, options.metrics);

@@ -24,7 +24,8 @@ TEST(ConformanceGpxpy, RawFiguresMatchGpxpyOnEveryGpxFile) {
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 30u);
 
-  std::string cmd = "/usr/bin/python3 " + shell_quote(std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/gpxpy_figures.py");
+  std::string cmd =
+      "/usr/bin/python3 " + shell_quote(std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/gpxpy_figures.py");
   for (const auto& f : files) cmd += " " + shell_quote(f);
   auto py = run_command(cmd);
   ASSERT_EQ(py.status, 0) << "gpxpy script failed (is python3-gpxpy installed? run scripts/setup.sh)";

@@ -47,8 +47,7 @@ TEST(StatsCli, JsonHasTheDocumentedShape) {
     const json& s = t[which];
     for (const char* key : {"points", "segments", "distance_2d_m", "distance_3d_m", "duration_s", "elapsed_s",
                             "moving_time_s", "elevation_gain_m", "elevation_loss_m", "min_elevation_m",
-                            "max_elevation_m", "max_speed_kmh", "avg_speed_kmh", "max_climb_ms", "max_sink_ms",
-                            "bbox"})
+                            "max_elevation_m", "max_speed_kmh", "avg_speed_kmh", "max_climb_ms", "max_sink_ms", "bbox"})
       EXPECT_TRUE(s.contains(key)) << which << "." << key;
   }
   const json& raw = t["raw"];
@@ -102,8 +101,8 @@ TEST(StatsCli, GzipCompressedInput) {
 TEST(StatsCli, ABadFileDoesNotStopTheOthers) {
   TempFile good("good.gpx", kTwoSegments);
   TempFile bad("bad.gpx", "<gpx><trk>\n<trkseg></trk></gpx>");
-  auto r = run_command(binary() + " stats --json " + shell_quote(bad.str()) + " " + shell_quote(good.str()) +
-                       " 2>" + shell_quote(bad.str() + ".err"));
+  auto r = run_command(binary() + " stats --json " + shell_quote(bad.str()) + " " + shell_quote(good.str()) + " 2>" +
+                       shell_quote(bad.str() + ".err"));
   EXPECT_EQ(r.status, 1);
   json doc = json::parse(r.out);
   ASSERT_EQ(doc["files"].size(), 2u);
@@ -143,16 +142,16 @@ TEST(StatsCli, UsageErrorsExitWithTwoAndListValidValues) {
   EXPECT_EQ(run_command(binary() + " frobnicate 2>/dev/null").status, 2);
   auto help = run_command(binary() + " stats --help");
   EXPECT_EQ(help.status, 0);
-  for (const char* opt : {"--json", "--strict", "--igc-altitude", "--min-distance", "--no-smooth", "--smooth-width",
-                          "--smooth-sigma"})
+  for (const char* opt :
+       {"--json", "--strict", "--igc-altitude", "--min-distance", "--no-smooth", "--smooth-width", "--smooth-sigma"})
     EXPECT_NE(help.out.find(opt), std::string::npos) << opt;
 }
 
 TEST(StatsCli, CleaningOptionsChangeTheCleanFigures) {
   std::string doc = "<gpx><trk><trkseg>";
   for (int i = 0; i < 50; ++i)
-    doc += "<trkpt lat=\"" + std::to_string(46.0 + 0.00001 * i) + "\" lon=\"7\"><time>2024-06-01T10:00:" +
-           (i < 10 ? "0" : "") + std::to_string(i) + "Z</time></trkpt>";
+    doc += "<trkpt lat=\"" + std::to_string(46.0 + 0.00001 * i) +
+           "\" lon=\"7\"><time>2024-06-01T10:00:" + (i < 10 ? "0" : "") + std::to_string(i) + "Z</time></trkpt>";
   doc += "</trkseg></trk></gpx>";
   TempFile f("dense.gpx", doc);
   auto points = [&](const std::string& opts) {

@@ -1,7 +1,7 @@
 #include "geo/geodesic.hpp"
 
-#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
+#include <GeographicLib/Geodesic.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -58,7 +58,8 @@ void compare_random_pairs(Where where, double max_step_deg, int count, unsigned 
     double lat1 = (2.0 * u(rng) - 1.0) * 90.0;
     if (where == Where::NearAPole) lat1 = (u(rng) < 0.5 ? -1.0 : 1.0) * (90.0 - u(rng) * 0.2);
     double lon1 = (2.0 * u(rng) - 1.0) * 180.0;
-    if (where == Where::AtTheAntimeridian) lon1 = u(rng) < 0.5 ? 180.0 - u(rng) * max_step_deg : -180.0 + u(rng) * max_step_deg;
+    if (where == Where::AtTheAntimeridian)
+      lon1 = u(rng) < 0.5 ? 180.0 - u(rng) * max_step_deg : -180.0 + u(rng) * max_step_deg;
     const double scale = u(rng) < 0.3 ? std::pow(10.0, -6.0 * u(rng)) : 1.0;
     const double lat2 = lat1 + (2.0 * u(rng) - 1.0) * max_step_deg * scale;
     if (std::abs(lat2) > 90.0) continue;

@@ -1,7 +1,7 @@
 #include "track/clean.hpp"
 
-#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
+#include <GeographicLib/Geodesic.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +27,7 @@ TrackPoint along(double s, double azimuth_deg = 0.0, double ele = kMissing, doub
   return p;
 }
 
-double dist(const TrackPoint& a, const TrackPoint& b) {
-  return geo::geodesic_distance_m(a.lat, a.lon, b.lat, b.lon);
-}
+double dist(const TrackPoint& a, const TrackPoint& b) { return geo::geodesic_distance_m(a.lat, a.lon, b.lat, b.lon); }
 
 Track one_segment(std::vector<TrackPoint> pts) {
   Track t;
@@ -403,7 +401,6 @@ TEST(Clean, ReportAddsUp) {
   EXPECT_EQ(out.segments[0].points.size() + r.total_dropped(), pts.size());
 }
 
-
 // --- Smoothing and the minimum distance against straightforward reference implementations ------
 
 // Smoothing as defined in clean.hpp, computed the slow, obvious way: for every point the
@@ -486,8 +483,7 @@ std::vector<TrackPoint> random_walk(std::size_t n, double lat, double lon, doubl
   return pts;
 }
 
-void expect_smoothing_matches_reference(const std::vector<TrackPoint>& pts, const CleanOptions& o,
-                                        const char* what) {
+void expect_smoothing_matches_reference(const std::vector<TrackPoint>& pts, const CleanOptions& o, const char* what) {
   CleanReport r;
   const Track out = clean_track(one_segment(pts), o, r);
   ASSERT_EQ(r.total_dropped(), 0u) << what;
@@ -521,7 +517,8 @@ TEST(Clean, SmoothingMatchesTheExact3DMean) {
   expect_smoothing_matches_reference(random_walk(3000, -16.5, 179.99, 20.0, 4), o, "antimeridian");
   expect_smoothing_matches_reference(random_walk(3000, 89.98, 0.0, 10.0, 5), o, "north pole");
   // Other kernels: no smoothing of ends beyond the stretch, a kernel wider than a block.
-  for (const auto& [half_width, sigma] : std::vector<std::pair<int, double>>{{1, 1.0}, {2, 0.7}, {8, 3.0}, {1500, 400.0}}) {
+  for (const auto& [half_width, sigma] :
+       std::vector<std::pair<int, double>>{{1, 1.0}, {2, 0.7}, {8, 3.0}, {1500, 400.0}}) {
     o.smooth_half_width = half_width;
     o.smooth_sigma = sigma;
     expect_smoothing_matches_reference(random_walk(3500, 46.5, 7.5, 5.0, 6), o, "kernel");

@@ -1,7 +1,7 @@
 #include "track/metrics.hpp"
 
-#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
+#include <GeographicLib/Geodesic.hpp>
 
 #include <cmath>
 #include <random>
@@ -36,8 +36,8 @@ void expect_sane(const Track& t, const TrackMetrics& m) {
   for (std::size_t s = 0; s < t.segments.size(); ++s) {
     const SegmentMetrics& sm = m.segments[s];
     const std::size_t n = t.segments[s].points.size();
-    for (const auto* ch : {&sm.distance_m, &sm.distance_3d_m, &sm.elapsed_s, &sm.speed_ms, &sm.vspeed_ms,
-                           &sm.slope_pct, &sm.glide_ratio}) {
+    for (const auto* ch : {&sm.distance_m, &sm.distance_3d_m, &sm.elapsed_s, &sm.speed_ms, &sm.vspeed_ms, &sm.slope_pct,
+                           &sm.glide_ratio}) {
       ASSERT_EQ(ch->size(), n);
       for (double v : *ch) EXPECT_FALSE(std::isinf(v));
     }
@@ -157,7 +157,7 @@ TEST(Metrics, SlopeWindowIsCentredInDistance) {
   const auto& slope = m.segments[0].slope_pct;
   EXPECT_NEAR(slope[10], 0.0, 1e-6);
   EXPECT_NEAR(slope[30], 20.0, 1e-6);
-  EXPECT_NEAR(slope[20], 10.0, 1e-6);  // window 76..124 m: half flat, half at 20 %
+  EXPECT_NEAR(slope[20], 10.0, 1e-6);                   // window 76..124 m: half flat, half at 20 %
   EXPECT_TRUE(std::isnan(m.segments[0].speed_ms[10]));  // no time, no speed
   EXPECT_TRUE(std::isnan(m.segments[0].elapsed_s[10]));
 }
@@ -204,17 +204,16 @@ TEST(Metrics, GapBetweenSegmentsAddsNoDistanceAndWindowsStayInside) {
 TEST(Metrics, DuplicateTimestampsAndRepeatedPositionsNeverDivideByZero) {
   // Raw recording: a repeated fix (same time, same place), a duplicate time at a new place,
   // a backward jump.
-  const std::vector<TrackPoint> pts{north(0, 100, 0),     north(100, 101, 10), north(100, 101, 10),
-                                    north(150, 102, 10),  north(200, 103, 20), north(250, 104, 15),
-                                    north(300, 105, 30),  north(300, 105, 30)};
+  const std::vector<TrackPoint> pts{north(0, 100, 0),    north(100, 101, 10), north(100, 101, 10), north(150, 102, 10),
+                                    north(200, 103, 20), north(250, 104, 15), north(300, 105, 30), north(300, 105, 30)};
   const Track t = one_segment(pts);
   const TrackMetrics m = compute_metrics(t);
   expect_sane(t, m);
   const auto& v = m.segments[0].speed_ms;
   for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_FALSE(std::isinf(m.segments[0].vspeed_ms[i]));
-  EXPECT_NEAR(v[0], 10.0, 1e-6);   // 0 s -> 10 s (the duplicate-time group)
-  EXPECT_NEAR(v[1], 10.0, 1e-6);   // widened to t = 0 and t = 20: 200 m / 20 s
-  EXPECT_NEAR(v[4], 5.0, 1e-6);    // t = 20, before the backward jump: from the t = 10 group only
+  EXPECT_NEAR(v[0], 10.0, 1e-6);         // 0 s -> 10 s (the duplicate-time group)
+  EXPECT_NEAR(v[1], 10.0, 1e-6);         // widened to t = 0 and t = 20: 200 m / 20 s
+  EXPECT_NEAR(v[4], 5.0, 1e-6);          // t = 20, before the backward jump: from the t = 10 group only
   EXPECT_NEAR(v[5], 50.0 / 15.0, 1e-6);  // a new run starts at the backward jump
   EXPECT_TRUE(std::isfinite(v[6]));
   EXPECT_TRUE(std::isfinite(v[7]));
@@ -293,7 +292,6 @@ TEST(Metrics, SegmentMetricsAloneMatchTheTrackRun) {
   EXPECT_EQ(s.speed_ms, m.segments[0].speed_ms);
   EXPECT_EQ(s.elapsed_s, m.segments[0].elapsed_s);
 }
-
 
 TEST(Metrics, RatesDoNotDependOnWhetherEveryPointHasEveryChannel) {
   // A segment where every point has a time and an elevation takes a shorter path through the

@@ -1,7 +1,7 @@
 #include "track/statistics.hpp"
 
-#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
+#include <GeographicLib/Geodesic.hpp>
 
 #include <cmath>
 #include <random>
@@ -37,17 +37,17 @@ Statistics stats(const Track& t, const StatisticsOptions& o = {}) { return track
 void expect_finite(const Statistics& s) {
   EXPECT_TRUE(std::isfinite(s.distance_2d_m));
   EXPECT_TRUE(std::isfinite(s.distance_3d_m));
-  for (const auto& v : {s.duration_s, s.elapsed_s, s.moving_time_s, s.elevation_gain_m, s.elevation_loss_m,
-                        s.min_elevation_m, s.max_elevation_m, s.max_speed_kmh, s.avg_speed_kmh, s.max_climb_ms,
-                        s.max_sink_ms}) {
+  for (const auto& v :
+       {s.duration_s, s.elapsed_s, s.moving_time_s, s.elevation_gain_m, s.elevation_loss_m, s.min_elevation_m,
+        s.max_elevation_m, s.max_speed_kmh, s.avg_speed_kmh, s.max_climb_ms, s.max_sink_ms}) {
     if (v) {
       EXPECT_TRUE(std::isfinite(*v));
     }
   }
   if (s.bbox) {
     EXPECT_FALSE(s.bbox->empty());
-    EXPECT_TRUE(std::isfinite(s.bbox->min_lat) && std::isfinite(s.bbox->max_lat) &&
-                std::isfinite(s.bbox->min_lon) && std::isfinite(s.bbox->max_lon));
+    EXPECT_TRUE(std::isfinite(s.bbox->min_lat) && std::isfinite(s.bbox->max_lat) && std::isfinite(s.bbox->min_lon) &&
+                std::isfinite(s.bbox->max_lon));
   }
 }
 
@@ -127,9 +127,8 @@ TEST(Statistics, DurationAbsentWithoutTwoTimedPointsInASegment) {
 TEST(Statistics, RawTrackWithDuplicatesAndBackwardTimes) {
   // Raw statistics are compared with gpxpy: distance is every consecutive pair, duration is
   // last minus first timestamp of the segment, whatever happens in between.
-  const std::vector<TrackPoint> pts{north(0, 100, 0),   north(100, 101, 10), north(100, 101, 10),
-                                    north(150, 90, 10), north(200, 103, 20), north(250, 104, 15),
-                                    north(240, 105, 30), north(300, 105, 30)};
+  const std::vector<TrackPoint> pts{north(0, 100, 0),    north(100, 101, 10), north(100, 101, 10), north(150, 90, 10),
+                                    north(200, 103, 20), north(250, 104, 15), north(240, 105, 30), north(300, 105, 30)};
   const Track t = one_segment(pts);
   const Statistics s = stats(t);
   expect_finite(s);
@@ -166,9 +165,9 @@ TEST(Statistics, EmptyTrackHasNoValues) {
   EXPECT_EQ(s.segments, 0u);
   EXPECT_EQ(s.distance_2d_m, 0.0);
   EXPECT_EQ(s.distance_3d_m, 0.0);
-  for (const auto& v : {s.duration_s, s.elapsed_s, s.moving_time_s, s.elevation_gain_m, s.elevation_loss_m,
-                        s.min_elevation_m, s.max_elevation_m, s.max_speed_kmh, s.avg_speed_kmh, s.max_climb_ms,
-                        s.max_sink_ms})
+  for (const auto& v :
+       {s.duration_s, s.elapsed_s, s.moving_time_s, s.elevation_gain_m, s.elevation_loss_m, s.min_elevation_m,
+        s.max_elevation_m, s.max_speed_kmh, s.avg_speed_kmh, s.max_climb_ms, s.max_sink_ms})
     EXPECT_FALSE(v);
   EXPECT_FALSE(s.bbox);
 

@@ -2,20 +2,19 @@
 
 #include <zlib.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <unistd.h>
-#include <fcntl.h>
-#include <sys/stat.h>
 
 namespace trailray::track {
 namespace {
 
 class GzFileSource final : public ByteSource {
  public:
-  GzFileSource(gzFile f, std::string path, std::string name)
-      : ByteSource(std::move(path), std::move(name)), file_(f) {
+  GzFileSource(gzFile f, std::string path, std::string name) : ByteSource(std::move(path), std::move(name)), file_(f) {
     gzbuffer(file_, 256 * 1024);
   }
   ~GzFileSource() override { gzclose(file_); }

@@ -51,8 +51,8 @@ class LineReader {
   // The next line without its ending; false at end of input.
   bool next(std::string_view& line);
   std::int64_t line_number() const { return line_no_; }
-  std::int64_t line_offset() const { return line_offset_; }  // byte offset of the line start
-  bool last_line_cut() const { return cut_; }                // longer than max_line
+  std::int64_t line_offset() const { return line_offset_; }      // byte offset of the line start
+  bool last_line_cut() const { return cut_; }                    // longer than max_line
   bool last_line_unterminated() const { return unterminated_; }  // no line ending (file cut?)
   bool read_failed() const { return failed_; }
 

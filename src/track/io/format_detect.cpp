@@ -36,7 +36,8 @@ std::optional<Format> detect_format(std::string_view head, const std::string& pa
   std::string s = ascii_view(head);
   std::size_t i = 0;
   // BOMs: UTF-8 EF BB BF, UTF-16 FF FE / FE FF.
-  while (i < s.size() && (static_cast<unsigned char>(s[i]) >= 0xEF || std::isspace(static_cast<unsigned char>(s[i])))) ++i;
+  while (i < s.size() && (static_cast<unsigned char>(s[i]) >= 0xEF || std::isspace(static_cast<unsigned char>(s[i]))))
+    ++i;
   if (i < s.size() && s[i] == '<') {
     // XML: the root element decides. Look past the declaration, comments and doctype.
     std::string l = lower(s.substr(i));
@@ -48,8 +49,7 @@ std::optional<Format> detect_format(std::string_view head, const std::string& pa
   }
   // IGC: records are lines starting with an upper-case letter; the A record comes first.
   if (i < s.size() && s[i] == 'A') {
-    if (s.find("\nB") != std::string::npos || s.find("\nH") != std::string::npos || s.size() < 4096)
-      return Format::Igc;
+    if (s.find("\nB") != std::string::npos || s.find("\nH") != std::string::npos || s.size() < 4096) return Format::Igc;
   }
   return format_from_name(path);
 }

@@ -90,16 +90,22 @@ class GpxHandler final : public XmlHandler {
       }
     } else if (track_depth_ > 0 && depth_ == track_depth_ + 1) {
       Track& t = file_.tracks.back();
-      if (name == "name") t.name = std::string(trim(text));
-      else if (name == "desc") t.description = std::string(trim(text));
-      else if (name == "type") t.type = std::string(trim(text));
-      else if (name == "trkseg") segment_depth_ = -1;
+      if (name == "name")
+        t.name = std::string(trim(text));
+      else if (name == "desc")
+        t.description = std::string(trim(text));
+      else if (name == "type")
+        t.type = std::string(trim(text));
+      else if (name == "trkseg")
+        segment_depth_ = -1;
     } else if (route_depth_ > 0 && depth_ == route_depth_ + 1) {
       if (name == "name") file_.routes.back().name = std::string(trim(text));
     } else if ((metadata_depth_ > 0 && depth_ == metadata_depth_ + 1) || depth_ == 2) {
       // GPX 1.1 <metadata><name>, GPX 1.0 <gpx><name>.
-      if (name == "name") file_.metadata.name = std::string(trim(text));
-      else if (name == "desc") file_.metadata.description = std::string(trim(text));
+      if (name == "name")
+        file_.metadata.name = std::string(trim(text));
+      else if (name == "desc")
+        file_.metadata.description = std::string(trim(text));
       else if (name == "time") {
         if (auto t = parse_iso8601(text)) file_.metadata.time = *t;
       }
@@ -128,8 +134,9 @@ class GpxHandler final : public XmlHandler {
       point_.lon = *lo;
     } else {
       warnings_.add("coords", position(),
-                    "point with invalid coordinates dropped (lat=\"" + std::string(lat ? lat : "<missing>").substr(0, 40) +
-                        "\" lon=\"" + std::string(lon ? lon : "<missing>").substr(0, 40) + "\")");
+                    "point with invalid coordinates dropped (lat=\"" +
+                        std::string(lat ? lat : "<missing>").substr(0, 40) + "\" lon=\"" +
+                        std::string(lon ? lon : "<missing>").substr(0, 40) + "\")");
     }
   }
 
@@ -140,23 +147,39 @@ class GpxHandler final : public XmlHandler {
     } else if (direct && name == "time") {
       std::string_view t = trim(text);
       if (t.empty()) return;
-      if (auto v = parse_iso8601(t)) point_.time = *v;
-      else warnings_.add("time", position(), "unreadable <time> '" + std::string(t.substr(0, 40)) + "' ignored");
+      if (auto v = parse_iso8601(t))
+        point_.time = *v;
+      else
+        warnings_.add("time", position(), "unreadable <time> '" + std::string(t.substr(0, 40)) + "' ignored");
     } else if (direct && point_kind_ == PointKind::Waypoint && (name == "name" || name == "desc" || name == "sym")) {
       std::string v(trim(text));
-      if (name == "name") waypoint_.name = std::move(v);
-      else if (name == "desc") waypoint_.description = std::move(v);
-      else waypoint_.symbol = std::move(v);
+      if (name == "name")
+        waypoint_.name = std::move(v);
+      else if (name == "desc")
+        waypoint_.description = std::move(v);
+      else
+        waypoint_.symbol = std::move(v);
     } else if (!direct || name == "speed") {
       // Extensions (any depth), and GPX 1.0's <speed> directly in the point.
       Channel c = extension_channel(name);
       switch (c) {
-        case Channel::HeartRate: set_channel(point_.heart_rate, text, name); break;
-        case Channel::Cadence: set_channel(point_.cadence, text, name); break;
-        case Channel::Temperature: set_channel(point_.temperature, text, name); break;
-        case Channel::Power: set_channel(point_.power, text, name); break;
-        case Channel::Speed: set_channel(point_.speed, text, name); break;
-        case Channel::None: break;
+        case Channel::HeartRate:
+          set_channel(point_.heart_rate, text, name);
+          break;
+        case Channel::Cadence:
+          set_channel(point_.cadence, text, name);
+          break;
+        case Channel::Temperature:
+          set_channel(point_.temperature, text, name);
+          break;
+        case Channel::Power:
+          set_channel(point_.power, text, name);
+          break;
+        case Channel::Speed:
+          set_channel(point_.speed, text, name);
+          break;
+        case Channel::None:
+          break;
       }
     }
   }
@@ -164,9 +187,11 @@ class GpxHandler final : public XmlHandler {
   void set_number(double& out, std::string_view text, std::string_view what) {
     std::string_view t = trim(text);
     if (t.empty()) return;  // <ele/>: absent (OsmAnd writes these)
-    if (auto v = parse_double(t)) out = *v;
-    else warnings_.add(std::string(what), position(),
-                       "unreadable <" + std::string(what) + "> '" + std::string(t.substr(0, 40)) + "' ignored");
+    if (auto v = parse_double(t))
+      out = *v;
+    else
+      warnings_.add(std::string(what), position(),
+                    "unreadable <" + std::string(what) + "> '" + std::string(t.substr(0, 40)) + "' ignored");
   }
 
   void set_channel(float& out, std::string_view text, std::string_view what) {
@@ -186,8 +211,12 @@ class GpxHandler final : public XmlHandler {
     if (!point_valid_) return;
     ++complete_points_;
     switch (point_kind_) {
-      case PointKind::TrackPoint: file_.tracks.back().segments.back().points.push_back(point_); break;
-      case PointKind::RoutePoint: file_.routes.back().points.push_back(point_); break;
+      case PointKind::TrackPoint:
+        file_.tracks.back().segments.back().points.push_back(point_);
+        break;
+      case PointKind::RoutePoint:
+        file_.routes.back().points.push_back(point_);
+        break;
       case PointKind::Waypoint:
         waypoint_.point = point_;
         file_.waypoints.push_back(std::move(waypoint_));
@@ -216,7 +245,8 @@ ReadResult read_gpx(ByteSource& source, const ReadOptions& options) {
   GpxHandler handler(result.file, warnings);
   XmlParseOutcome outcome = XmlStream::parse(source, handler);
   switch (outcome.kind) {
-    case XmlParseOutcome::Kind::Complete: break;
+    case XmlParseOutcome::Kind::Complete:
+      break;
     case XmlParseOutcome::Kind::Truncated:
       warnings.add_single(outcome.position, outcome.message + "; kept the " +
                                                 std::to_string(handler.complete_points()) +

@@ -40,8 +40,8 @@
 namespace trailray::track {
 namespace {
 
-constexpr std::size_t kMaxLine = 4096;    // IGC lines are at most 76 characters (+ L comments)
-constexpr std::size_t kBaseLength = 35;   // a B record without extensions
+constexpr std::size_t kMaxLine = 4096;   // IGC lines are at most 76 characters (+ L comments)
+constexpr std::size_t kBaseLength = 35;  // a B record without extensions
 constexpr double kRolloverSeconds = 12 * 3600.0;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -96,11 +96,16 @@ bool valid_utf8(std::string_view s) {
   for (std::size_t i = 0; i < s.size();) {
     const auto c = static_cast<unsigned char>(s[i]);
     std::size_t n = 0;
-    if (c < 0x80) n = 0;
-    else if (c >= 0xc2 && c <= 0xdf) n = 1;
-    else if (c >= 0xe0 && c <= 0xef) n = 2;
-    else if (c >= 0xf0 && c <= 0xf4) n = 3;
-    else return false;
+    if (c < 0x80)
+      n = 0;
+    else if (c >= 0xc2 && c <= 0xdf)
+      n = 1;
+    else if (c >= 0xe0 && c <= 0xef)
+      n = 2;
+    else if (c >= 0xf0 && c <= 0xf4)
+      n = 3;
+    else
+      return false;
     if (n > s.size() - i - 1) return false;
     for (std::size_t k = 1; k <= n; ++k)
       if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
@@ -163,13 +168,13 @@ const char* header_key(std::string_view code) {
 // A-record manufacturer codes (three-letter, plus the common unofficial X codes).
 const char* manufacturer_name(std::string_view code) {
   static constexpr std::array<std::pair<std::string_view, const char*>, 19> kNames{{
-      {"ACT", "Aircotec"},     {"CAM", "Cambridge"},      {"CNI", "ClearNav"},
-      {"DSX", "Data Swan"},    {"EWA", "EW Avionics"},    {"FIL", "Filser"},
-      {"FLA", "FLARM"},        {"GCS", "Garrecht"},
-      {"IMI", "IMI Gliding"},  {"LGS", "Logstream"},      {"LXN", "LX Navigation"},
-      {"LXV", "LXNAV"},        {"NAV", "Naviter"},        {"NKL", "Nielsen Kellerman"},
-      {"PES", "Peschges"},     {"XCS", "XCSoar"},         {"XCT", "XCTrack"},
-      {"XSX", "Skytraxx"},     {"ZAN", "Zander"},
+      {"ACT", "Aircotec"},  {"CAM", "Cambridge"},         {"CNI", "ClearNav"},
+      {"DSX", "Data Swan"}, {"EWA", "EW Avionics"},       {"FIL", "Filser"},
+      {"FLA", "FLARM"},     {"GCS", "Garrecht"},          {"IMI", "IMI Gliding"},
+      {"LGS", "Logstream"}, {"LXN", "LX Navigation"},     {"LXV", "LXNAV"},
+      {"NAV", "Naviter"},   {"NKL", "Nielsen Kellerman"}, {"PES", "Peschges"},
+      {"XCS", "XCSoar"},    {"XCT", "XCTrack"},           {"XSX", "Skytraxx"},
+      {"ZAN", "Zander"},
   }};
   for (const auto& [c, name] : kNames)
     if (c == code) return name;
@@ -206,20 +211,24 @@ class IgcParser {
       case 'B':
         ++b_lines_;
         if (last_unterminated && s.size() < expected_b_length()) {
-          warnings_.add_single(at(s.size() + 1),
-                               "file ends inside a record (cut short?): incomplete B record of " +
-                                   std::to_string(s.size()) + " characters dropped; kept the " +
-                                   std::to_string(points().size()) + " complete points before it");
+          warnings_.add_single(at(s.size() + 1), "file ends inside a record (cut short?): incomplete B record of " +
+                                                     std::to_string(s.size()) + " characters dropped; kept the " +
+                                                     std::to_string(points().size()) + " complete points before it");
           return;
         }
         b_record(s);
         break;
-      case 'H': h_record(s); break;
-      case 'I': i_record(s); break;
+      case 'H':
+        h_record(s);
+        break;
+      case 'I':
+        i_record(s);
+        break;
       case 'A':
         if (!seen_a_ && s.size() >= 4 && is_alnum(s[1]) && is_alnum(s[2]) && is_alnum(s[3])) a_record(s);
         break;
-      default: break;
+      default:
+        break;
     }
   }
 
@@ -254,8 +263,7 @@ class IgcParser {
 
  private:
   SourcePosition at(std::size_t column) const {
-    return SourcePosition{line_no_, static_cast<std::int64_t>(column),
-                          offset_ + static_cast<std::int64_t>(column) - 1};
+    return SourcePosition{line_no_, static_cast<std::int64_t>(column), offset_ + static_cast<std::int64_t>(column) - 1};
   }
 
   std::size_t expected_b_length() const {
@@ -270,13 +278,14 @@ class IgcParser {
 
   void b_record(std::string_view s) {
     if (s.size() < kBaseLength) {
-      drop("b-short", 1, "B record too short (" + std::to_string(s.size()) + " characters, need " +
-                             std::to_string(kBaseLength) + ")");
+      drop(
+          "b-short", 1,
+          "B record too short (" + std::to_string(s.size()) + " characters, need " + std::to_string(kBaseLength) + ")");
       return;
     }
     std::int64_t hh = 0, mi = 0, ss = 0;
-    if (!read_digits(s, 1, 2, hh) || !read_digits(s, 3, 2, mi) || !read_digits(s, 5, 2, ss) || hh > 23 ||
-        mi > 59 || ss > 60) {
+    if (!read_digits(s, 1, 2, hh) || !read_digits(s, 3, 2, mi) || !read_digits(s, 5, 2, ss) || hh > 23 || mi > 59 ||
+        ss > 60) {
       drop("b-time", 2, "B record time '" + excerpt(s.substr(1, 6)) + "' is not HHMMSS");
       return;
     }
@@ -367,8 +376,8 @@ class IgcParser {
     p.time = static_cast<double>(day_) * 86400.0 + tod;
 
     points().push_back(p);
-    altitudes_.push_back(RawAltitude{static_cast<std::int32_t>(pressure), static_cast<std::int32_t>(gnss),
-                                     validity == 'A'});
+    altitudes_.push_back(
+        RawAltitude{static_cast<std::int32_t>(pressure), static_cast<std::int32_t>(gnss), validity == 'A'});
     if (pressure != 0) pressure_present_ = true;
     if (gnss != 0) gnss_present_ = true;
   }
@@ -377,8 +386,8 @@ class IgcParser {
     extensions_.clear();
     std::int64_t n = 0;
     if (!read_digits(s, 1, 2, n)) {
-      warnings_.add("i-record", at(2), "I record count '" + excerpt(s.substr(1, 2)) +
-                                           "' is not a number: B-record extensions ignored");
+      warnings_.add("i-record", at(2),
+                    "I record count '" + excerpt(s.substr(1, 2)) + "' is not a number: B-record extensions ignored");
       return;
     }
     for (std::int64_t i = 0; i < n; ++i) {
@@ -482,8 +491,10 @@ class IgcParser {
       double ele = kMissing;
       switch (mode) {
         case Mode::Auto:
-          if (a.fix_3d && gnss_present_) ele = a.gnss;
-          else if (pressure_present_) ele = a.pressure;
+          if (a.fix_3d && gnss_present_)
+            ele = a.gnss;
+          else if (pressure_present_)
+            ele = a.pressure;
           break;
         case Mode::Gnss:
           if (gnss_present_ && (a.fix_3d || a.gnss != 0)) ele = a.gnss;
@@ -550,8 +561,8 @@ ReadResult read_igc(ByteSource& source, const ReadOptions& options) {
     }
     if (reader.read_failed()) {
       warnings.add_single(SourcePosition{reader.line_number() + 1, 0, -1},
-                          "read error: " + source.error() + "; kept the " +
-                              std::to_string(parser.points().size()) + " complete points before it");
+                          "read error: " + source.error() + "; kept the " + std::to_string(parser.points().size()) +
+                              " complete points before it");
     }
     parser.finish(result, source.display_name());
     name_flight(result.file);

@@ -34,9 +34,12 @@ ReadResult load_track_file(const std::string& path, const ReadOptions& options) 
     return result;
   }
   switch (*format) {
-    case Format::Gpx: return read_gpx(*source, options);
-    case Format::Igc: return read_igc(*source, options);
-    case Format::Tcx: return read_tcx(*source, options);
+    case Format::Gpx:
+      return read_gpx(*source, options);
+    case Format::Igc:
+      return read_igc(*source, options);
+    case Format::Tcx:
+      return read_tcx(*source, options);
   }
   return result;
 }

@@ -1,7 +1,7 @@
 #include "track/io/parse_util.hpp"
 
-#include <algorithm>
 #include <fast_float/fast_float.h>
+#include <algorithm>
 
 #include <charconv>
 #include <cmath>
@@ -106,8 +106,8 @@ std::optional<double> parse_iso8601(std::string_view s) {
   }
   if (p != s.size()) return std::nullopt;
   long long days = days_from_civil(year, static_cast<unsigned>(month), static_cast<unsigned>(day));
-  double t = static_cast<double>(days) * 86400.0 + hour * 3600.0 + minute * 60.0 +
-             std::min(second, 59) + frac - offset_s;
+  double t =
+      static_cast<double>(days) * 86400.0 + hour * 3600.0 + minute * 60.0 + std::min(second, 59) + frac - offset_s;
   return t;
 }
 

@@ -71,8 +71,7 @@ class TcxHandler final : public XmlHandler {
   // After parsing (also after a cut or an error): creator fallback, empty segments removed.
   void finish() {
     file_.metadata.creator = !creator_.empty() ? creator_ : author_;
-    for (Track& t : file_.tracks)
-      std::erase_if(t.segments, [](const Segment& s) { return s.points.empty(); });
+    for (Track& t : file_.tracks) std::erase_if(t.segments, [](const Segment& s) { return s.points.empty(); });
   }
 
   void start_element(std::string_view name, const char** attrs) override {
@@ -89,9 +88,12 @@ class TcxHandler final : public XmlHandler {
     }
     if (creator_depth_ > 0 || author_depth_ > 0) return;  // read at their ends
     if (depth_ == 2) {
-      if (name == "Activities") section_ = Section::Activities, section_depth_ = depth_;
-      else if (name == "Courses") section_ = Section::Courses, section_depth_ = depth_;
-      else if (name == "Author") author_depth_ = depth_;
+      if (name == "Activities")
+        section_ = Section::Activities, section_depth_ = depth_;
+      else if (name == "Courses")
+        section_ = Section::Courses, section_depth_ = depth_;
+      else if (name == "Author")
+        author_depth_ = depth_;
       return;
     }
     if (owner_depth_ < 0) {
@@ -133,11 +135,15 @@ class TcxHandler final : public XmlHandler {
 
   void end_element(std::string_view name, std::string_view text) override {
     if (tp_.depth > 0) {
-      if (depth_ == tp_.depth) end_trackpoint();
-      else trackpoint_child(name, text);
+      if (depth_ == tp_.depth)
+        end_trackpoint();
+      else
+        trackpoint_child(name, text);
     } else if (cp_.depth > 0) {
-      if (depth_ == cp_.depth) end_course_point();
-      else course_point_child(name, text);
+      if (depth_ == cp_.depth)
+        end_course_point();
+      else
+        course_point_child(name, text);
     } else if (creator_depth_ > 0) {
       if (depth_ == creator_depth_ + 1 && name == "Name" && creator_.empty()) creator_ = std::string(trim(text));
     } else if (author_depth_ > 0) {
@@ -191,8 +197,10 @@ class TcxHandler final : public XmlHandler {
       if (name == "Time") {
         std::string_view t = trim(text);
         if (t.empty()) return true;
-        if (auto v = parse_iso8601(t)) b.point.time = *v;
-        else warnings_.add("time", position(), "unreadable <Time> " + quoted(t) + " ignored");
+        if (auto v = parse_iso8601(t))
+          b.point.time = *v;
+        else
+          warnings_.add("time", position(), "unreadable <Time> " + quoted(t) + " ignored");
         return true;
       }
       if (name == "AltitudeMeters") {
@@ -202,8 +210,10 @@ class TcxHandler final : public XmlHandler {
       return false;
     }
     if (b.position_depth > 0 && depth_ == b.position_depth + 1) {
-      if (name == "LatitudeDegrees") b.lat_text = std::string(trim(text));
-      else if (name == "LongitudeDegrees") b.lon_text = std::string(trim(text));
+      if (name == "LatitudeDegrees")
+        b.lat_text = std::string(trim(text));
+      else if (name == "LongitudeDegrees")
+        b.lon_text = std::string(trim(text));
       return true;
     }
     return false;
@@ -223,9 +233,12 @@ class TcxHandler final : public XmlHandler {
       b.hr_value_seen = true;
       set_channel(b.point.heart_rate, text, "HeartRateBpm/Value");
     } else if (b.ext_depth > 0 && depth_ > b.ext_depth) {
-      if (name == "Speed") set_channel(b.point.speed, text, name);
-      else if (name == "Watts") set_channel(b.point.power, text, name);
-      else if (name == "RunCadence") set_channel(b.run_cadence, text, name);
+      if (name == "Speed")
+        set_channel(b.point.speed, text, name);
+      else if (name == "Watts")
+        set_channel(b.point.power, text, name);
+      else if (name == "RunCadence")
+        set_channel(b.run_cadence, text, name);
     }
     if (depth_ == b.position_depth) b.position_depth = -1;
     if (depth_ == b.hr_depth) b.hr_depth = -1;
@@ -235,9 +248,12 @@ class TcxHandler final : public XmlHandler {
   void course_point_child(std::string_view name, std::string_view text) {
     PointBuilder& b = cp_;
     if (!common_child(b, name, text) && depth_ == b.depth + 1) {
-      if (name == "Name") b.waypoint.name = std::string(trim(text));
-      else if (name == "PointType") b.waypoint.symbol = std::string(trim(text));
-      else if (name == "Notes") b.waypoint.description = std::string(trim(text));
+      if (name == "Name")
+        b.waypoint.name = std::string(trim(text));
+      else if (name == "PointType")
+        b.waypoint.symbol = std::string(trim(text));
+      else if (name == "Notes")
+        b.waypoint.description = std::string(trim(text));
     }
     if (depth_ == b.position_depth) b.position_depth = -1;
   }
@@ -287,8 +303,10 @@ class TcxHandler final : public XmlHandler {
   void set_number(double& out, std::string_view text, std::string_view what) {
     std::string_view t = trim(text);
     if (t.empty()) return;  // <AltitudeMeters/>: absent
-    if (auto v = parse_double(t)) out = *v;
-    else warnings_.add(std::string(what), position(), "unreadable <" + std::string(what) + "> " + quoted(t) + " ignored");
+    if (auto v = parse_double(t))
+      out = *v;
+    else
+      warnings_.add(std::string(what), position(), "unreadable <" + std::string(what) + "> " + quoted(t) + " ignored");
   }
 
   void set_channel(float& out, std::string_view text, std::string_view what) {
@@ -326,7 +344,8 @@ ReadResult read_tcx(ByteSource& source, const ReadOptions& options) {
   XmlParseOutcome outcome = XmlStream::parse(source, handler);
   handler.finish();
   switch (outcome.kind) {
-    case XmlParseOutcome::Kind::Complete: break;
+    case XmlParseOutcome::Kind::Complete:
+      break;
     case XmlParseOutcome::Kind::Truncated:
       warnings.add_single(outcome.position, outcome.message + "; kept the " +
                                                 std::to_string(handler.complete_points()) +

@@ -81,9 +81,12 @@ class Utf16Source final : public ConvertingSource {
         put_utf8(out, 0xFFFD);  // unpaired high surrogate
         high_ = 0;
       }
-      if (unit >= 0xD800 && unit <= 0xDBFF) high_ = unit;
-      else if (unit >= 0xDC00 && unit <= 0xDFFF) put_utf8(out, 0xFFFD);
-      else put_utf8(out, unit);
+      if (unit >= 0xD800 && unit <= 0xDBFF)
+        high_ = unit;
+      else if (unit >= 0xDC00 && unit <= 0xDFFF)
+        put_utf8(out, 0xFFFD);
+      else
+        put_utf8(out, unit);
     }
   }
   void flush(std::string& out) override {
@@ -107,10 +110,10 @@ class SingleByteSource final : public ConvertingSource {
 
  protected:
   void convert(const char* in, std::size_t n, std::string& out) override {
-    static constexpr char16_t kCp1252[32] = {
-        0x20AC, 0xFFFD, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
-        0x2039, 0x0152, 0xFFFD, 0x017D, 0xFFFD, 0xFFFD, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
-        0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0xFFFD, 0x017E, 0x0178};
+    static constexpr char16_t kCp1252[32] = {0x20AC, 0xFFFD, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021,
+                                             0x02C6, 0x2030, 0x0160, 0x2039, 0x0152, 0xFFFD, 0x017D, 0xFFFD,
+                                             0xFFFD, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2013, 0x2014,
+                                             0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0xFFFD, 0x017E, 0x0178};
     out.reserve(out.size() + n + n / 8);
     for (std::size_t i = 0; i < n; ++i) {
       unsigned char b = static_cast<unsigned char>(in[i]);
@@ -118,15 +121,32 @@ class SingleByteSource final : public ConvertingSource {
       if (cp1252_ && b >= 0x80 && b < 0xA0) c = kCp1252[b - 0x80];
       if (latin9_) {
         switch (b) {  // the eight places where ISO-8859-15 differs from -1
-          case 0xA4: c = 0x20AC; break;
-          case 0xA6: c = 0x0160; break;
-          case 0xA8: c = 0x0161; break;
-          case 0xB4: c = 0x017D; break;
-          case 0xB8: c = 0x017E; break;
-          case 0xBC: c = 0x0152; break;
-          case 0xBD: c = 0x0153; break;
-          case 0xBE: c = 0x0178; break;
-          default: break;
+          case 0xA4:
+            c = 0x20AC;
+            break;
+          case 0xA6:
+            c = 0x0160;
+            break;
+          case 0xA8:
+            c = 0x0161;
+            break;
+          case 0xB4:
+            c = 0x017D;
+            break;
+          case 0xB8:
+            c = 0x017E;
+            break;
+          case 0xBC:
+            c = 0x0152;
+            break;
+          case 0xBD:
+            c = 0x0153;
+            break;
+          case 0xBE:
+            c = 0x0178;
+            break;
+          default:
+            break;
         }
       }
       put_utf8(out, c);
@@ -145,7 +165,8 @@ std::string declared_encoding(std::string_view head) {
   auto at = decl.find("encoding");
   if (at == std::string_view::npos) return "";
   std::size_t p = at + 8;
-  while (p < decl.size() && (decl[p] == ' ' || decl[p] == '=' || decl[p] == '\t' || decl[p] == '\r' || decl[p] == '\n')) ++p;
+  while (p < decl.size() && (decl[p] == ' ' || decl[p] == '=' || decl[p] == '\t' || decl[p] == '\r' || decl[p] == '\n'))
+    ++p;
   if (p >= decl.size() || (decl[p] != '"' && decl[p] != '\'')) return "";
   char q = decl[p++];
   std::string enc;
@@ -169,8 +190,10 @@ std::unique_ptr<ByteSource> utf8_view(ByteSource& source, std::string& error) {
     source.next(skip, 2);
     return std::make_unique<Utf16Source>(source, true);
   }
-  if (byte(0) == '<' && byte(1) == 0 && byte(2) == '?' && byte(3) == 0) return std::make_unique<Utf16Source>(source, false);
-  if (byte(0) == 0 && byte(1) == '<' && byte(2) == 0 && byte(3) == '?') return std::make_unique<Utf16Source>(source, true);
+  if (byte(0) == '<' && byte(1) == 0 && byte(2) == '?' && byte(3) == 0)
+    return std::make_unique<Utf16Source>(source, false);
+  if (byte(0) == 0 && byte(1) == '<' && byte(2) == 0 && byte(3) == '?')
+    return std::make_unique<Utf16Source>(source, true);
   std::string_view text = head;
   if (text.substr(0, 3) == "\xEF\xBB\xBF") return nullptr;  // UTF-8 BOM: the scanner skips it
   const std::string enc = declared_encoding(text);
@@ -180,8 +203,7 @@ std::unique_ptr<ByteSource> utf8_view(ByteSource& source, std::string& error) {
     return std::make_unique<SingleByteSource>(source, false, false);
   if (enc == "iso-8859-15" || enc == "latin9" || enc == "latin-9")
     return std::make_unique<SingleByteSource>(source, false, true);
-  if (enc == "windows-1252" || enc == "cp1252")
-    return std::make_unique<SingleByteSource>(source, true, false);
+  if (enc == "windows-1252" || enc == "cp1252") return std::make_unique<SingleByteSource>(source, true, false);
   error = "unsupported XML encoding '" + enc + "' (UTF-8, UTF-16, ISO-8859-1/15 and Windows-1252 are read)";
   return nullptr;
 }

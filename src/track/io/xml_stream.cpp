@@ -29,8 +29,8 @@ constexpr std::array<unsigned char, 256> make_classes() {
   for (int c = 0; c < 256; ++c) {
     const bool start = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' || c >= 0x80;
     const bool name = start || (c >= '0' && c <= '9') || c == '-' || c == '.';
-    t[static_cast<std::size_t>(c)] = static_cast<unsigned char>((start ? kNameStart : 0) | (name ? kName : 0) |
-                                                                (c == ' ' || c == '\n' || c == '\t' || c == '\r' ? kWs : 0));
+    t[static_cast<std::size_t>(c)] = static_cast<unsigned char>(
+        (start ? kNameStart : 0) | (name ? kName : 0) | (c == ' ' || c == '\n' || c == '\t' || c == '\r' ? kWs : 0));
   }
   return t;
 }
@@ -74,11 +74,16 @@ std::size_t decode_references(std::string_view in, std::string& out, std::string
       return amp;
     }
     std::string_view ref = in.substr(amp + 1, semi - amp - 1);
-    if (ref == "lt") out.push_back('<');
-    else if (ref == "gt") out.push_back('>');
-    else if (ref == "amp") out.push_back('&');
-    else if (ref == "apos") out.push_back('\'');
-    else if (ref == "quot") out.push_back('"');
+    if (ref == "lt")
+      out.push_back('<');
+    else if (ref == "gt")
+      out.push_back('>');
+    else if (ref == "amp")
+      out.push_back('&');
+    else if (ref == "apos")
+      out.push_back('\'');
+    else if (ref == "quot")
+      out.push_back('"');
     else if (ref.size() >= 2 && ref[0] == '#') {
       unsigned long c = 0;
       bool hex = ref[1] == 'x';
@@ -89,7 +94,7 @@ std::size_t decode_references(std::string_view in, std::string& out, std::string
       }
       for (; k < ref.size(); ++k) {
         char d = ref[k];
-        int v = d >= '0' && d <= '9' ? d - '0'
+        int v = d >= '0' && d <= '9'          ? d - '0'
                 : hex && d >= 'a' && d <= 'f' ? d - 'a' + 10
                 : hex && d >= 'A' && d <= 'F' ? d - 'A' + 10
                                               : -1;
@@ -297,7 +302,9 @@ void XmlScanner::text(std::size_t from, std::size_t to) {
 
 XmlScanner::Step XmlScanner::special(std::size_t p) {
   auto rest = std::string_view(buf_.data() + p, end_ - p);
-  auto need = [&](std::string_view prefix) { return rest.size() < prefix.size() && prefix.substr(0, rest.size()) == rest; };
+  auto need = [&](std::string_view prefix) {
+    return rest.size() < prefix.size() && prefix.substr(0, rest.size()) == rest;
+  };
   if (rest.substr(0, 4) == "<!--") {
     auto close = rest.find("-->", 4);
     if (close == std::string_view::npos) return Step::NeedMore;

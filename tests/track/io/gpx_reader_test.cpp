@@ -66,10 +66,11 @@ TEST(GpxReader, ReadsGarminTrackWithExtensions) {
 
 TEST(GpxReader, NamespacesDefaultPrefixedOrMissingReadAlike) {
   const std::string body = R"(<trk><trkseg><trkpt lat="1" lon="2"><ele>3</ele></trkpt></trkseg></trk>)";
-  const std::string prefixed = R"(<g:gpx xmlns:g="http://www.topografix.com/GPX/1/0" version="1.0">)" +
-                               std::string(R"(<g:trk><g:trkseg><g:trkpt lat="1" lon="2"><g:ele>3</g:ele></g:trkpt></g:trkseg></g:trk></g:gpx>)");
-  for (const std::string& doc : {R"(<gpx xmlns="http://www.topografix.com/GPX/1/1">)" + body + "</gpx>",
-                                 "<gpx>" + body + "</gpx>", prefixed}) {
+  const std::string prefixed =
+      R"(<g:gpx xmlns:g="http://www.topografix.com/GPX/1/0" version="1.0">)" +
+      std::string(R"(<g:trk><g:trkseg><g:trkpt lat="1" lon="2"><g:ele>3</g:ele></g:trkpt></g:trkseg></g:trk></g:gpx>)");
+  for (const std::string& doc :
+       {R"(<gpx xmlns="http://www.topografix.com/GPX/1/1">)" + body + "</gpx>", "<gpx>" + body + "</gpx>", prefixed}) {
     ReadResult r = read(doc);
     ASSERT_TRUE(r.ok()) << doc;
     ASSERT_EQ(r.file.tracks.at(0).segments.at(0).points.size(), 1u) << doc;
@@ -120,9 +121,10 @@ TEST(GpxReader, RoutesWaypointsAndGpx10Metadata) {
 }
 
 TEST(GpxReader, CdataEntitiesCommentsBomAndCrlf) {
-  std::string doc = "\xEF\xBB\xBF<?xml version=\"1.0\"?>\r\n<gpx><!-- c --><trk><name><![CDATA[A & B]]></name>\r\n"
-                    "<trkseg><trkpt lat=\"1\" lon=\"2\"><!-- inside --><ele>5</ele></trkpt></trkseg></trk>"
-                    "<trk><name>C &amp; D &#233;</name></trk></gpx>\r\n";
+  std::string doc =
+      "\xEF\xBB\xBF<?xml version=\"1.0\"?>\r\n<gpx><!-- c --><trk><name><![CDATA[A & B]]></name>\r\n"
+      "<trkseg><trkpt lat=\"1\" lon=\"2\"><!-- inside --><ele>5</ele></trkpt></trkseg></trk>"
+      "<trk><name>C &amp; D &#233;</name></trk></gpx>\r\n";
   ReadResult r = read(doc);
   ASSERT_TRUE(r.ok()) << r.error->to_string();
   ASSERT_EQ(r.file.tracks.size(), 2u);
@@ -132,7 +134,8 @@ TEST(GpxReader, CdataEntitiesCommentsBomAndCrlf) {
 }
 
 TEST(GpxReader, Utf16WithBom) {
-  std::string utf8 = R"(<?xml version="1.0" encoding="UTF-16"?><gpx><wpt lat="37.5" lon="-122.5"><name>X</name></wpt></gpx>)";
+  std::string utf8 =
+      R"(<?xml version="1.0" encoding="UTF-16"?><gpx><wpt lat="37.5" lon="-122.5"><name>X</name></wpt></gpx>)";
   std::string utf16 = "\xFF\xFE";
   for (char c : utf8) utf16 += std::string{c, '\0'};
   ReadResult r = read(utf16);
@@ -173,7 +176,8 @@ TEST(GpxReader, UnreadableValuesWarnAndEmptyElevationIsSilentlyAbsent) {
 }
 
 TEST(GpxReader, ChannelValueBeyondFloatRangeIsIgnored) {
-  ReadResult r = read(R"(<gpx><trk><trkseg><trkpt lat="1" lon="2"><extensions><hr>1e300</hr></extensions></trkpt></trkseg></trk></gpx>)");
+  ReadResult r = read(
+      R"(<gpx><trk><trkseg><trkpt lat="1" lon="2"><extensions><hr>1e300</hr></extensions></trkpt></trkseg></trk></gpx>)");
   ASSERT_TRUE(r.ok());
   EXPECT_TRUE(std::isnan(r.file.tracks[0].segments[0].points[0].heart_rate));
   ASSERT_EQ(r.warnings.size(), 1u);
@@ -244,14 +248,16 @@ TEST(GpxReader, DeepNestingIsRejected) {
 }
 
 TEST(GpxReader, HugeAttributeIsRejected) {
-  std::string doc = "<gpx><trk><trkseg><trkpt lat=\"" + std::string(10 << 20, '1') + "\" lon=\"1\"/></trkseg></trk></gpx>";
+  std::string doc =
+      "<gpx><trk><trkseg><trkpt lat=\"" + std::string(10 << 20, '1') + "\" lon=\"1\"/></trkseg></trk></gpx>";
   ReadResult r = read(doc);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error->message.find("longer than 1 MiB"), std::string::npos) << r.error->message;
 }
 
 TEST(GpxReader, GzipFileAndFormatDetection) {
-  const std::string doc = "<gpx><trk><trkseg><trkpt lat=\"1\" lon=\"2\"/><trkpt lat=\"1\" lon=\"3\"/></trkseg></trk></gpx>";
+  const std::string doc =
+      "<gpx><trk><trkseg><trkpt lat=\"1\" lon=\"2\"/><trkpt lat=\"1\" lon=\"3\"/></trkseg></trk></gpx>";
   trailray::test::TempFile gz("track.dat");  // misleading name: content decides
   gzFile f = gzopen(gz.str().c_str(), "wb");
   gzwrite(f, doc.data(), static_cast<unsigned>(doc.size()));
@@ -276,7 +282,10 @@ TEST(GpxReader, MissingFileAndEmptyFileAreErrors) {
 // that is not XML), with the point counts of MANIFEST.md.
 TEST(GpxReaderRealData, PointCountsMatchManifest) {
   TRAILRAY_REQUIRE_DATA(dir, "gpx");
-  struct Expect { const char* file; std::size_t trk, seg, trkpt, rte, rtept, wpt; };
+  struct Expect {
+    const char* file;
+    std::size_t trk, seg, trkpt, rte, rtept, wpt;
+  };
   const Expect cases[] = {
       {"alpinemaps_example.gpx", 1, 2, 5, 0, 0, 0},
       {"alpinemaps_husarentempel.gpx", 1, 1, 891, 0, 0, 0},

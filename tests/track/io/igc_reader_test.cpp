@@ -134,8 +134,10 @@ TEST(IgcReader, LadLodAddDecimalDigitsOfTheMinutes) {
 
 TEST(IgcReader, LadLodWithTwoDigitsAndOtherExtensionsFirst) {
   // FXA 36-38, LAD 39-40, LOD 41-42.
-  auto r = read(igc("I033638FXA3940LAD4142LOD\r\n" +
-                    b("120000", "4600000N", "00700000E", 'A', "01000", "01100", "015" "12" "34")));
+  auto r = read(igc("I033638FXA3940LAD4142LOD\r\n" + b("120000", "4600000N", "00700000E", 'A', "01000", "01100",
+                                                       "015"
+                                                       "12"
+                                                       "34")));
   const auto& p = points(r);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NEAR(p[0].lat, 46.0 + 0.00012 / 60.0, 1e-11);
@@ -147,8 +149,8 @@ TEST(IgcReader, BrokenLadKeepsTheFixAtBasePrecisionWithAWarning) {
   auto r = read(igc("I023636LAD3737LOD\r\n" + b("120000", "4600000N", "00700000E", 'A', "01000", "01100", "x7")));
   const auto& p = points(r);
   ASSERT_EQ(p.size(), 1u);
-  EXPECT_NEAR(p[0].lat, 46.0, 1e-12);                   // LAD ignored
-  EXPECT_NEAR(p[0].lon, 7.0 + 0.0007 / 60.0, 1e-11);    // LOD still applied
+  EXPECT_NEAR(p[0].lat, 46.0, 1e-12);                 // LAD ignored
+  EXPECT_NEAR(p[0].lon, 7.0 + 0.0007 / 60.0, 1e-11);  // LOD still applied
   const Diagnostic* w = find_warning(r, "extension LAD");
   ASSERT_NE(w, nullptr);
   EXPECT_EQ(w->position.line, 4);
@@ -344,12 +346,21 @@ TEST(IgcReader, HeadersBecomeFieldsInFileOrder) {
       b("103532"));
   ASSERT_TRUE(r.ok());
   const std::vector<std::pair<std::string, std::string>> expected{
-      {"date", "2022-08-05"},          {"fix_accuracy", "015"},   {"pilot", "Jane Doe"},
-      {"glider_type", "ASG 29E 18m"},  {"glider_id", "D-KGSA"},   {"gps_datum", "WGS-1984"},
-      {"firmware", "9.0"},             {"hardware", "3"},         {"recorder", "LXNAV,LX9000F"},
-      {"competition_id", "29"},        {"competition_class", "18-meter"},
-      {"site", "Amisb\xC3\xBChl"},     {"altitude_pressure", "ISA"},
-      {"copilot", "Second:Person"},    {"HFXYZ", "odd"},
+      {"date", "2022-08-05"},
+      {"fix_accuracy", "015"},
+      {"pilot", "Jane Doe"},
+      {"glider_type", "ASG 29E 18m"},
+      {"glider_id", "D-KGSA"},
+      {"gps_datum", "WGS-1984"},
+      {"firmware", "9.0"},
+      {"hardware", "3"},
+      {"recorder", "LXNAV,LX9000F"},
+      {"competition_id", "29"},
+      {"competition_class", "18-meter"},
+      {"site", "Amisb\xC3\xBChl"},
+      {"altitude_pressure", "ISA"},
+      {"copilot", "Second:Person"},
+      {"HFXYZ", "odd"},
   };
   EXPECT_EQ(r.file.metadata.fields, expected);
   EXPECT_EQ(r.file.metadata.creator, "LXNAV 79MFLIGHT:1");
@@ -370,20 +381,20 @@ TEST(IgcReader, Latin1HeaderTextBecomesUtf8) {
 }
 
 TEST(IgcReader, OtherRecordTypesAreIgnored) {
-  auto r = read(igc(
-      "I023636LAD3737LOD\r\n"
-      "J010812HDT\r\n"
-      "C050822094632000000000305\r\n"
-      "C4826967N00136183E002departSud\r\n"
-      "LLXVOZ=-1,Style=2,R1=5000m\r\n"
-      "LXCTsomething B1234\r\n" +
-      b("100000", "4700000N", "00800000E", 'A', "01000", "01100", "00") +
-      "F103532270308211410013222\r\n"
-      "K100001090\r\n"
-      "E100001PEV\r\n"
-      "D20331\r\n" +
-      b("100002", "4700000N", "00800000E", 'A', "01000", "01100", "00") +
-      "G6A8B9C0D\r\nGREJNGJERJKNJKRE31895478537H43982FJN9248F942389T433T\r\n"));
+  auto r =
+      read(igc("I023636LAD3737LOD\r\n"
+               "J010812HDT\r\n"
+               "C050822094632000000000305\r\n"
+               "C4826967N00136183E002departSud\r\n"
+               "LLXVOZ=-1,Style=2,R1=5000m\r\n"
+               "LXCTsomething B1234\r\n" +
+               b("100000", "4700000N", "00800000E", 'A', "01000", "01100", "00") +
+               "F103532270308211410013222\r\n"
+               "K100001090\r\n"
+               "E100001PEV\r\n"
+               "D20331\r\n" +
+               b("100002", "4700000N", "00800000E", 'A', "01000", "01100", "00") +
+               "G6A8B9C0D\r\nGREJNGJERJKNJKRE31895478537H43982FJN9248F942389T433T\r\n"));
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(points(r).size(), 2u);
   EXPECT_TRUE(r.warnings.empty()) << r.warnings[0].to_string();
@@ -417,8 +428,7 @@ TEST(IgcReader, Utf8BomBeforeTheARecord) {
 // ---- bad input -----------------------------------------------------------------------------
 
 TEST(IgcReader, TooShortBRecordsAreDroppedWithOneCountedWarning) {
-  auto r = read(igc(b("100000") + "B1000014700000N00800000EA0100001\r\n" + "B\r\n" + b("100002") +
-                    "B10000347\r\n"));
+  auto r = read(igc(b("100000") + "B1000014700000N00800000EA0100001\r\n" + "B\r\n" + b("100002") + "B10000347\r\n"));
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(points(r).size(), 2u);
   ASSERT_EQ(r.warnings.size(), 1u);
@@ -496,8 +506,8 @@ TEST(IgcReader, CorruptExtensionKeepsTheFix) {
 }
 
 TEST(IgcReader, BRecordShorterThanItsIRecordKeepsTheFix) {
-  auto r = read(igc("I023636LAD3737LOD\r\n" + b("100000", "4700000N", "00800000E", 'A', "01000", "01100", "5") +
-                    b("100001")));
+  auto r = read(
+      igc("I023636LAD3737LOD\r\n" + b("100000", "4700000N", "00800000E", 'A', "01000", "01100", "5") + b("100001")));
   ASSERT_EQ(points(r).size(), 2u);
   EXPECT_NEAR(points(r)[0].lat, 47.0 + 0.0005 / 60.0, 1e-12);  // LAD present, LOD missing
   EXPECT_NEAR(points(r)[1].lat, 47.0, 1e-12);
@@ -514,10 +524,10 @@ TEST(IgcReader, BadIRecordsAreWarnedAboutAndIgnored) {
   ASSERT_TRUE(r.ok());
   const auto& p = points(r);
   ASSERT_EQ(p.size(), 3u);
-  EXPECT_NEAR(p[0].lat, 47.0, 1e-12);                      // no usable I record: base precision
-  EXPECT_NEAR(p[1].lat, 47.0 + 0.0005 / 60.0, 1e-12);      // 2 of 3 declared entries present
+  EXPECT_NEAR(p[0].lat, 47.0, 1e-12);                  // no usable I record: base precision
+  EXPECT_NEAR(p[1].lat, 47.0 + 0.0005 / 60.0, 1e-12);  // 2 of 3 declared entries present
   EXPECT_NEAR(p[1].lon, 8.0 + 0.0006 / 60.0, 1e-12);
-  EXPECT_NEAR(p[2].lat, 47.0, 1e-12);                      // LAD range 10-36 overlaps the base record
+  EXPECT_NEAR(p[2].lat, 47.0, 1e-12);  // LAD range 10-36 overlaps the base record
   EXPECT_NEAR(p[2].lon, 8.0 + 0.0006 / 60.0, 1e-12);
   const Diagnostic* w = find_warning(r, "I record");
   ASSERT_NE(w, nullptr);
@@ -643,10 +653,10 @@ namespace {
 
 struct RealFile {
   const char* name;
-  int day, month, year;   // HFDTE
-  int count;              // B fixes (MANIFEST.md)
-  int first, last;        // HHMMSS of the first and last fix (UTC)
-  int last_day;           // days after the flight date of the last fix
+  int day, month, year;  // HFDTE
+  int count;             // B fixes (MANIFEST.md)
+  int first, last;       // HHMMSS of the first and last fix (UTC)
+  int last_day;          // days after the flight date of the last fix
   int gnss_min, gnss_max, baro_min, baro_max;
 };
 
@@ -672,8 +682,8 @@ const RealFile kRealFiles[] = {
 };
 
 double utc(const RealFile& f, int hhmmss, int extra_days) {
-  const double day = static_cast<double>(days_from_civil(f.year, static_cast<unsigned>(f.month),
-                                                         static_cast<unsigned>(f.day)) + extra_days);
+  const double day = static_cast<double>(
+      days_from_civil(f.year, static_cast<unsigned>(f.month), static_cast<unsigned>(f.day)) + extra_days);
   return day * 86400.0 + (hhmmss / 10000) * 3600 + (hhmmss / 100 % 100) * 60 + hhmmss % 100;
 }
 
@@ -746,8 +756,8 @@ TEST(IgcRealFiles, EveryIgcFileInTheDataFolderIsListed) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
     ++n;
-    EXPECT_TRUE(std::any_of(std::begin(kRealFiles), std::end(kRealFiles),
-                            [&](const RealFile& f) { return name == f.name; }))
+    EXPECT_TRUE(
+        std::any_of(std::begin(kRealFiles), std::end(kRealFiles), [&](const RealFile& f) { return name == f.name; }))
         << name << " has no expectations in kRealFiles";
   }
   EXPECT_EQ(n, std::size(kRealFiles));
@@ -800,7 +810,8 @@ TEST(IgcRealFiles, BadLineKeepsTheFixAndWarnsAboutLine55) {
   EXPECT_NEAR(points(r)[6].lat, 47.0 + 47.325 / 60.0, 1e-9);
   EXPECT_DOUBLE_EQ(points(r)[6].time, utc(kRealFiles[0], 135019, 0));
   // The 3-hour gap stays in the data (cleaning decides what it means).
-  EXPECT_DOUBLE_EQ(points(r)[4].time - points(r)[3].time, utc(kRealFiles[0], 135017, 0) - utc(kRealFiles[0], 103536, 0));
+  EXPECT_DOUBLE_EQ(points(r)[4].time - points(r)[3].time,
+                   utc(kRealFiles[0], 135017, 0) - utc(kRealFiles[0], 103536, 0));
 
   ReadOptions strict;
   strict.strict = true;

@@ -66,7 +66,8 @@ TEST(ParseDouble, AgreesWithFromCharsExactly) {
     std::uint64_t y = x;
     for (int k = 0; k < int_digits + 1; ++k, y /= 7) text += static_cast<char>('0' + y % 10);
     text += '.';
-    for (int k = 0; k < frac_digits; ++k, y = y * 6364136223846793005ull + 1) text += static_cast<char>('0' + (y >> 33) % 10);
+    for (int k = 0; k < frac_digits; ++k, y = y * 6364136223846793005ull + 1)
+      text += static_cast<char>('0' + (y >> 33) % 10);
     double want = 0;
     std::from_chars(text.data(), text.data() + text.size(), want);
     auto got = parse_double(text);

@@ -27,8 +27,7 @@ const std::string kTail = "</TrainingCenterDatabase>\n";
 std::string trackpoint(const std::string& time, const std::string& lat, const std::string& lon,
                        const std::string& extra = "") {
   return "<Trackpoint><Time>" + time + "</Time><Position><LatitudeDegrees>" + lat +
-         "</LatitudeDegrees><LongitudeDegrees>" + lon + "</LongitudeDegrees></Position>" + extra +
-         "</Trackpoint>\n";
+         "</LatitudeDegrees><LongitudeDegrees>" + lon + "</LongitudeDegrees></Position>" + extra + "</Trackpoint>\n";
 }
 
 std::string activity(const std::string& sport, const std::string& body) {
@@ -45,11 +44,11 @@ bool any_warning_contains(const ReadResult& r, const std::string& needle) {
 }  // namespace
 
 TEST(TcxReader, LapsBecomeSegmentsInFileOrder) {
-  std::string body =
-      "<Lap StartTime=\"2021-06-01T08:00:00Z\"><TotalTimeSeconds>10</TotalTimeSeconds><Track>\n" +
-      trackpoint("2021-06-01T08:00:00Z", "47.1", "8.1") + trackpoint("2021-06-01T08:00:01Z", "47.2", "8.2") +
-      "</Track></Lap>\n<Lap StartTime=\"2021-06-01T08:10:00Z\"><Track>\n" +
-      trackpoint("2021-06-01T08:10:00Z", "47.3", "8.3") + "</Track></Lap>\n";
+  std::string body = "<Lap StartTime=\"2021-06-01T08:00:00Z\"><TotalTimeSeconds>10</TotalTimeSeconds><Track>\n" +
+                     trackpoint("2021-06-01T08:00:00Z", "47.1", "8.1") +
+                     trackpoint("2021-06-01T08:00:01Z", "47.2", "8.2") +
+                     "</Track></Lap>\n<Lap StartTime=\"2021-06-01T08:10:00Z\"><Track>\n" +
+                     trackpoint("2021-06-01T08:10:00Z", "47.3", "8.3") + "</Track></Lap>\n";
   ReadResult r = read(activity("Running", body));
   ASSERT_TRUE(r.ok()) << r.error->to_string();
   EXPECT_TRUE(r.warnings.empty());
@@ -172,14 +171,15 @@ TEST(TcxReader, LapWithoutPositionedPointsLeavesNoEmptySegment) {
 
 TEST(TcxReader, InvalidCoordinatesAreDroppedWithOneCountedWarning) {
   // Lines 1-3: kHead, line 4: <Activities><Activity><Id>.
-  std::string body = "<Lap StartTime=\"2021-06-01T08:00:00Z\"><Track>\n" +        // line 5
-                     trackpoint("2021-06-01T08:00:00Z", "47.1", "8.1") +          // line 6
-                     trackpoint("2021-06-01T08:00:01Z", "91.5", "8.1") +          // line 7: out of range
-                     trackpoint("2021-06-01T08:00:02Z", "47.2", "north") +        // line 8: unparseable
+  std::string body = "<Lap StartTime=\"2021-06-01T08:00:00Z\"><Track>\n" +  // line 5
+                     trackpoint("2021-06-01T08:00:00Z", "47.1", "8.1") +    // line 6
+                     trackpoint("2021-06-01T08:00:01Z", "91.5", "8.1") +    // line 7: out of range
+                     trackpoint("2021-06-01T08:00:02Z", "47.2", "north") +  // line 8: unparseable
                      "<Trackpoint><Position><LatitudeDegrees>47.3</LatitudeDegrees></Position>"
-                     "</Trackpoint>\n" +                                           // line 9: no longitude
-                     trackpoint("2021-06-01T08:00:04Z", "47.4", "-181") +         // line 10
-                     trackpoint("2021-06-01T08:00:05Z", "47.5", "8.5") + "</Track></Lap>\n";
+                     "</Trackpoint>\n" +                                   // line 9: no longitude
+                     trackpoint("2021-06-01T08:00:04Z", "47.4", "-181") +  // line 10
+                     trackpoint("2021-06-01T08:00:05Z", "47.5", "8.5") +
+                     "</Track></Lap>\n";
   ReadResult r = read(activity("Running", body));
   ASSERT_TRUE(r.ok());
   const auto& pts = r.file.tracks.at(0).segments.at(0).points;
@@ -244,7 +244,8 @@ TEST(TcxReader, OneTrackPerActivityAndCreator) {
                     "</Track></Lap><Creator><Name>Forerunner 965</Name><Version><VersionMajor>1</VersionMajor>"
                     "</Version></Creator></Activity>\n"
                     "<Activity Sport=\"Biking\"><Id>2021-06-02T08:00:00Z</Id><Lap StartTime=\"x\"><Track>" +
-                    trackpoint("2021-06-02T08:00:00Z", "47.2", "8.2") + trackpoint("2021-06-02T08:00:01Z", "47.3", "8.3") +
+                    trackpoint("2021-06-02T08:00:00Z", "47.2", "8.2") +
+                    trackpoint("2021-06-02T08:00:01Z", "47.3", "8.3") +
                     "</Track></Lap><Notes>evening ride</Notes></Activity>\n"
                     "</Activities>\n"
                     "<Author><Name>Garmin Connect</Name></Author>\n" +
@@ -258,7 +259,7 @@ TEST(TcxReader, OneTrackPerActivityAndCreator) {
   EXPECT_EQ(r.file.tracks[0].point_count(), 1u);
   EXPECT_EQ(r.file.tracks[1].point_count(), 2u);
   EXPECT_EQ(r.file.metadata.activity_type, "Running");
-  EXPECT_EQ(r.file.metadata.time, 1622620800.0);  // the first parseable Id
+  EXPECT_EQ(r.file.metadata.time, 1622620800.0);         // the first parseable Id
   EXPECT_EQ(r.file.metadata.creator, "Forerunner 965");  // the device, not the Author
 }
 
@@ -341,7 +342,8 @@ TEST(TcxReader, CourseWithTracksAndCoursePoints) {
 TEST(TcxReader, CoursePointWithBadPositionIsWarned) {
   std::string xml = kHead +
                     "<Courses><Course><Name>C</Name>\n"
-                    "<CoursePoint><Name>Nowhere</Name><PointType>Generic</PointType></CoursePoint>\n" + kTail;
+                    "<CoursePoint><Name>Nowhere</Name><PointType>Generic</PointType></CoursePoint>\n" +
+                    kTail;
   xml.insert(xml.find(kTail), "</Course></Courses>\n");
   ReadResult r = read(xml);
   ASSERT_TRUE(r.ok());
@@ -378,8 +380,7 @@ TEST(TcxReader, TruncatedFileKeepsCompletePoints) {
   std::string full = activity("Running", "<Lap StartTime=\"2021-06-01T08:00:00Z\"><Track>\n" +
                                              trackpoint("2021-06-01T08:00:00Z", "47.1", "8.1") +
                                              trackpoint("2021-06-01T08:00:01Z", "47.2", "8.2") +
-                                             trackpoint("2021-06-01T08:00:02Z", "47.3", "8.3") +
-                                             "</Track></Lap>\n");
+                                             trackpoint("2021-06-01T08:00:02Z", "47.3", "8.3") + "</Track></Lap>\n");
   // Cut inside the third point's longitude.
   std::string cut = full.substr(0, full.find("8.3"));
   ReadResult r = read(cut);
@@ -399,10 +400,11 @@ TEST(TcxReader, TruncatedFileKeepsCompletePoints) {
 }
 
 TEST(TcxReader, MalformedXmlNamesLineAndColumn) {
-  std::string xml = kHead +                                             // lines 1-3
-                    "<Activities><Activity Sport=\"Running\">\n"       // line 4
-                    "  <Id>2021-06-01T08:00:00Z</Idd>\n" +             // line 5: mismatched tag
-                    "</Activity></Activities>\n" + kTail;
+  std::string xml = kHead +                                       // lines 1-3
+                    "<Activities><Activity Sport=\"Running\">\n"  // line 4
+                    "  <Id>2021-06-01T08:00:00Z</Idd>\n" +        // line 5: mismatched tag
+                    "</Activity></Activities>\n" +
+                    kTail;
   ReadResult r = read(xml);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error->message.find("malformed XML"), std::string::npos) << r.error->message;
@@ -431,8 +433,8 @@ TEST(TcxReaderData, GpsbabelBikeActivity) {
   EXPECT_EQ(r.file.metadata.activity_type, "Biking");
   EXPECT_EQ(r.file.metadata.creator, "Forerunner 910XT");
   EXPECT_EQ(r.file.metadata.time, 1367349837.0);  // Id 2013-04-30T19:23:57.000Z
-  EXPECT_EQ(t.point_count(), 1812u);               // MANIFEST: 1812 trackpoints, all with position
-  ASSERT_EQ(t.segments.size(), 2u);                // 2 laps
+  EXPECT_EQ(t.point_count(), 1812u);              // MANIFEST: 1812 trackpoints, all with position
+  ASSERT_EQ(t.segments.size(), 2u);               // 2 laps
   EXPECT_EQ(t.segments[0].points.size(), 901u);
   EXPECT_EQ(t.segments[1].points.size(), 911u);
 
@@ -451,7 +453,7 @@ TEST(TcxReaderData, GpsbabelBikeActivity) {
       ASSERT_TRUE(valid_coordinates(p.lat, p.lon));
       ASSERT_TRUE(p.has_time());
       ASSERT_TRUE(p.has_ele());
-      ASSERT_FALSE(std::isnan(p.speed));  // every point has TPX/Speed
+      ASSERT_FALSE(std::isnan(p.speed));      // every point has TPX/Speed
       ASSERT_TRUE(std::isnan(p.heart_rate));  // MANIFEST: hr=0
       max_speed = std::max(max_speed, p.speed);
     }

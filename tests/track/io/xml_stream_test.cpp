@@ -58,7 +58,8 @@ TEST(XmlStream, Latin1AndWindows1252AreConvertedToUtf8) {
   ASSERT_EQ(out.kind, XmlParseOutcome::Kind::Complete) << out.message;
   EXPECT_EQ(r.events[1], "</a|Z\xC3\xBCrich>");
   Recorder w;
-  ASSERT_EQ(scan("<?xml version=\"1.0\" encoding=\"windows-1252\"?><a>\x80</a>", w).kind, XmlParseOutcome::Kind::Complete);
+  ASSERT_EQ(scan("<?xml version=\"1.0\" encoding=\"windows-1252\"?><a>\x80</a>", w).kind,
+            XmlParseOutcome::Kind::Complete);
   EXPECT_EQ(w.events[1], "</a|\xE2\x82\xAC>");  // the euro sign
 }
 
@@ -128,7 +129,8 @@ TEST(XmlStream, MarkupAndTextAcrossTheBufferRefillKeepTheirValuesAndLines) {
     doc += "<p a=\"12345\">value</p>\n";
     ++lines;
   }
-  doc += "<long>" + std::string(200000, 'x') + "</long>\n<!-- a comment\nover lines -->\n<last k='v'>end</last>\n</root>";
+  doc +=
+      "<long>" + std::string(200000, 'x') + "</long>\n<!-- a comment\nover lines -->\n<last k='v'>end</last>\n</root>";
   lines += 3;
   Recorder r;
   auto out = scan(doc, r);
