@@ -244,18 +244,7 @@ ReadResult read_gpx(ByteSource& source, const ReadOptions& options) {
   WarningCollector warnings(source.display_name());
   GpxHandler handler(result.file, warnings);
   XmlParseOutcome outcome = XmlStream::parse(source, handler);
-  switch (outcome.kind) {
-    case XmlParseOutcome::Kind::Complete:
-      break;
-    case XmlParseOutcome::Kind::Truncated:
-      warnings.add_single(outcome.position, outcome.message + "; kept the " +
-                                                std::to_string(handler.complete_points()) +
-                                                " complete points before the cut");
-      break;
-    case XmlParseOutcome::Kind::Error:
-      result.error = Diagnostic{source.display_name(), outcome.position, outcome.message};
-      break;
-  }
+  record_xml_outcome(outcome, handler.complete_points(), result, warnings);
   finish_read(result, warnings, options);
   return result;
 }

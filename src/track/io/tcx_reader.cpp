@@ -343,18 +343,7 @@ ReadResult read_tcx(ByteSource& source, const ReadOptions& options) {
   TcxHandler handler(result.file, warnings);
   XmlParseOutcome outcome = XmlStream::parse(source, handler);
   handler.finish();
-  switch (outcome.kind) {
-    case XmlParseOutcome::Kind::Complete:
-      break;
-    case XmlParseOutcome::Kind::Truncated:
-      warnings.add_single(outcome.position, outcome.message + "; kept the " +
-                                                std::to_string(handler.complete_points()) +
-                                                " complete points before the cut");
-      break;
-    case XmlParseOutcome::Kind::Error:
-      result.error = Diagnostic{source.display_name(), outcome.position, outcome.message};
-      break;
-  }
+  record_xml_outcome(outcome, handler.complete_points(), result, warnings);
   finish_read(result, warnings, options);
   return result;
 }

@@ -5,9 +5,9 @@
 #include <cstring>
 
 namespace trailray::track {
-namespace {
+namespace {}  // namespace
 
-void put_utf8(std::string& out, char32_t c) {
+void append_utf8(std::string& out, char32_t c) {
   if (c < 0x80) {
     out.push_back(static_cast<char>(c));
   } else if (c < 0x800) {
@@ -24,6 +24,8 @@ void put_utf8(std::string& out, char32_t c) {
     out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
   }
 }
+
+namespace {
 
 // Converts chunks of `inner` with `convert`, keeping converted bytes not yet handed out.
 class ConvertingSource : public ByteSource {
@@ -74,23 +76,23 @@ class Utf16Source final : public ConvertingSource {
       char32_t unit = big_ ? (bytes_[0] << 8 | bytes_[1]) : (bytes_[1] << 8 | bytes_[0]);
       if (high_) {
         if (unit >= 0xDC00 && unit <= 0xDFFF) {
-          put_utf8(out, 0x10000 + ((high_ - 0xD800) << 10) + (unit - 0xDC00));
+          append_utf8(out, 0x10000 + ((high_ - 0xD800) << 10) + (unit - 0xDC00));
           high_ = 0;
           continue;
         }
-        put_utf8(out, 0xFFFD);  // unpaired high surrogate
+        append_utf8(out, 0xFFFD);  // unpaired high surrogate
         high_ = 0;
       }
       if (unit >= 0xD800 && unit <= 0xDBFF)
         high_ = unit;
       else if (unit >= 0xDC00 && unit <= 0xDFFF)
-        put_utf8(out, 0xFFFD);
+        append_utf8(out, 0xFFFD);
       else
-        put_utf8(out, unit);
+        append_utf8(out, unit);
     }
   }
   void flush(std::string& out) override {
-    if (high_ || have_) put_utf8(out, 0xFFFD);
+    if (high_ || have_) append_utf8(out, 0xFFFD);
     high_ = 0;
     have_ = 0;
   }
@@ -149,7 +151,7 @@ class SingleByteSource final : public ConvertingSource {
             break;
         }
       }
-      put_utf8(out, c);
+      append_utf8(out, c);
     }
   }
 

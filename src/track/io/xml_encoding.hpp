@@ -10,6 +10,9 @@
 
 namespace trailray::track {
 
+// Appends code point `c` to `out` as UTF-8.
+void append_utf8(std::string& out, char32_t c);
+
 // A UTF-8 view of `source`: nullptr when it already is UTF-8 (nothing to convert). Sets
 // `error` (and returns nullptr) for an encoding that is declared but not supported.
 std::unique_ptr<ByteSource> utf8_view(ByteSource& source, std::string& error);

@@ -39,24 +39,6 @@ inline bool is_ws(char c) { return kClass[static_cast<unsigned char>(c)] & kWs; 
 inline bool is_name_start(char c) { return kClass[static_cast<unsigned char>(c)] & kNameStart; }
 inline bool is_name_char(char c) { return kClass[static_cast<unsigned char>(c)] & kName; }
 
-void put_utf8(std::string& out, unsigned long c) {
-  if (c < 0x80) {
-    out.push_back(static_cast<char>(c));
-  } else if (c < 0x800) {
-    out.push_back(static_cast<char>(0xC0 | (c >> 6)));
-    out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-  } else if (c < 0x10000) {
-    out.push_back(static_cast<char>(0xE0 | (c >> 12)));
-    out.push_back(static_cast<char>(0x80 | ((c >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-  } else {
-    out.push_back(static_cast<char>(0xF0 | (c >> 18)));
-    out.push_back(static_cast<char>(0x80 | ((c >> 12) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | ((c >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-  }
-}
-
 // Appends `in` to `out` with character references decoded; on a bad reference returns its
 // offset in `in` and sets `error`.
 std::size_t decode_references(std::string_view in, std::string& out, std::string& error) {
@@ -108,7 +90,7 @@ std::size_t decode_references(std::string_view in, std::string& out, std::string
         error = "character reference '&" + std::string(ref) + ";' is not a character";
         return amp;
       }
-      put_utf8(out, c);
+      append_utf8(out, static_cast<char32_t>(c));
     } else {
       error = "undefined entity '&" + std::string(ref.substr(0, 40)) + ";'";
       return amp;
@@ -607,6 +589,21 @@ XmlParseOutcome XmlScanner::run() {
   }
   out_.kind = XmlParseOutcome::Kind::Complete;
   return out_;
+}
+
+void record_xml_outcome(const XmlParseOutcome& outcome, std::size_t complete_points, ReadResult& result,
+                        WarningCollector& warnings) {
+  switch (outcome.kind) {
+    case XmlParseOutcome::Kind::Complete:
+      break;
+    case XmlParseOutcome::Kind::Truncated:
+      warnings.add_single(outcome.position, outcome.message + "; kept the " + std::to_string(complete_points) +
+                                                " complete points before the cut");
+      break;
+    case XmlParseOutcome::Kind::Error:
+      result.error = Diagnostic{warnings.file(), outcome.position, outcome.message};
+      break;
+  }
 }
 
 XmlParseOutcome XmlStream::parse(ByteSource& source, XmlHandler& handler) {

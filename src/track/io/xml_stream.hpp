@@ -53,6 +53,11 @@ struct XmlParseOutcome {
   bool saw_root = false;    // at least one element started
 };
 
+// The common end of the XML readers: a cut file keeps its `complete_points` with a warning
+// naming the cut, an error becomes the result's error.
+void record_xml_outcome(const XmlParseOutcome& outcome, std::size_t complete_points, ReadResult& result,
+                        WarningCollector& warnings);
+
 class XmlStream {
  public:
   static constexpr int kMaxDepth = 256;
