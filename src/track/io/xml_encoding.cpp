@@ -5,7 +5,6 @@
 #include <cstring>
 
 namespace trailray::track {
-namespace {}  // namespace
 
 void append_utf8(std::string& out, char32_t c) {
   if (c < 0x80) {
