@@ -32,6 +32,28 @@ void WarningCollector::add_single(const SourcePosition& where, const std::string
   singles_.push_back(Diagnostic{file_, where, message});
 }
 
+void WarningCollector::merge(const WarningCollector& later,
+                             const std::function<SourcePosition(SourcePosition)>& shift) {
+  std::vector<std::pair<std::size_t, const std::string*>> kinds;
+  for (const auto& [kind, g] : later.groups_) kinds.emplace_back(g.order, &kind);
+  std::sort(kinds.begin(), kinds.end());
+  for (const auto& [order, kind] : kinds) {
+    const Group& g = later.groups_.at(*kind);
+    auto [it, inserted] = groups_.try_emplace(*kind);
+    if (inserted) {
+      it->second = g;
+      it->second.first = shift(g.first);
+      it->second.order = next_order_++;
+    } else {
+      it->second.count += g.count;
+    }
+  }
+  for (Diagnostic d : later.singles_) {
+    d.position = shift(d.position);
+    singles_.push_back(std::move(d));
+  }
+}
+
 std::size_t WarningCollector::total() const {
   std::size_t n = singles_.size();
   for (const auto& [kind, g] : groups_) n += g.count;

@@ -3,6 +3,7 @@
 // layers: they return a ReadResult carrying the value, the warnings and at most one error.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -40,6 +41,10 @@ class WarningCollector {
   // A one-off warning, never grouped.
   void add_single(const SourcePosition& where, const std::string& message);
 
+  // Adds `later`'s warnings after these (a later part of the same file): a kind already here
+  // adds its count, a new one comes after; every position passes through `shift`.
+  void merge(const WarningCollector& later, const std::function<SourcePosition(SourcePosition)>& shift);
+
   std::size_t total() const;
   std::vector<Diagnostic> diagnostics() const;
   const std::string& file() const { return file_; }
@@ -62,6 +67,8 @@ struct ReadOptions {
   bool strict = false;
   // IGC: which altitude becomes the point elevation.
   enum class IgcAltitude { Auto, Gnss, Pressure } igc_altitude = IgcAltitude::Auto;
+  // A plain GPX file at least this big is read in two halves on two threads (same result).
+  std::int64_t two_part_min_bytes = 8 << 20;
 };
 
 struct ReadResult {

@@ -38,12 +38,52 @@ class GzFileSource final : public ByteSource {
   std::string error_;
 };
 
+// Bytes [begin, end) of an open file, through pread: parts of one file read independently.
+class FileRangeSource final : public ByteSource {
+ public:
+  FileRangeSource(std::shared_ptr<const int> fd, std::int64_t begin, std::int64_t end, const std::string& path)
+      : ByteSource(path, path), fd_(std::move(fd)), at_(begin), end_(end) {}
+
+  std::ptrdiff_t read(char* out, std::size_t max) override {
+    const std::size_t want = static_cast<std::size_t>(std::max<std::int64_t>(
+        0, std::min<std::int64_t>(end_ - at_, static_cast<std::int64_t>(std::min<std::size_t>(max, 1u << 30)))));
+    if (want == 0) return 0;
+    for (;;) {
+      ssize_t n = ::pread(*fd_, out, want, at_);
+      if (n >= 0) {
+        at_ += n;
+        return n;
+      }
+      if (errno == EINTR) continue;
+      error_ = std::strerror(errno);
+      return -1;
+    }
+  }
+  std::string error() const override { return error_; }
+
+ private:
+  std::shared_ptr<const int> fd_;
+  std::int64_t at_, end_;
+  std::string error_;
+};
+
 // A plain (uncompressed) file: read() straight into the caller's buffer, without zlib's
 // pass-through copy.
 class PlainFileSource final : public ByteSource {
  public:
-  PlainFileSource(int fd, std::string path) : ByteSource(path, path), fd_(fd) {}
-  ~PlainFileSource() override { close(fd_); }
+  PlainFileSource(int fd, std::string path)
+      : ByteSource(path, path), fd_(fd), shared_fd_(new int(fd), [](const int* f) {
+          close(*f);
+          delete f;
+        }) {}
+
+  std::int64_t size() const override {
+    struct stat st {};
+    return fstat(fd_, &st) == 0 && S_ISREG(st.st_mode) ? static_cast<std::int64_t>(st.st_size) : -1;
+  }
+  std::unique_ptr<ByteSource> range(std::int64_t begin, std::int64_t end) const override {
+    return std::make_unique<FileRangeSource>(shared_fd_, begin, end, path());
+  }
 
   std::ptrdiff_t read(char* out, std::size_t max) override {
     for (;;) {
@@ -58,6 +98,7 @@ class PlainFileSource final : public ByteSource {
 
  private:
   int fd_;
+  std::shared_ptr<const int> shared_fd_;  // closes fd_ once this and every range are gone
   std::string error_;
 };
 

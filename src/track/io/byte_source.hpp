@@ -24,6 +24,11 @@ class ByteSource {
   virtual std::ptrdiff_t read(char* out, std::size_t max) = 0;
   virtual std::string error() const = 0;
 
+  // Random access, for reading a big file in parts: the total size in bytes (-1 when the
+  // source is a stream or compressed), and an independent source over [begin, end).
+  virtual std::int64_t size() const { return -1; }
+  virtual std::unique_ptr<ByteSource> range(std::int64_t /*begin*/, std::int64_t /*end*/) const { return nullptr; }
+
   // The first bytes of the (decompressed) input, without consuming them.
   std::string_view peek(std::size_t n);
   // read() including any peeked bytes.

@@ -5,10 +5,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <optional>
 #include <string>
+#include <thread>
 
 #include "track/io/parse_util.hpp"
 #include "track/io/readers.hpp"
+#include "track/io/xml_encoding.hpp"
 #include "track/io/xml_stream.hpp"
 
 namespace trailray::track {
@@ -37,6 +41,17 @@ class GpxHandler final : public XmlHandler {
   GpxHandler(TrackFile& file, WarningCollector& warnings) : file_(file), warnings_(warnings) {}
 
   std::size_t complete_points() const { return complete_points_; }
+
+  // For the second half of a file split at a <trkpt>: starts inside gpx/trk/trkseg, in a track
+  // and segment of its own that the joining appends to the first half's.
+  void continue_in_segment() {
+    depth_ = 3;
+    track_depth_ = 2;
+    segment_depth_ = 3;
+    file_.tracks.emplace_back().segments.emplace_back();
+  }
+  // True when the parse stands between two points of a segment, as the split requires.
+  bool between_points() const { return depth_ == 3 && track_depth_ == 2 && segment_depth_ == 3 && point_depth_ < 0; }
 
   void start_element(std::string_view name, const char** attrs) override {
     ++depth_;
@@ -238,7 +253,96 @@ class GpxHandler final : public XmlHandler {
 
 }  // namespace
 
+// Appends the second half's content to the first's: its first segment continues the first
+// half's last one, its first track the last track.
+void join_halves(TrackFile& first, TrackFile& second) {
+  Track& track = first.tracks.back();
+  Track& rest = second.tracks.front();
+  auto& points = track.segments.back().points;
+  auto& more = rest.segments.front().points;
+  points.insert(points.end(), more.begin(), more.end());
+  for (std::size_t i = 1; i < rest.segments.size(); ++i) track.segments.push_back(std::move(rest.segments[i]));
+  if (track.name.empty()) track.name = std::move(rest.name);
+  if (track.description.empty()) track.description = std::move(rest.description);
+  if (track.type.empty()) track.type = std::move(rest.type);
+  for (std::size_t i = 1; i < second.tracks.size(); ++i) first.tracks.push_back(std::move(second.tracks[i]));
+  for (auto& r : second.routes) first.routes.push_back(std::move(r));
+  for (auto& w : second.waypoints) first.waypoints.push_back(std::move(w));
+  if (first.metadata.name.empty()) first.metadata.name = second.metadata.name;
+  if (first.metadata.description.empty()) first.metadata.description = second.metadata.description;
+  if (std::isnan(first.metadata.time)) first.metadata.time = second.metadata.time;
+}
+
+// A big plain GPX file is read in two halves at once (two cores): the second half starts at the
+// first "<trkpt" after the middle, parsed as if inside gpx/trk/trkseg. When the first half does
+// end exactly there, between two points of a segment, the halves are joined; otherwise (the
+// split fell in a comment, names carry a prefix, an error) the caller reads it in one go.
+std::optional<ReadResult> read_gpx_in_halves(ByteSource& source, const ReadOptions& options) {
+  const std::int64_t size = source.size();
+  if (size < 0 || size < options.two_part_min_bytes || size < 64) return std::nullopt;
+  if (!is_utf8_document(source.peek(4096))) return std::nullopt;
+
+  // The split: the first "<trkpt" followed by a space or '>' in the 1 MiB after the middle.
+  auto probe = source.range(size / 2, std::min(size, size / 2 + (1 << 20)));
+  if (!probe) return std::nullopt;
+  std::string window(1 << 20, '\0');
+  std::size_t got = 0;
+  for (std::ptrdiff_t n; got < window.size() && (n = probe->read(window.data() + got, window.size() - got)) > 0;)
+    got += static_cast<std::size_t>(n);
+  window.resize(got);
+  std::size_t at = window.find("<trkpt");
+  while (at != std::string::npos && at + 6 < window.size() && window[at + 6] != ' ' && window[at + 6] != '>' &&
+         window[at + 6] != '\n' && window[at + 6] != '\t' && window[at + 6] != '\r')
+    at = window.find("<trkpt", at + 1);
+  if (at == std::string::npos || at + 6 >= window.size()) return std::nullopt;
+  const std::int64_t split = size / 2 + static_cast<std::int64_t>(at);
+
+  auto first_part = source.range(0, split);
+  auto second_part = source.range(split, size);
+  if (!first_part || !second_part) return std::nullopt;
+
+  const std::string& name = source.display_name();
+  TrackFile second_file;
+  WarningCollector second_warnings(name);
+  GpxHandler second_handler(second_file, second_warnings);
+  second_handler.continue_in_segment();
+  XmlPartStart start;
+  start.byte_offset = split;
+  start.open_elements = {"gpx", "trk", "trkseg"};
+  XmlParseOutcome second_outcome;
+  std::thread second_thread(
+      [&] { second_outcome = XmlStream::parse_part(*second_part, second_handler, &start, nullptr); });
+
+  ReadResult result;
+  result.file.format = Format::Gpx;
+  WarningCollector warnings(name);
+  GpxHandler handler(result.file, warnings);
+  XmlEndState end;
+  const XmlParseOutcome first_outcome = XmlStream::parse_part(*first_part, handler, nullptr, &end);
+  second_thread.join();
+
+  const bool joins = first_outcome.kind == XmlParseOutcome::Kind::Truncated && !end.inside_markup &&
+                     end.open_elements == start.open_elements && handler.between_points();
+  if (!joins) return std::nullopt;
+
+  // The second half counted lines from its first byte: move them to where it starts.
+  const SourcePosition at_split = end.end;
+  auto shift = [at_split](SourcePosition p) {
+    if (p.line <= 0) return p;
+    if (p.line == 1) p.column += at_split.column - 1;
+    p.line += at_split.line - 1;
+    return p;
+  };
+  join_halves(result.file, second_file);
+  warnings.merge(second_warnings, shift);
+  second_outcome.position = shift(second_outcome.position);
+  record_xml_outcome(second_outcome, handler.complete_points() + second_handler.complete_points(), result, warnings);
+  finish_read(result, warnings, options);
+  return result;
+}
+
 ReadResult read_gpx(ByteSource& source, const ReadOptions& options) {
+  if (auto halves = read_gpx_in_halves(source, options)) return std::move(*halves);
   ReadResult result;
   result.file.format = Format::Gpx;
   WarningCollector warnings(source.display_name());

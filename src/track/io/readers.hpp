@@ -4,12 +4,17 @@
 // coordinates (NaN, |lat|>90, |lon|>180) are dropped with a warning; a cut file keeps every
 // complete point before the cut, with a warning (an error under ReadOptions::strict).
 
+#include <optional>
+
 #include "track/diagnostics.hpp"
 #include "track/io/byte_source.hpp"
 
 namespace trailray::track {
 
 ReadResult read_gpx(ByteSource& source, const ReadOptions& options);
+// read_gpx's path for big plain files: both halves at once, joined; nullopt when the file is
+// not suited or the halves do not join (read_gpx then reads it in one pass).
+std::optional<ReadResult> read_gpx_in_halves(ByteSource& source, const ReadOptions& options);
 ReadResult read_igc(ByteSource& source, const ReadOptions& options);
 ReadResult read_tcx(ByteSource& source, const ReadOptions& options);
 

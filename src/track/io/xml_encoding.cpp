@@ -178,6 +178,15 @@ std::string declared_encoding(std::string_view head) {
 
 }  // namespace
 
+bool is_utf8_document(std::string_view head) {
+  auto byte = [&](std::size_t i) { return i < head.size() ? static_cast<unsigned char>(head[i]) : 0u; };
+  if ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF)) return false;
+  if (byte(0) == 0 || byte(1) == 0) return false;  // UTF-16 without a BOM
+  if (head.substr(0, 3) == "\xEF\xBB\xBF") return true;
+  const std::string enc = declared_encoding(head);
+  return enc.empty() || enc == "utf-8" || enc == "utf8" || enc == "us-ascii" || enc == "ascii";
+}
+
 std::unique_ptr<ByteSource> utf8_view(ByteSource& source, std::string& error) {
   std::string_view head = source.peek(512);
   auto byte = [&](std::size_t i) { return i < head.size() ? static_cast<unsigned char>(head[i]) : 0u; };

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "track/io/byte_source.hpp"
 
@@ -12,6 +13,10 @@ namespace trailray::track {
 
 // Appends code point `c` to `out` as UTF-8.
 void append_utf8(std::string& out, char32_t c);
+
+// True when a document starting with `head` is read as it is (UTF-8, ASCII, or no declared
+// encoding): no conversion, so it can be read in independent parts.
+bool is_utf8_document(std::string_view head);
 
 // A UTF-8 view of `source`: nullptr when it already is UTF-8 (nothing to convert). Sets
 // `error` (and returns nullptr) for an encoding that is declared but not supported.

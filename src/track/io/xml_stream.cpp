@@ -110,6 +110,10 @@ class XmlScanner {
  public:
   XmlScanner(ByteSource& source, XmlHandler& handler) : src_(source), handler_(handler) { buf_.resize(kChunk); }
 
+  // Starts inside a document (a later part): `start`'s elements are open, offsets absolute.
+  void begin_part(const XmlPartStart& start);
+  XmlEndState end_state();
+
   XmlParseOutcome run();
   SourcePosition position_of(std::int64_t absolute);
   SourcePosition event_position() { return position_of(event_abs_); }
@@ -144,6 +148,8 @@ class XmlScanner {
   std::int64_t base_ = 0;  // absolute offset of buf_[0]
   bool eof_ = false;
   bool read_error_ = false;
+  bool part_ = false;  // a later part of a document: no BOM, elements already open
+  bool cut_inside_markup_ = false;
 
   // Line counting, lazily: newlines are counted up to counted_ when a position is asked for.
   std::int64_t counted_ = 0, line_ = 1, line_start_ = 0;
@@ -539,10 +545,33 @@ XmlScanner::Step XmlScanner::markup(std::size_t p) {
   return start_tag(p);
 }
 
+void XmlScanner::begin_part(const XmlPartStart& start) {
+  part_ = true;
+  base_ = counted_ = line_start_ = start.byte_offset;
+  for (const std::string& name : start.open_elements) {
+    starts_.push_back(static_cast<std::uint32_t>(names_.size()));
+    locals_.push_back(static_cast<std::uint32_t>(names_.size() + name.size() - xml_local_name(name).size()));
+    names_ += name;
+  }
+  depth_ = static_cast<int>(start.open_elements.size());
+  saw_root_ = depth_ > 0;
+}
+
+XmlEndState XmlScanner::end_state() {
+  XmlEndState e;
+  for (std::size_t k = 0; k < starts_.size(); ++k) {
+    const std::size_t until = k + 1 < starts_.size() ? starts_[k + 1] : names_.size();
+    e.open_elements.emplace_back(names_, starts_[k], until - starts_[k]);
+  }
+  e.inside_markup = cut_inside_markup_;
+  e.end = position_of(abs(end_));
+  return e;
+}
+
 XmlParseOutcome XmlScanner::run() {
   fill(0);
-  if (end_ >= 3 && std::memcmp(buf_.data(), "\xEF\xBB\xBF", 3) == 0) pos_ = 3;
-  bool cut_inside_markup = false;
+  if (!part_ && end_ >= 3 && std::memcmp(buf_.data(), "\xEF\xBB\xBF", 3) == 0) pos_ = 3;
+  bool& cut_inside_markup = cut_inside_markup_;
   while (!stopped_) {
     if (pos_ >= end_) {
       if (!fill(pos_)) break;
@@ -604,6 +633,17 @@ void record_xml_outcome(const XmlParseOutcome& outcome, std::size_t complete_poi
       result.error = Diagnostic{warnings.file(), outcome.position, outcome.message};
       break;
   }
+}
+
+XmlParseOutcome XmlStream::parse_part(ByteSource& source, XmlHandler& handler, const XmlPartStart* start,
+                                      XmlEndState* end) {
+  XmlScanner scanner(source, handler);
+  if (start) scanner.begin_part(*start);
+  handler.context_ = &scanner;
+  XmlParseOutcome out = scanner.run();
+  handler.context_ = nullptr;
+  if (end) *end = scanner.end_state();
+  return out;
 }
 
 XmlParseOutcome XmlStream::parse(ByteSource& source, XmlHandler& handler) {

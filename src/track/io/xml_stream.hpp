@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "track/diagnostics.hpp"
 #include "track/io/byte_source.hpp"
@@ -58,6 +59,21 @@ struct XmlParseOutcome {
 void record_xml_outcome(const XmlParseOutcome& outcome, std::size_t complete_points, ReadResult& result,
                         WarningCollector& warnings);
 
+// For parsing a big document in parts: where a later part starts, with the elements that are
+// open there (qualified names, outermost first). Its positions come out with absolute byte
+// offsets, and lines and columns counted from the part's first byte (line 1, column 1).
+struct XmlPartStart {
+  std::int64_t byte_offset = 0;
+  std::vector<std::string> open_elements;
+};
+
+// The state a parse ended in, for joining it to the next part.
+struct XmlEndState {
+  std::vector<std::string> open_elements;  // qualified names, outermost first
+  bool inside_markup = false;              // the input ended inside a tag, comment, ...
+  SourcePosition end;                      // the position just past the last byte
+};
+
 class XmlStream {
  public:
   static constexpr int kMaxDepth = 256;
@@ -65,6 +81,11 @@ class XmlStream {
 
   // Parses the whole source, calling `handler`. Never throws.
   static XmlParseOutcome parse(ByteSource& source, XmlHandler& handler);
+
+  // Parses one part of a UTF-8 document (no encoding conversion): from `start` when given
+  // (else from the document's start), reporting the end state into `end` when given.
+  static XmlParseOutcome parse_part(ByteSource& source, XmlHandler& handler, const XmlPartStart* start,
+                                    XmlEndState* end);
 };
 
 }  // namespace trailray::track
