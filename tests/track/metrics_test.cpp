@@ -8,27 +8,15 @@
 #include <vector>
 
 #include "geo/geodesic.hpp"
+#include "track/track_builders.hpp"
 
 namespace trailray::track {
 namespace {
 
-constexpr double kLat0 = 46.5;
-constexpr double kLon0 = 7.5;
-
-// A point `s` metres north of (kLat0, kLon0) along the meridian.
-TrackPoint north(double s, double ele = kMissing, double time = kMissing) {
-  TrackPoint p;
-  GeographicLib::Geodesic::WGS84().Direct(kLat0, kLon0, 0.0, s, p.lat, p.lon);
-  p.ele = ele;
-  p.time = time;
-  return p;
-}
-
-Track one_segment(std::vector<TrackPoint> pts) {
-  Track t;
-  t.segments.push_back(Segment{std::move(pts)});
-  return t;
-}
+using test::kLat0;
+using test::kLon0;
+using test::north;
+using test::one_segment;
 
 // Every channel finite or NaN, parallel to the points.
 void expect_sane(const Track& t, const TrackMetrics& m) {

@@ -137,6 +137,12 @@ class XmlScanner {
   bool collect_attributes();  // attrs_ -> attr_store_/attr_ptrs_; false on a bad reference
   void text(std::size_t from, std::size_t to);
   void materialize_text();
+  void close_element() {  // pops the innermost open element
+    names_.resize(starts_.back());
+    starts_.pop_back();
+    locals_.pop_back();
+    if (--depth_ == 0) root_closed_ = true;
+  }
   void error(const std::string& what, std::size_t at) {
     stop((saw_root_ ? "malformed XML: " : "not an XML document: ") + what, abs(at));
   }
@@ -371,10 +377,7 @@ XmlScanner::Step XmlScanner::end_tag(std::size_t p) {
   text_.clear();
   text_view_ = {};
   text_owned_ = false;
-  names_.resize(starts_.back());
-  starts_.pop_back();
-  locals_.pop_back();
-  if (--depth_ == 0) root_closed_ = true;
+  close_element();
   pos_ = n + 1;
   return Step::Done;
 }
@@ -517,10 +520,7 @@ XmlScanner::Step XmlScanner::start_tag(std::size_t p) {
   handler_.start_element(local, attributes);
   if (empty && !stopped_) {
     handler_.end_element(local, {});
-    names_.resize(starts_.back());
-    starts_.pop_back();
-    locals_.pop_back();
-    if (--depth_ == 0) root_closed_ = true;
+    close_element();
   }
   pos_ = n + 1;
   return Step::Done;
