@@ -38,6 +38,17 @@ class GzFileSource final : public ByteSource {
   std::string error_;
 };
 
+// One read() (offset < 0) or pread() at `offset`, retried when a signal interrupts it.
+std::ptrdiff_t read_fd(int fd, char* out, std::size_t max, std::int64_t offset, std::string& error) {
+  for (;;) {
+    const ssize_t n = offset < 0 ? ::read(fd, out, max) : ::pread(fd, out, max, offset);
+    if (n >= 0) return n;
+    if (errno == EINTR) continue;
+    error = std::strerror(errno);
+    return -1;
+  }
+}
+
 // Bytes [begin, end) of an open file, through pread: parts of one file read independently.
 class FileRangeSource final : public ByteSource {
  public:
@@ -48,16 +59,9 @@ class FileRangeSource final : public ByteSource {
     const std::size_t want = static_cast<std::size_t>(std::max<std::int64_t>(
         0, std::min<std::int64_t>(end_ - at_, static_cast<std::int64_t>(std::min<std::size_t>(max, 1u << 30)))));
     if (want == 0) return 0;
-    for (;;) {
-      ssize_t n = ::pread(*fd_, out, want, at_);
-      if (n >= 0) {
-        at_ += n;
-        return n;
-      }
-      if (errno == EINTR) continue;
-      error_ = std::strerror(errno);
-      return -1;
-    }
+    const std::ptrdiff_t n = read_fd(*fd_, out, want, at_, error_);
+    if (n > 0) at_ += n;
+    return n;
   }
   std::string error() const override { return error_; }
 
@@ -72,33 +76,24 @@ class FileRangeSource final : public ByteSource {
 class PlainFileSource final : public ByteSource {
  public:
   PlainFileSource(int fd, std::string path)
-      : ByteSource(path, path), fd_(fd), shared_fd_(new int(fd), [](const int* f) {
+      : ByteSource(path, path), fd_(new int(fd), [](const int* f) {
           close(*f);
           delete f;
         }) {}
 
   std::int64_t size() const override {
     struct stat st {};
-    return fstat(fd_, &st) == 0 && S_ISREG(st.st_mode) ? static_cast<std::int64_t>(st.st_size) : -1;
+    return fstat(*fd_, &st) == 0 && S_ISREG(st.st_mode) ? static_cast<std::int64_t>(st.st_size) : -1;
   }
   std::unique_ptr<ByteSource> range(std::int64_t begin, std::int64_t end) const override {
-    return std::make_unique<FileRangeSource>(shared_fd_, begin, end, path());
+    return std::make_unique<FileRangeSource>(fd_, begin, end, path());
   }
 
-  std::ptrdiff_t read(char* out, std::size_t max) override {
-    for (;;) {
-      ssize_t n = ::read(fd_, out, max);
-      if (n >= 0) return n;
-      if (errno == EINTR) continue;
-      error_ = std::strerror(errno);
-      return -1;
-    }
-  }
+  std::ptrdiff_t read(char* out, std::size_t max) override { return read_fd(*fd_, out, max, -1, error_); }
   std::string error() const override { return error_; }
 
  private:
-  int fd_;
-  std::shared_ptr<const int> shared_fd_;  // closes fd_ once this and every range are gone
+  std::shared_ptr<const int> fd_;  // closed once this source and every range of it are gone
   std::string error_;
 };
 
@@ -111,23 +106,23 @@ class MemorySource final : public ByteSource {
     pos_ += n;
     return static_cast<std::ptrdiff_t>(n);
   }
-  std::string error() const override { return error_; }
+  std::string error() const override { return {}; }  // memory never fails to read
 
  private:
   std::string data_;
   std::size_t pos_ = 0;
-  std::string error_;
 };
 
 bool is_gzip(const std::string& d) {
   return d.size() >= 2 && static_cast<unsigned char>(d[0]) == 0x1f && static_cast<unsigned char>(d[1]) == 0x8b;
 }
 
-std::string gunzip(const std::string& in, bool& ok) {
+// Decompresses as much as `in` holds: a stream cut short keeps what came before the cut, and
+// the format reader then reports the cut.
+std::string gunzip(const std::string& in) {
   std::string out;
   z_stream zs{};
-  ok = inflateInit2(&zs, 16 + MAX_WBITS) == Z_OK;
-  if (!ok) return out;
+  if (inflateInit2(&zs, 16 + MAX_WBITS) != Z_OK) return out;
   zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
   zs.avail_in = static_cast<uInt>(in.size());
   char buf[65536];
@@ -139,7 +134,6 @@ std::string gunzip(const std::string& in, bool& ok) {
     out.append(buf, sizeof buf - zs.avail_out);
     if (rc == Z_BUF_ERROR && zs.avail_in == 0) break;  // cut short: keep what we have
   }
-  ok = rc == Z_STREAM_END || rc == Z_BUF_ERROR;
   inflateEnd(&zs);
   return out;
 }
@@ -180,11 +174,7 @@ std::unique_ptr<ByteSource> ByteSource::open(const std::string& path, std::strin
 }
 
 std::unique_ptr<ByteSource> ByteSource::from_memory(std::string data, std::string display_name) {
-  if (is_gzip(data)) {
-    bool ok = false;
-    std::string plain = gunzip(data, ok);
-    data = std::move(plain);
-  }
+  if (is_gzip(data)) data = gunzip(data);
   return std::unique_ptr<ByteSource>(new MemorySource(std::move(data), std::move(display_name)));
 }
 

@@ -251,8 +251,6 @@ class GpxHandler final : public XmlHandler {
   std::size_t complete_points_ = 0;
 };
 
-}  // namespace
-
 // Appends the second half's content to the first's: its first segment continues the first
 // half's last one, its first track the last track.
 void join_halves(TrackFile& first, TrackFile& second) {
@@ -272,6 +270,8 @@ void join_halves(TrackFile& first, TrackFile& second) {
   if (first.metadata.description.empty()) first.metadata.description = second.metadata.description;
   if (std::isnan(first.metadata.time)) first.metadata.time = second.metadata.time;
 }
+
+}  // namespace
 
 // A big plain GPX file is read in two halves at once (two cores): the second half starts at the
 // first "<trkpt" after the middle, parsed as if inside gpx/trk/trkseg. When the first half does
