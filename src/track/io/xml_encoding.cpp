@@ -178,43 +178,63 @@ std::string declared_encoding(std::string_view head) {
 
 }  // namespace
 
-bool is_utf8_document(std::string_view head) {
+namespace {
+
+enum class Encoding { Utf8, Utf16Le, Utf16BomLe, Utf16Be, Utf16BomBe, Latin1, Latin9, Cp1252, Unsupported };
+
+// How a document starting with `head` is read; `declared` is its XML declaration's encoding.
+Encoding classify(std::string_view head, std::string& declared) {
   auto byte = [&](std::size_t i) { return i < head.size() ? static_cast<unsigned char>(head[i]) : 0u; };
-  if ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF)) return false;
-  if (byte(0) == 0 || byte(1) == 0) return false;  // UTF-16 without a BOM
-  if (head.substr(0, 3) == "\xEF\xBB\xBF") return true;
-  const std::string enc = declared_encoding(head);
-  return enc.empty() || enc == "utf-8" || enc == "utf8" || enc == "us-ascii" || enc == "ascii";
+  if (byte(0) == 0xFF && byte(1) == 0xFE) return Encoding::Utf16BomLe;
+  if (byte(0) == 0xFE && byte(1) == 0xFF) return Encoding::Utf16BomBe;
+  if (byte(0) == '<' && byte(1) == 0 && byte(2) == '?' && byte(3) == 0) return Encoding::Utf16Le;
+  if (byte(0) == 0 && byte(1) == '<' && byte(2) == 0 && byte(3) == '?') return Encoding::Utf16Be;
+  if (head.substr(0, 3) == "\xEF\xBB\xBF") return Encoding::Utf8;  // UTF-8 BOM: the scanner skips it
+  declared = declared_encoding(head);
+  const std::string& enc = declared;
+  if (enc.empty() || enc == "utf-8" || enc == "utf8" || enc == "us-ascii" || enc == "ascii") return Encoding::Utf8;
+  if (enc == "utf-16" || enc == "utf-16le" || enc == "utf-16be") return Encoding::Utf8;  // declared, yet 8-bit
+  if (enc == "iso-8859-1" || enc == "latin1" || enc == "latin-1" || enc == "iso8859-1" || enc == "l1")
+    return Encoding::Latin1;
+  if (enc == "iso-8859-15" || enc == "latin9" || enc == "latin-9") return Encoding::Latin9;
+  if (enc == "windows-1252" || enc == "cp1252") return Encoding::Cp1252;
+  return Encoding::Unsupported;
+}
+
+}  // namespace
+
+bool is_utf8_document(std::string_view head) {
+  std::string declared;
+  return classify(head, declared) == Encoding::Utf8;
 }
 
 std::unique_ptr<ByteSource> utf8_view(ByteSource& source, std::string& error) {
-  std::string_view head = source.peek(512);
-  auto byte = [&](std::size_t i) { return i < head.size() ? static_cast<unsigned char>(head[i]) : 0u; };
-  if (byte(0) == 0xFF && byte(1) == 0xFE) {
-    char skip[2];
-    source.next(skip, 2);
-    return std::make_unique<Utf16Source>(source, false);
+  std::string declared;
+  const Encoding encoding = classify(source.peek(512), declared);
+  char bom[2];
+  switch (encoding) {
+    case Encoding::Utf8:
+      return nullptr;
+    case Encoding::Utf16BomLe:
+      source.next(bom, 2);
+      return std::make_unique<Utf16Source>(source, false);
+    case Encoding::Utf16BomBe:
+      source.next(bom, 2);
+      return std::make_unique<Utf16Source>(source, true);
+    case Encoding::Utf16Le:
+      return std::make_unique<Utf16Source>(source, false);
+    case Encoding::Utf16Be:
+      return std::make_unique<Utf16Source>(source, true);
+    case Encoding::Latin1:
+      return std::make_unique<SingleByteSource>(source, false, false);
+    case Encoding::Latin9:
+      return std::make_unique<SingleByteSource>(source, false, true);
+    case Encoding::Cp1252:
+      return std::make_unique<SingleByteSource>(source, true, false);
+    case Encoding::Unsupported:
+      break;
   }
-  if (byte(0) == 0xFE && byte(1) == 0xFF) {
-    char skip[2];
-    source.next(skip, 2);
-    return std::make_unique<Utf16Source>(source, true);
-  }
-  if (byte(0) == '<' && byte(1) == 0 && byte(2) == '?' && byte(3) == 0)
-    return std::make_unique<Utf16Source>(source, false);
-  if (byte(0) == 0 && byte(1) == '<' && byte(2) == 0 && byte(3) == '?')
-    return std::make_unique<Utf16Source>(source, true);
-  std::string_view text = head;
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") return nullptr;  // UTF-8 BOM: the scanner skips it
-  const std::string enc = declared_encoding(text);
-  if (enc.empty() || enc == "utf-8" || enc == "utf8" || enc == "us-ascii" || enc == "ascii") return nullptr;
-  if (enc == "utf-16" || enc == "utf-16le" || enc == "utf-16be") return nullptr;  // declared, yet 8-bit: read as UTF-8
-  if (enc == "iso-8859-1" || enc == "latin1" || enc == "latin-1" || enc == "iso8859-1" || enc == "l1")
-    return std::make_unique<SingleByteSource>(source, false, false);
-  if (enc == "iso-8859-15" || enc == "latin9" || enc == "latin-9")
-    return std::make_unique<SingleByteSource>(source, false, true);
-  if (enc == "windows-1252" || enc == "cp1252") return std::make_unique<SingleByteSource>(source, true, false);
-  error = "unsupported XML encoding '" + enc + "' (UTF-8, UTF-16, ISO-8859-1/15 and Windows-1252 are read)";
+  error = "unsupported XML encoding '" + declared + "' (UTF-8, UTF-16, ISO-8859-1/15 and Windows-1252 are read)";
   return nullptr;
 }
 

@@ -137,6 +137,11 @@ class XmlScanner {
   bool collect_attributes();  // attrs_ -> attr_store_/attr_ptrs_; false on a bad reference
   void text(std::size_t from, std::size_t to);
   void materialize_text();
+  void reset_text() {  // a new element starts, or one ended: its text is handed out
+    text_.clear();
+    text_view_ = {};
+    text_owned_ = false;
+  }
   void close_element() {  // pops the innermost open element
     names_.resize(starts_.back());
     starts_.pop_back();
@@ -374,9 +379,7 @@ XmlScanner::Step XmlScanner::end_tag(std::size_t p) {
   event_abs_ = abs(p);
   std::string_view body = text_owned_ ? std::string_view(text_) : text_view_;
   handler_.end_element(std::string_view(names_).substr(locals_.back()), body);
-  text_.clear();
-  text_view_ = {};
-  text_owned_ = false;
+  reset_text();
   close_element();
   pos_ = n + 1;
   return Step::Done;
@@ -514,9 +517,7 @@ XmlScanner::Step XmlScanner::start_tag(std::size_t p) {
   locals_.push_back(static_cast<std::uint32_t>(names_.size() + (local.data() - name.data())));
   names_.append(name);
   ++depth_;
-  text_.clear();
-  text_view_ = {};
-  text_owned_ = false;
+  reset_text();
   handler_.start_element(local, attributes);
   if (empty && !stopped_) {
     handler_.end_element(local, {});
