@@ -17,10 +17,20 @@ packages=(
   libcli11-dev           # command-line parsing (app/)
   libfmt-dev             # formatting of tables and messages
   nlohmann-json3-dev     # correct JSON output of `stats --json`
+  libgdal-dev            # DEM rasters of any format and CRS, warped to Web Mercator tiles (terrain/)
+  libcurl4-openssl-dev   # http(s) tile servers: parallel requests, timeouts, TLS (terrain/)
+  libsqlite3-dev         # MBTiles files (terrain/)
+  libpng-dev             # PNG height and imagery tiles, 8 and 16 bit (terrain/)
+  libturbojpeg0-dev      # JPEG imagery tiles (terrain/)
+  libwebp-dev            # WebP tiles (terrain/)
+  libtomlplusplus-dev    # ~/.config/trailray/config.toml (terrain sources, cache size)
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
   libclang-rt-14-dev     # libFuzzer / sanitizer runtimes for clang 14
+  libcpp-httplib-dev     # a local tile server on 127.0.0.1 in the terrain fault tests
+  python3-gdal           # conformance test: GDAL's own bilinear heights at track points
+  sqlite3                # building MBTiles fixtures in tests
   # --- conformance and benchmarks (peers we compare against) ---
   python3-gpxpy          # conformance test: gpxpy's lengths and durations on every GPX in shared/data
   gpsbabel               # benchmark peer
