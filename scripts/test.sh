@@ -9,7 +9,7 @@ jobs=$(nproc)
 scripts/setup.sh
 
 echo "== Release build, all tests"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_TESTS=ON -DTRAILRAY_WERROR=ON >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_TESTS=ON -DTRAILRAY_BENCH=ON -DTRAILRAY_WERROR=ON >/dev/null
 cmake --build build
 ctest --test-dir build --no-tests=error --output-on-failure -j "$jobs"
 
