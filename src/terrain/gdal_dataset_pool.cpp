@@ -1,0 +1,55 @@
+#include "terrain/gdal_dataset_pool.hpp"
+
+#include <algorithm>
+
+#include "terrain/gdal_errors.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::terrain::gdal_detail {
+
+GDALDatasetUniquePtr open_raster_read_only(const std::string& path) {
+  ensure_gdal_registered();
+  GdalErrorCapture errors;
+  GDALDatasetUniquePtr dataset(
+      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR));
+  if (!dataset) throw SourceError(path + ": cannot open as a raster: " + errors.message());
+  return dataset;
+}
+
+DatasetPool::DatasetPool(std::string path, std::size_t max_idle)
+    : path_(std::move(path)), max_idle_(std::max<std::size_t>(max_idle, 1)) {
+  idle_.push_back(open_raster_read_only(path_));
+}
+
+DatasetPool::~DatasetPool() {
+  // Closing flushes nothing (read-only), but GDAL may still have something to say about it.
+  GdalErrorCapture errors;
+  idle_.clear();
+}
+
+DatasetPool::Lease DatasetPool::acquire() {
+  {
+    std::lock_guard lock(mutex_);
+    if (!idle_.empty()) {
+      GDALDatasetUniquePtr dataset = std::move(idle_.back());
+      idle_.pop_back();
+      return Lease(*this, std::move(dataset));
+    }
+  }
+  // Opened outside the lock: other callers keep borrowing idle handles meanwhile.
+  return Lease(*this, open_raster_read_only(path_));
+}
+
+void DatasetPool::give_back(GDALDatasetUniquePtr dataset) {
+  {
+    std::lock_guard lock(mutex_);
+    if (idle_.size() < max_idle_) {
+      idle_.push_back(std::move(dataset));
+      return;
+    }
+  }
+  GdalErrorCapture errors;
+  dataset.reset();
+}
+
+}  // namespace trailray::terrain::gdal_detail

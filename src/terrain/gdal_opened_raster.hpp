@@ -1,0 +1,39 @@
+#pragma once
+// What both GDAL sources hold for one raster file: its pool of read-only handles and its
+// georeferencing, with what follows from them (the SourceInfo basics, whether a tile can meet
+// the raster). Internal to the terrain library.
+
+#include <cstddef>
+#include <string>
+
+#include "terrain/gdal_dataset_pool.hpp"
+#include "terrain/gdal_georef.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::terrain::gdal_detail {
+
+class OpenedRaster {
+ public:
+  // Throws SourceError naming the path (cannot open, no band, no georeferencing).
+  OpenedRaster(const std::string& path, std::size_t max_idle_datasets);
+
+  const std::string& path() const { return pool_.path(); }
+  DatasetPool& pool() { return pool_; }
+  const RasterGeoref& georef() const { return georef_; }
+
+  // name, zooms, bounds and format ("gdal:<driver>").
+  SourceInfo basic_info() const;
+
+  // False when the tile lies clearly outside the raster's extent (then warping it would only
+  // produce nodata); true when it may overlap, or when the extent is unknown.
+  bool may_cover(const TileId& tile) const;
+
+  // "<path> <z/x/y>: <what>", the form of TileResult::error.
+  std::string tile_error(const TileId& tile, const std::string& what) const;
+
+ private:
+  DatasetPool pool_;
+  RasterGeoref georef_;
+};
+
+}  // namespace trailray::terrain::gdal_detail

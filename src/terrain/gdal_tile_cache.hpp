@@ -1,0 +1,58 @@
+#pragma once
+// The warped tiles a GDAL source keeps: least recently used first out, within a byte budget.
+// Thread-safe. Internal to the terrain library.
+
+#include <cstddef>
+#include <list>
+#include <mutex>
+#include <optional>
+#include <unordered_map>
+#include <utility>
+
+#include "terrain/tile.hpp"
+
+namespace trailray::terrain::gdal_detail {
+
+// Tile: HeightTile or ImageTile (anything with an id and byte_size()).
+template <class Tile>
+class WarpedTileCache {
+ public:
+  explicit WarpedTileCache(std::size_t budget_bytes) : budget_bytes_(budget_bytes) {}
+
+  // A copy of the cached tile (the caller owns its result; a copy costs far less than a warp).
+  std::optional<Tile> find(const TileId& id) {
+    std::lock_guard lock(mutex_);
+    auto found = index_.find(id);
+    if (found == index_.end()) return std::nullopt;
+    tiles_.splice(tiles_.begin(), tiles_, found->second);
+    return tiles_.front();
+  }
+
+  void insert(const Tile& tile) {
+    const std::size_t size = tile.byte_size();
+    if (size > budget_bytes_) return;
+    std::lock_guard lock(mutex_);
+    if (auto found = index_.find(tile.id); found != index_.end()) {
+      used_bytes_ -= found->second->byte_size();
+      tiles_.erase(found->second);
+      index_.erase(found);
+    }
+    tiles_.push_front(tile);
+    index_.emplace(tile.id, tiles_.begin());
+    used_bytes_ += size;
+    while (used_bytes_ > budget_bytes_) {
+      used_bytes_ -= tiles_.back().byte_size();
+      index_.erase(tiles_.back().id);
+      tiles_.pop_back();
+    }
+  }
+
+ private:
+  const std::size_t budget_bytes_;
+  std::mutex mutex_;
+  std::list<Tile> tiles_;  // most recently used first
+  std::unordered_map<TileId, typename std::list<Tile>::iterator> index_;
+  std::size_t used_bytes_ = 0;
+};
+
+}  // namespace trailray::terrain::gdal_detail
