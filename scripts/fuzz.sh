@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# Fuzzes the track readers with libFuzzer (clang, ASan + UBSan).
+# Fuzzes the track readers and the tile decoders with libFuzzer (clang, ASan + UBSan).
 #
 #   scripts/fuzz.sh [SECONDS_PER_TARGET]      (default 60; 0 = regression inputs only)
 #
-# 1. configures and builds build-fuzz (clang, -DTRAILRAY_FUZZ=ON) -> fuzz_gpx, fuzz_igc, fuzz_tcx
+# 1. configures and builds build-fuzz (clang, -DTRAILRAY_FUZZ=ON) -> fuzz_gpx, fuzz_igc, fuzz_tcx, fuzz_tile
 # 2. regressions: runs each fuzzer once over every file in tests/fuzz/regressions/<format>/
 # 3. fuzzes each target for SECONDS_PER_TARGET. The corpus lives in fuzz-corpus/<format>/
 #    (git-ignored, kept between runs); seeds are read in place from ../shared/data/<format>/
-#    (never copied) and from the regression inputs.
+#    (../shared/data/tiles/ for tile; never copied) and from the regression inputs.
 # A crash, hang (-timeout=10) or excess memory (-rss_limit_mb=2048) is copied into
 # tests/fuzz/regressions/<format>/ and makes the script exit 1 after all targets have run.
-# Environment: FUZZ_TARGETS="gpx igc tcx" picks targets; FUZZ_MAX_LEN (default 1048576) caps
+# Environment: FUZZ_TARGETS="gpx igc tcx tile" picks targets; FUZZ_MAX_LEN (default 1048576) caps
 # input size -- the real files make MB-sized inputs, which run at ~20-100 exec/s under
 # ASan, so FUZZ_MAX_LEN=16384 explores much faster. One process per target, one at a time.
 set -uo pipefail
@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.." || exit 2
 ROOT=$(pwd)
 
 SECONDS_PER_TARGET=${1:-60}
-TARGETS=${FUZZ_TARGETS:-gpx igc tcx}
+TARGETS=${FUZZ_TARGETS:-gpx igc tcx tile}
 BUILD=build-fuzz
 DATA="$ROOT/../shared/data"
 REGRESSIONS="$ROOT/tests/fuzz/regressions"
@@ -110,10 +110,12 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
     fi
     mkdir -p "$CORPUS/$fmt" "$ARTIFACTS/$fmt" "$REGRESSIONS/$fmt"
     seeds=()
-    if [ -d "$DATA/$fmt" ]; then
-      seeds+=("$DATA/$fmt")
+    seed_dir="$DATA/$fmt"
+    [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
+    if [ -d "$seed_dir" ]; then
+      seeds+=("$seed_dir")
     else
-      echo "$fmt: $DATA/$fmt absent; not seeding from shared data"
+      echo "$fmt: $seed_dir absent; not seeding from shared data"
     fi
     seeds+=("$REGRESSIONS/$fmt")
     dict=()

@@ -1,0 +1,74 @@
+// libFuzzer target: arbitrary bytes as a tile, through decode_height_tile in every encoding
+// (PNG/JPEG/WebP through our codecs, TIFF through GDAL for float) and decode_image_tile. Each
+// must either throw TileDecodeError with a message or return a tile that keeps the documented
+// contract (height_decode.hpp, tile.hpp); anything else aborts.
+//
+// In the fuzz build FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION makes libpng ignore CRCs and
+// Adler-32 checksums (image_codec.cpp), so mutated PNGs reach the pixel code; replayed in an
+// ordinary build (tests/fuzz/regressions/tile/) such inputs may stop at the checksum instead.
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <span>
+
+#include "terrain/height_decode.hpp"
+
+namespace {
+
+using namespace trailray::terrain;
+
+void check(bool ok, const char* what) {
+  if (!ok) {
+    std::fprintf(stderr, "fuzz: contract violated: %s\n", what);
+    std::abort();
+  }
+}
+
+void check_height_tile(const HeightTile& t, const TileId& id) {
+  check(t.id == id, "height tile with another id");
+  check(t.width == t.height, "height tile not square");
+  check(t.width >= kMinHeightTileSize && t.width <= kMaxHeightTileSize, "height tile of an insane size");
+  check(t.heights.size() == std::size_t{t.width} * t.height, "height count differs from width x height");
+  check(t.layout == layout_for_size(t.width), "layout does not follow the size");
+  std::size_t valid = 0, plausible = 0;
+  for (float h : t.heights) {
+    if (std::isnan(h)) continue;
+    check(std::isfinite(h), "an infinite height");
+    check(h >= t.min_m && h <= t.max_m, "a height outside [min_m, max_m]");
+    ++valid;
+    if (h >= kPlausibleMinHeightM && h <= kPlausibleMaxHeightM) ++plausible;
+  }
+  check(t.has_data() == (valid > 0), "has_data() disagrees with the samples");
+  check(plausible * 2 >= valid, "mostly implausible heights were accepted");
+}
+
+void check_image_tile(const ImageTile& t, const TileId& id) {
+  check(t.id == id, "image tile with another id");
+  check(t.width >= 1 && t.width <= kMaxImageDimension && t.height >= 1 && t.height <= kMaxImageDimension,
+        "image tile of an insane size");
+  check(t.rgba.size() == std::size_t{t.width} * t.height * 4, "rgba size differs from width x height x 4");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::span<const unsigned char> bytes(data, size);
+  const TileId id{5, 17, 11};
+  for (HeightEncoding encoding :
+       {HeightEncoding::terrarium, HeightEncoding::mapbox, HeightEncoding::alpinemaps, HeightEncoding::float32}) {
+    try {
+      check_height_tile(decode_height_tile(bytes, encoding, id), id);
+    } catch (const TileDecodeError& e) {
+      check(e.what()[0] != '\0', "a decode error without a message");
+    }
+  }
+  try {
+    check_image_tile(decode_image_tile(bytes, id), id);
+  } catch (const TileDecodeError& e) {
+    check(e.what()[0] != '\0', "a decode error without a message");
+  }
+  return 0;
+}
