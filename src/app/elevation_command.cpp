@@ -1,0 +1,179 @@
+#include "app/elevation_command.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "app/elevation_report.hpp"
+#include "app/terrain_options.hpp"
+#include "app/track_options.hpp"
+#include "terrain/height_sampler.hpp"
+#include "terrain/source_factory.hpp"
+#include "track/io/gpx_writer.hpp"
+#include "track/io/load.hpp"
+
+namespace trailray::app {
+namespace {
+
+struct ElevationArgs {
+  std::string file;
+  bool json = false, csv = false, replace = false, force = false, quiet = false;
+  std::string output;
+  TrackOptions track;
+  TerrainOptions terrain;
+};
+
+// Every point the heights are wanted for, in file order: track points, then route points, then
+// waypoints (those only for --replace: the report is about the way travelled).
+std::vector<track::TrackPoint*> points_of(track::TrackFile& f, bool with_waypoints) {
+  std::vector<track::TrackPoint*> out;
+  for (auto& t : f.tracks)
+    for (auto& s : t.segments)
+      for (auto& p : s.points) out.push_back(&p);
+  for (auto& r : f.routes)
+    for (auto& p : r.points) out.push_back(&p);
+  if (with_waypoints)
+    for (auto& w : f.waypoints) out.push_back(&w.point);
+  return out;
+}
+
+std::vector<ElevationPoint> report_points(const track::TrackFile& f, const std::vector<double>& terrain) {
+  std::vector<ElevationPoint> out;
+  std::size_t k = 0;
+  auto add = [&](std::size_t track, std::size_t segment, const track::TrackPoint& p) {
+    out.push_back({track, segment, p.lat, p.lon, p.ele, terrain[k++]});
+  };
+  for (std::size_t t = 0; t < f.tracks.size(); ++t)
+    for (std::size_t s = 0; s < f.tracks[t].segments.size(); ++s)
+      for (const auto& p : f.tracks[t].segments[s].points) add(t, s, p);
+  for (std::size_t r = 0; r < f.routes.size(); ++r)
+    for (const auto& p : f.routes[r].points) add(f.tracks.size() + r, 0, p);
+  return out;
+}
+
+// Writes next to the target and renames, so OUT is never half written.
+void write_gpx_atomically(const track::TrackFile& f, const std::filesystem::path& out) {
+  std::filesystem::path tmp = out;
+  tmp += fmt::format(".tmp-{}", ::getpid());
+  {
+    std::ofstream s(tmp, std::ios::binary | std::ios::trunc);
+    if (!s) throw std::runtime_error(out.string() + ": cannot write (" + std::strerror(errno) + ")");
+    track::write_gpx(f, s);
+    s.flush();
+    if (!s) {
+      std::filesystem::remove(tmp);
+      throw std::runtime_error(out.string() + ": write failed");
+    }
+  }
+  std::filesystem::rename(tmp, out);
+}
+
+int run_elevation(const ElevationArgs& a) {
+  if (a.replace && a.output.empty()) throw CLI::ValidationError("--replace", "needs -o OUT.gpx (the input is never modified)");
+  if (!a.output.empty() && !a.replace) throw CLI::ValidationError("-o", "is for --replace");
+  if (a.replace) {
+    std::error_code ec;
+    if (a.file != "-" && std::filesystem::equivalent(a.file, a.output, ec))
+      throw std::runtime_error(a.output + ": is the input file; trailray never modifies its input");
+    if (std::filesystem::exists(a.output) && !a.force)
+      throw std::runtime_error(a.output + ": already exists (--force replaces it)");
+  }
+
+  track::ReadResult read = track::load_track_file(a.file, a.track.read);
+  for (const auto& w : read.warnings) fmt::print(stderr, "trailray: warning: {}\n", w.to_string());
+  if (read.error) {
+    fmt::print(stderr, "trailray: error: {}\n", read.error->to_string());
+    return 1;
+  }
+  track::TrackFile& file = read.file;
+
+  const terrain::TerrainConfig config = resolve_terrain_config(a.terrain);
+  terrain::SourceContext context{config.network, config.cache,
+                                 [](std::string w) { fmt::print(stderr, "trailray: warning: terrain: {}\n", w); }};
+  std::unique_ptr<terrain::HeightSource> source = terrain::open_height_source(config.terrain, context);
+  const std::string source_name = source ? source->info().name : std::string("none");
+
+  const std::vector<track::TrackPoint*> points = points_of(file, a.replace);
+  std::vector<geo::LatLon> where;
+  where.reserve(points.size());
+  for (const auto* p : points) where.push_back({p->lat, p->lon});
+
+  std::vector<double> heights(points.size(), std::numeric_limits<double>::quiet_NaN());
+  if (source) {
+    terrain::HeightSamplerOptions options;
+    if (a.terrain.terrain_zoom) options.zoom = *a.terrain.terrain_zoom;
+    // Network sources wait on round trips, not on the CPU.
+    if (source->info().name.starts_with("http")) options.threads = static_cast<unsigned>(config.network.max_parallel) + 2;
+    terrain::HeightSampler sampler(*source, options);
+    const bool progress = !a.quiet && isatty(STDERR_FILENO);
+    heights = sampler.sample(where, [&](const terrain::LoadProgress& p, std::size_t batch, std::size_t batches) {
+      if (!progress) return;
+      fmt::print(stderr, "\rterrain tiles: {}/{} loaded{}{}\x1b[K", p.loaded + p.no_data, p.wanted,
+                 p.failed ? fmt::format(", {} failed", p.failed) : "",
+                 batches > 1 ? fmt::format(" (part {}/{})", batch + 1, batches) : "");
+    });
+    if (progress) fmt::print(stderr, "\r\x1b[K");
+    const terrain::SamplingReport& r = sampler.report();
+    if (r.tiles_failed > 0)
+      fmt::print(stderr, "trailray: warning: terrain: {} tile{} failed; first: {}\n", r.tiles_failed,
+                 r.tiles_failed == 1 ? "" : "s", r.errors.empty() ? "?" : r.errors.front());
+    if (!points.empty() && r.with_height == 0)
+      fmt::print(stderr, "trailray: warning: terrain: {} has no data at any point of {}\n", source_name, a.file);
+    else if (r.with_height < points.size())
+      fmt::print(stderr, "trailray: warning: terrain: no data at {} of {} points\n", points.size() - r.with_height,
+                 points.size());
+  }
+
+  if (a.replace) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (!std::isnan(heights[i])) points[i]->ele = heights[i];
+    write_gpx_atomically(file, a.output);
+    return 0;
+  }
+
+  ElevationReport report{a.file == "-" ? "<stdin>" : a.file, source_name, report_points(file, heights), {}};
+  report.summary = summarize(report.points);
+  if (a.json)
+    std::cout << elevation_json(report).dump(2) << '\n';
+  else if (a.csv)
+    std::cout << elevation_csv(report);
+  else
+    std::cout << elevation_table(report);
+  return 0;
+}
+
+}  // namespace
+
+void add_elevation_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ElevationArgs>();
+  CLI::App* cmd = app.add_subcommand("elevation", "Terrain height and height above ground at every point of a track");
+  cmd->footer(
+      "Per point: lat, lon, ele_m (recorded), terrain_m (from --terrain), agl_m = ele_m - terrain_m.\n"
+      "The summary's mean/median offset is how far a barometer drifted (hikes) or how high a flight\n"
+      "was above the ground. Heights are bilinear between the source's samples: a raster file's own\n"
+      "grid, or a tile source's finest level (see README, \"Terrain sources\").\n"
+      "--replace -o OUT.gpx writes a copy with the terrain heights as elevations (GPX 1.1).\n"
+      "Exit status: 0 done, 1 a file or source could not be read, 2 a usage error.");
+  cmd->add_option("TRACK", args->file, "GPX, IGC or TCX file (gzip too), or - for standard input")
+      ->required()
+      ->type_name("FILE");
+  auto* json = cmd->add_flag("--json", args->json, "Print one JSON document: path, points, summary");
+  auto* csv = cmd->add_flag("--csv", args->csv, "Print one CSV row per point");
+  json->excludes(csv);
+  auto* replace = cmd->add_flag("--replace", args->replace, "Write a copy of the track with terrain elevations (needs -o)");
+  replace->excludes(json)->excludes(csv);
+  cmd->add_option("-o,--output", args->output, "Output GPX file for --replace")->type_name("OUT.gpx");
+  cmd->add_flag("--force", args->force, "Let --replace overwrite an existing OUT");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress display");
+  add_terrain_options(*cmd, args->terrain);
+  add_track_options(*cmd, args->track);
+  cmd->callback([args, &exit_code] { exit_code = run_elevation(*args); });
+}
+
+}  // namespace trailray::app

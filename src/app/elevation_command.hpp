@@ -1,0 +1,10 @@
+#pragma once
+// `trailray elevation`: terrain height and height above ground at every point of a track.
+
+#include <CLI/CLI.hpp>
+
+namespace trailray::app {
+
+void add_elevation_command(CLI::App& app, int& exit_code);
+
+}  // namespace trailray::app

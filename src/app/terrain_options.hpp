@@ -1,0 +1,28 @@
+#pragma once
+// Options about terrain and imagery sources, spelled the same in every command (DESIGN.md):
+// --terrain, --terrain-encoding, --terrain-scheme, --terrain-zoom, --offline, --config. They
+// override the configuration file (terrain/terrain_config.hpp), which overrides the defaults.
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "terrain/terrain_config.hpp"
+
+namespace trailray::app {
+
+struct TerrainOptions {
+  std::string config_file;
+  std::string terrain;
+  std::string terrain_encoding;
+  std::string terrain_scheme;
+  std::optional<int> terrain_zoom;
+  bool offline = false;
+};
+
+void add_terrain_options(CLI::App& command, TerrainOptions& options);
+
+// The configuration file (if any) with the flags applied. Throws terrain::ConfigError.
+terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& options);
+
+}  // namespace trailray::app

@@ -1,0 +1,40 @@
+#pragma once
+// Turns a source as the user spells it (DESIGN.md "Terrain sources": --terrain / --imagery or
+// the config file) into a HeightSource or an ImagerySource:
+//   none                     -> no source (nullptr)
+//   http://... / https://... -> HttpTileSource (URL template, disk cache) + decoder
+//   *.mbtiles                -> MbtilesTileSource + decoder
+//   a folder                 -> DirectoryTileSource ({z}/{x}/{y}.png|webp|jpg) + decoder
+//   any other file           -> a GDAL raster (GeoTIFF, .hgt, VRT, .img, ...; any CRS)
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "terrain/terrain_config.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::terrain {
+
+enum class SourceKind { none, http, mbtiles, directory, raster };
+
+// What `spec` names, from its spelling and (for paths) what is on disk. Throws SourceError for
+// an empty spec or a path that does not exist.
+SourceKind classify_source(std::string_view spec);
+
+struct SourceContext {
+  NetworkSettings network;
+  CacheSettings cache;
+  std::function<void(std::string)> warn;  // one-off warnings (server unreachable, ...); may be empty
+};
+
+// Throws SourceError (naming the source) when it cannot be opened.
+std::unique_ptr<HeightSource> open_height_source(const SourceSettings& settings, const SourceContext& context);
+std::unique_ptr<ImagerySource> open_imagery_source(const SourceSettings& settings, const SourceContext& context);
+
+// The encoding a tile source's name suggests ("terrarium", "terrain-rgb"/"mapbox", "alpinemaps"
+// in a URL or path), when it suggests one.
+std::optional<HeightEncoding> encoding_from_name(std::string_view spec);
+
+}  // namespace trailray::terrain
