@@ -22,7 +22,8 @@ void check_keys(const std::filesystem::path& file, const toml::table& table, con
                 const std::string& section) {
   for (const auto& [key, value] : table)
     if (!known.contains(std::string(key.str())))
-      fail(file, value, "unknown key `" + std::string(key.str()) + "`" + (section.empty() ? "" : " in [" + section + "]"));
+      throw ConfigError(where(file, key.source()) + ": unknown key `" + std::string(key.str()) + "`" +
+                        (section.empty() ? "" : " in [" + section + "]"));
 }
 
 std::string get_string(const std::filesystem::path& file, const toml::node& node, const std::string& key) {
@@ -104,7 +105,8 @@ std::filesystem::path default_config_path() {
 
 TerrainConfig load_terrain_config(const std::filesystem::path& explicit_file) {
   TerrainConfig c = default_terrain_config();
-  const bool must_exist = !explicit_file.empty() || std::getenv("TRAILRAY_CONFIG") != nullptr;
+  const char* from_env = std::getenv("TRAILRAY_CONFIG");
+  const bool must_exist = !explicit_file.empty() || (from_env && *from_env);
   const std::filesystem::path file = explicit_file.empty() ? default_config_path() : explicit_file;
   if (file.empty()) return c;
   std::error_code ec;
