@@ -64,7 +64,13 @@ HttpTileSource::HttpTileSource(std::string_view url_template, HttpSourceOptions 
       client_(options_.client) {
   info_.name = template_.display();
   if (info_.format.empty()) info_.format = format_from_template(template_.display());
-  if (options_.use_disk_cache) cache_ = std::make_unique<DiskCache>(template_.display(), options_.cache);
+  if (options_.use_disk_cache) {
+    try {
+      cache_ = std::make_unique<DiskCache>(template_.display(), options_.cache);
+    } catch (const SourceError& e) {
+      warn_once(warned_cache_, template_.display() + ": tiles are not cached (" + e.what() + ")");
+    }
+  }
 }
 
 EncodedTile HttpTileSource::from_entry(const CacheEntry& entry) const {
@@ -81,14 +87,15 @@ void HttpTileSource::warn_once(std::atomic<bool>& flag, const std::string& messa
   options_.warn(message);
 }
 
-std::int64_t HttpTileSource::expiry_of(const HttpResponse& response, std::int64_t now) const {
+std::int64_t HttpTileSource::expiry_of(const HttpResponse& response, std::int64_t now,
+                                       std::chrono::seconds fallback) const {
   if (response.cache_control.no_cache) return now;  // stored, but stale at once: revalidated before each use
   if (response.cache_control.max_age_s) return now + *response.cache_control.max_age_s;
   if (response.expires) {
     // Expires is the server's clock: its distance from the server's Date is the lifetime.
     return response.date ? now + (*response.expires - *response.date) : *response.expires;
   }
-  return now + options_.default_max_age.count();
+  return now + fallback.count();
 }
 
 void HttpTileSource::store(const TileId& tile, const CacheEntryInfo& info, std::span<const unsigned char> payload) {
@@ -150,7 +157,7 @@ EncodedTile HttpTileSource::fetch(const TileId& tile, std::stop_token stop) {
     if (!revalidating) return failed(tile, "HTTP 304 to a request that was not conditional");
     CacheEntryInfo info = cached->info;
     info.fetched_at = now;
-    info.expires_at = expiry_of(response, now);
+    info.expires_at = expiry_of(response, now, options_.default_max_age);
     if (!response.etag.empty()) info.etag = response.etag;
     if (!response.last_modified.empty()) info.last_modified = response.last_modified;
     if (response.cache_control.no_store) {
@@ -166,7 +173,7 @@ EncodedTile HttpTileSource::fetch(const TileId& tile, std::stop_token stop) {
     } else {
       CacheEntryInfo info;
       info.fetched_at = now;
-      info.expires_at = expiry_of(response, now);
+      info.expires_at = expiry_of(response, now, options_.default_no_data_max_age);
       info.no_data = true;
       store(tile, info, {});
     }
@@ -183,7 +190,7 @@ EncodedTile HttpTileSource::fetch(const TileId& tile, std::stop_token stop) {
     } else {
       CacheEntryInfo info;
       info.fetched_at = now;
-      info.expires_at = expiry_of(response, now);
+      info.expires_at = expiry_of(response, now, options_.default_max_age);
       info.etag = response.etag;
       info.last_modified = response.last_modified;
       info.content_type = response.content_type;

@@ -13,6 +13,7 @@
 //                                       no further connection attempts (each would wait for the
 //                                       timeouts and retries again)
 //   offline                          -> the cache only, stale or not; missing -> no data
+//   cache folder not writable        -> fetched without caching (one warning)
 //
 // Freshness: Cache-Control max-age, else Expires (corrected by the server's Date for its
 // clock), else default_max_age; no-cache stores the tile stale, so it is revalidated each time.
@@ -46,7 +47,10 @@ struct HttpSourceOptions {
   DiskCacheOptions cache;  // folder (default: DiskCache::default_folder()) and size limit
   bool offline = false;    // never touch the network: the disk cache only
 
-  std::chrono::seconds default_max_age = std::chrono::hours(24 * 7);  // when the server says nothing
+  // How long an answer stays fresh when the server says nothing (no Cache-Control max-age, no
+  // Expires): a tile, and a "no data" answer (shorter: a 404 may also be a passing fault).
+  std::chrono::seconds default_max_age = std::chrono::hours(24 * 7);
+  std::chrono::seconds default_no_data_max_age = std::chrono::hours(24);
   std::chrono::seconds retry_unreachable_after{30};
 
   // An error message for bytes that are not a valid tile (the factory passes a decoder check);
@@ -64,7 +68,8 @@ struct HttpSourceOptions {
 
 class HttpTileSource : public EncodedTileSource {
  public:
-  // Throws SourceError for a bad template or a cache folder that cannot be created.
+  // Throws SourceError for a bad template. A cache folder that cannot be created is not fatal:
+  // the source works without a disk cache, and says so through `warn`.
   explicit HttpTileSource(std::string_view url_template, HttpSourceOptions options = {});
 
   const SourceInfo& info() const override { return info_; }
@@ -77,7 +82,7 @@ class HttpTileSource : public EncodedTileSource {
  private:
   EncodedTile from_entry(const CacheEntry& entry) const;
   EncodedTile failed(const TileId& tile, const std::string& what) const;
-  std::int64_t expiry_of(const HttpResponse& response, std::int64_t now) const;
+  std::int64_t expiry_of(const HttpResponse& response, std::int64_t now, std::chrono::seconds fallback) const;
   void store(const TileId& tile, const CacheEntryInfo& info, std::span<const unsigned char> payload);
   void warn_once(std::atomic<bool>& flag, const std::string& message) const;
 

@@ -105,7 +105,10 @@ TEST_F(HttpSourceTest, NotFoundIsNoDataAndRemembered) {
   EXPECT_EQ(fetch(source, TileId{10, 1, 2}).status, TileStatus::no_data);
   EXPECT_EQ(server_.request_count(), 1);  // the negative entry answered the second time
   ASSERT_EQ(cached_files().size(), 1u);
-  EXPECT_TRUE(source.disk_cache()->read(TileId{10, 1, 2})->info.no_data);
+  const std::optional<CacheEntry> entry = source.disk_cache()->read(TileId{10, 1, 2});
+  ASSERT_TRUE(entry);
+  EXPECT_TRUE(entry->info.no_data);
+  EXPECT_EQ(entry->info.expires_at - entry->info.fetched_at, 24 * 3600);  // no caching headers: a day
 
   HttpTileSource empty(url("empty"), options());
   EXPECT_EQ(fetch(empty, TileId{10, 1, 2}).status, TileStatus::no_data);  // 204
@@ -224,6 +227,24 @@ TEST_F(HttpSourceTest, StaleEntryWithEtagIsRevalidated) {
   // The 304 refreshed the entry (max-age=3600 now): the third fetch needs no request.
   EXPECT_EQ(fetch(source, tile).status, TileStatus::ok);
   EXPECT_EQ(server_.request_count(), 2);
+}
+
+TEST_F(HttpSourceTest, FreshnessComesFromMaxAgeThenExpires) {
+  HttpTileSource source(url("tiles"), options());
+  server_.add_tile_header("Expires", "Thu, 01 Jan 2099 00:00:00 GMT");
+  ASSERT_EQ(fetch(source, TileId{7, 1, 1}).status, TileStatus::ok);
+  EXPECT_EQ(source.disk_cache()->read(TileId{7, 1, 1})->info.expires_at, 4070908800);  // no Date: as given
+
+  // The server's clock runs a day ahead: the lifetime is Expires - Date, counted from now.
+  server_.add_tile_header("Date", "Wed, 31 Dec 2098 00:00:00 GMT");
+  ASSERT_EQ(fetch(source, TileId{7, 1, 2}).status, TileStatus::ok);
+  const CacheEntryInfo dated = source.disk_cache()->read(TileId{7, 1, 2})->info;
+  EXPECT_EQ(dated.expires_at - dated.fetched_at, 24 * 3600);
+
+  server_.set_cache_control("max-age=600");  // wins over Expires
+  ASSERT_EQ(fetch(source, TileId{7, 1, 3}).status, TileStatus::ok);
+  const CacheEntryInfo aged = source.disk_cache()->read(TileId{7, 1, 3})->info;
+  EXPECT_EQ(aged.expires_at - aged.fetched_at, 600);
 }
 
 TEST_F(HttpSourceTest, NoStoreIsNotCached) {
@@ -367,6 +388,19 @@ TEST_F(HttpSourceTest, ZoomOutsideTheSourceRangeIsNoDataWithoutARequest) {
   EXPECT_EQ(fetch(source, TileId{1, 0, 0}).status, TileStatus::no_data);
   EXPECT_EQ(fetch(source, TileId{3, 9, 0}).status, TileStatus::failed);  // not a tile at all
   EXPECT_EQ(server_.request_count(), 0);
+}
+
+TEST_F(HttpSourceTest, UnwritableCacheFolderFetchesWithoutCaching) {
+  HttpSourceOptions o = options();
+  std::ofstream(cache_folder_.path() / "file") << "in the way";
+  o.cache.folder = cache_folder_.path() / "file" / "tiles";
+  HttpTileSource source(url("tiles"), o);
+  EXPECT_EQ(source.disk_cache(), nullptr);
+  EXPECT_EQ(fetch(source, TileId{5, 5, 5}).status, TileStatus::ok);
+  EXPECT_EQ(fetch(source, TileId{5, 5, 6}).status, TileStatus::ok);
+  const std::vector<std::string> warned = warnings();
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_TRUE(warned[0].starts_with(url("tiles") + ": tiles are not cached (tile cache ")) << warned[0];
 }
 
 TEST_F(HttpSourceTest, BadTemplateIsASourceError) {

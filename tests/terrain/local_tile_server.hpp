@@ -9,7 +9,8 @@
 //
 // Routes (z/x/y.png at the end of each):
 //   /tiles/    a 256 x 256 PNG (from the folder given, else generated from z, x, y); with
-//              set_cache_control / set_etags, those headers, and 304 to a matching If-None-Match
+//              set_cache_control / set_etags / add_tile_header, those headers, and 304 to a
+//              matching If-None-Match
 //   /corrupt/  200 with bytes that are not an image
 //   /wrongsize/ 200 with a valid PNG of 100 x 37
 //   /missing/  404                  /empty/  204
@@ -224,6 +225,11 @@ class LocalTileServer {
     std::lock_guard lock(mutex_);
     cache_control_ = std::move(value);
   }
+  // Sent as well with every /tiles/ answer (Expires, Date, ...).
+  void add_tile_header(std::string name, std::string value) {
+    std::lock_guard lock(mutex_);
+    extra_tile_headers_.emplace_back(std::move(name), std::move(value));
+  }
   void set_etags(bool on) { etags_ = on; }
   void set_fail_count(int count) { fail_count_ = count; }
   // Each request is held this long before it is answered (to make requests overlap).
@@ -428,6 +434,10 @@ class LocalTileServer {
         cache_control = t->route == "nostore" ? "no-store" : cache_control_;
       }
       if (!cache_control.empty()) r.headers.emplace_back("Cache-Control", cache_control);
+      {
+        std::lock_guard lock(mutex_);
+        r.headers.insert(r.headers.end(), extra_tile_headers_.begin(), extra_tile_headers_.end());
+      }
       if (etags_ && t->route == "tiles") {
         const std::string etag = etag_of(r.body);
         r.headers.emplace_back("ETag", etag);
@@ -487,6 +497,7 @@ class LocalTileServer {
   Headers last_headers_;
   std::string last_target_;
   std::string cache_control_;
+  std::vector<std::pair<std::string, std::string>> extra_tile_headers_;
 
   std::atomic<bool> etags_{false}, slow_released_{false};
   std::atomic<int> fail_count_{0}, delay_ms_{0};
