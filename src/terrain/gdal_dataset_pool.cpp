@@ -7,18 +7,21 @@
 
 namespace trailray::terrain::gdal_detail {
 
-GDALDatasetUniquePtr open_raster_read_only(const std::string& path) {
+GDALDatasetUniquePtr open_raster_read_only(const std::string& path, const std::vector<std::string>& open_options) {
   ensure_gdal_registered();
   GdalErrorCapture errors;
-  GDALDatasetUniquePtr dataset(
-      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR));
+  std::vector<const char*> options;
+  for (const std::string& option : open_options) options.push_back(option.c_str());
+  options.push_back(nullptr);
+  GDALDatasetUniquePtr dataset(GDALDataset::Open(
+      path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR, nullptr, options.data(), nullptr));
   if (!dataset) throw SourceError(path + ": cannot open as a raster: " + errors.message());
   return dataset;
 }
 
-DatasetPool::DatasetPool(std::string path, std::size_t max_idle)
-    : path_(std::move(path)), max_idle_(std::max<std::size_t>(max_idle, 1)) {
-  idle_.push_back(open_raster_read_only(path_));
+DatasetPool::DatasetPool(std::string path, std::size_t max_idle, std::vector<std::string> open_options)
+    : path_(std::move(path)), max_idle_(std::max<std::size_t>(max_idle, 1)), open_options_(std::move(open_options)) {
+  idle_.push_back(open_raster_read_only(path_, open_options_));
 }
 
 DatasetPool::~DatasetPool() {
@@ -37,7 +40,7 @@ DatasetPool::Lease DatasetPool::acquire() {
     }
   }
   // Opened outside the lock: other callers keep borrowing idle handles meanwhile.
-  return Lease(*this, open_raster_read_only(path_));
+  return Lease(*this, open_raster_read_only(path_, open_options_));
 }
 
 void DatasetPool::give_back(GDALDatasetUniquePtr dataset) {

@@ -13,14 +13,15 @@
 
 namespace trailray::terrain::gdal_detail {
 
-// Opens `path` read-only as a raster (GDAL_OF_RASTER | GDAL_OF_READONLY); throws SourceError
+// Opens `path` read-only as a raster (GDAL_OF_RASTER | GDAL_OF_READONLY), with GDAL open options
+// ("OVERVIEW_LEVEL=2": the dataset is then that overview); throws SourceError
 // "<path>: cannot open as a raster: <GDAL's message>" when GDAL cannot.
-GDALDatasetUniquePtr open_raster_read_only(const std::string& path);
+GDALDatasetUniquePtr open_raster_read_only(const std::string& path, const std::vector<std::string>& open_options = {});
 
 class DatasetPool {
  public:
   // Opens the first handle now, so that a file that cannot be opened fails here (SourceError).
-  DatasetPool(std::string path, std::size_t max_idle);
+  DatasetPool(std::string path, std::size_t max_idle, std::vector<std::string> open_options = {});
   ~DatasetPool();
   DatasetPool(const DatasetPool&) = delete;
   DatasetPool& operator=(const DatasetPool&) = delete;
@@ -51,6 +52,7 @@ class DatasetPool {
 
   const std::string path_;
   const std::size_t max_idle_;
+  const std::vector<std::string> open_options_;
   std::mutex mutex_;
   std::vector<GDALDatasetUniquePtr> idle_;
 };

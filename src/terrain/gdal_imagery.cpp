@@ -74,7 +74,7 @@ struct GdalImagerySource::Impl {
     tile.width = tile.height = kGdalTileSize;
     tile.rgba.assign(std::size_t{kGdalTileSize} * kGdalTileSize * 4, 0);
     try {
-      DatasetPool::Lease dataset = raster.pool().acquire();
+      DatasetPool::Lease dataset = raster.pool_for_tile(id).acquire();
       gdal_detail::WarpOutput out = gdal_detail::warp_tile(*dataset, id, spec, stop);
       if (out.status == gdal_detail::WarpStatus::cancelled) {
         result = {};

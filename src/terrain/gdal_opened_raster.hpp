@@ -4,7 +4,10 @@
 // the raster). Internal to the terrain library.
 
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <vector>
 
 #include "terrain/gdal_dataset_pool.hpp"
 #include "terrain/gdal_georef.hpp"
@@ -18,7 +21,14 @@ class OpenedRaster {
   OpenedRaster(const std::string& path, std::size_t max_idle_datasets);
 
   const std::string& path() const { return pool_.path(); }
+  // Handles on the full-resolution raster.
   DatasetPool& pool() { return pool_; }
+
+  // Handles to warp `tile` from: the coarsest overview of the raster whose pixels are still no
+  // larger than the tile's cells (the choice gdalwarp makes), or the full raster when there is
+  // none. Without overviews a zoomed-out tile of a large raster would read all of it. Throws
+  // SourceError when an overview cannot be opened.
+  DatasetPool& pool_for_tile(const TileId& tile);
   const RasterGeoref& georef() const { return georef_; }
 
   // name, zooms, bounds and format ("gdal:<driver>").
@@ -32,8 +42,12 @@ class OpenedRaster {
   std::string tile_error(const TileId& tile, const std::string& what) const;
 
  private:
+  const std::size_t max_idle_datasets_;
   DatasetPool pool_;
   RasterGeoref georef_;
+  std::vector<double> overview_factors_;  // raster width / overview width, by overview level
+  std::mutex overview_mutex_;
+  std::vector<std::unique_ptr<DatasetPool>> overview_pools_;  // by level, opened on first use
 };
 
 }  // namespace trailray::terrain::gdal_detail

@@ -61,7 +61,7 @@ struct GdalHeightSource::Impl {
   TileResult<HeightTile> warp(const TileId& id, std::stop_token stop) {
     TileResult<HeightTile> result;
     try {
-      DatasetPool::Lease dataset = raster.pool().acquire();
+      DatasetPool::Lease dataset = raster.pool_for_tile(id).acquire();
       gdal_detail::WarpOutput out = gdal_detail::warp_tile(*dataset, id, warp_spec(), stop);
       if (out.status == gdal_detail::WarpStatus::cancelled) {
         result.status = TileStatus::cancelled;

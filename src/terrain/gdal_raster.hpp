@@ -12,7 +12,10 @@
 // missing pixels: the resampler leaves them out and renormalises over the valid ones, so a tile
 // never blends -32768 or -999999 into its heights; a tile cell with no valid pixel under the
 // kernel is NaN. A tile that does not meet the raster, or meets only nodata, is
-// TileStatus::no_data; a partly covered one is ok with NaN holes.
+// TileStatus::no_data; a partly covered one is ok with NaN holes. A tile coarser than the raster
+// is warped from the coarsest of the raster's overviews (if it has any) whose pixels are still no
+// larger than the tile's cells, as gdalwarp does, so that zoomed-out tiles of a big raster do not
+// read all of it.
 //
 // Every method is thread-safe (the async loader calls load() from several workers): a dataset
 // handle is borrowed per call from a small pool. GDAL's messages never reach stderr: they are
@@ -62,9 +65,9 @@ class GdalHeightSource final : public HeightSource {
   // name: the path; min_zoom 0; max_zoom: the zoom whose 256-px tile pixels are about as fine as
   // the raster's pixels at its centre: round(log2(C cos(lat) / (256 r))), C the equator's length
   // on the Mercator sphere, r the geometric mean of a pixel's ground width and height (clamped to
-  // 0..24); bounds: the raster's extent in WGS84 (edges densified; the whole longitude range for
-  // a raster across the antimeridian); format "gdal:<driver>" ("gdal:GTiff", "gdal:SRTMHGT");
-  // encoding float32.
+  // 0..24; 15 when the centre cannot be transformed); bounds: the raster's extent in WGS84 (edges
+  // densified; the whole longitude range for a raster across the antimeridian); format
+  // "gdal:<driver>" ("gdal:GTiff", "gdal:SRTMHGT"); encoding float32.
   const SourceInfo& info() const override;
 
   TileResult<HeightTile> load(const TileId& tile, std::stop_token stop) override;

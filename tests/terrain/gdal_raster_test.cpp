@@ -396,6 +396,46 @@ TEST(GdalHeightSource, WarpedCellsHoldAPlanesValueAtTheirCentres) {
   }
 }
 
+// A raster with overviews: tiles coarser than its pixels come from the coarsest overview that is
+// still at least as fine as their cells; native samples always from the full raster.
+TEST(GdalHeightSource, CoarseTilesAreWarpedFromTheRastersOverviews) {
+  // 1024 x 1024 pixels of 0.0001 degrees (7.6 m x 11.1 m at 47.05 N: 9.18 m), all 500 m; its
+  // overviews (2x, 4x, 8x) are then overwritten with 1000, 2000 and 3000 m, so that a tile tells
+  // which level it was warped from.
+  TempFile file("pyramid.tif");
+  RasterSpec spec;
+  spec.width = spec.height = 1024;
+  spec.geotransform = {10.0, 0.0001, 0.0, 47.1, 0.0, -0.0001};
+  write_geotiff(file.path(), spec, {std::vector<double>(1024 * 1024, 500.0)});
+  {
+    GDALDatasetH ds = GDALOpen(file.str().c_str(), GA_Update);
+    ASSERT_NE(ds, nullptr);
+    int factors[] = {2, 4, 8};
+    ASSERT_EQ(GDALBuildOverviews(ds, "AVERAGE", 3, factors, 0, nullptr, nullptr, nullptr), CE_None);
+    for (int level = 0; level < 3; ++level) {
+      GDALRasterBandH overview = GDALGetOverview(GDALGetRasterBand(ds, 1), level);
+      ASSERT_NE(overview, nullptr);
+      const int w = GDALGetRasterBandXSize(overview), h = GDALGetRasterBandYSize(overview);
+      ASSERT_EQ(w, 1024 / factors[level]);
+      std::vector<float> values(std::size_t(w) * std::size_t(h), 1000.0f * static_cast<float>(level + 1));
+      ASSERT_EQ(GDALRasterIO(overview, GF_Write, 0, 0, w, h, values.data(), w, h, GDT_Float32, 0, 0), CE_None);
+    }
+    GDALClose(ds);
+  }
+  GdalHeightSource source(file.str());
+  // A zoom-z cell spans 40075017 cos(47.05) / (256 2^z) m = 11618 / 2^z raster pixels:
+  // z14 0.7 and z13 1.4 (the raster), z12 2.8 (2x), z11 5.7 (4x), z10 11.3 and z9 22.7 (8x).
+  const std::pair<int, float> expected[] = {{14, 500.0f},  {13, 500.0f},  {12, 1000.0f},
+                                            {11, 2000.0f}, {10, 3000.0f}, {9, 3000.0f}};
+  for (const auto& [zoom, height] : expected) {
+    TileResult<HeightTile> r = source.load(tile_at(47.05, 10.05, zoom), {});
+    ASSERT_EQ(r.status, TileStatus::ok) << zoom << " " << r.error;
+    EXPECT_NEAR(r.tile.min_m, height, 1e-3) << "zoom " << zoom;
+    EXPECT_NEAR(r.tile.max_m, height, 1e-3) << "zoom " << zoom;
+  }
+  EXPECT_NEAR(*source.sample_native(47.05, 10.05), 500.0, 1e-6);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Threads, options, cancellation, bad input.
 
