@@ -28,7 +28,6 @@ packages=(
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
   libclang-rt-14-dev     # libFuzzer / sanitizer runtimes for clang 14
-  libcpp-httplib-dev     # a local tile server on 127.0.0.1 in the terrain fault tests
   python3-gdal           # conformance test: GDAL's own bilinear heights at track points
   sqlite3                # building MBTiles fixtures in tests
   # --- conformance and benchmarks (peers we compare against) ---

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <map>
+#include <mutex>
 
 #include "terrain/directory_source.hpp"
 #include "terrain/encoded_sources.hpp"
@@ -26,6 +28,17 @@ std::chrono::milliseconds millis(double seconds) {
   return std::chrono::milliseconds(static_cast<std::int64_t>(seconds * 1000.0));
 }
 
+// One limiter for every source of the process that asks for the same limit (all of them, in
+// practice: the limit comes from the one configuration), so terrain and imagery share it.
+std::shared_ptr<RequestLimiter> limiter_for(int max_parallel) {
+  static std::mutex mutex;
+  static std::map<int, std::shared_ptr<RequestLimiter>> limiters;
+  std::lock_guard lock(mutex);
+  auto& limiter = limiters[max_parallel];
+  if (!limiter) limiter = std::make_shared<RequestLimiter>(max_parallel);
+  return limiter;
+}
+
 HttpSourceOptions http_options(const SourceSettings& s, const SourceContext& c) {
   HttpSourceOptions o;
   o.subdomains = s.subdomains;
@@ -33,8 +46,7 @@ HttpSourceOptions http_options(const SourceSettings& s, const SourceContext& c) 
   o.client.total_timeout = millis(c.network.timeout_s);
   o.client.retry.max_retries = c.network.retries;
   o.client.headers = s.headers;
-  // One limit per distinct setting; the process-wide default (6) otherwise.
-  if (c.network.max_parallel != 6) o.client.limiter = std::make_shared<RequestLimiter>(c.network.max_parallel);
+  o.client.limiter = limiter_for(c.network.max_parallel);
   o.cache.folder = c.cache.folder;
   o.cache.max_bytes = c.cache.max_bytes;
   o.offline = c.network.offline;
