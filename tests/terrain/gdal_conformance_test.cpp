@@ -51,8 +51,8 @@ std::vector<double> python_heights(const std::filesystem::path& dem, const std::
   for (const geo::LatLon& p : points) lines << p.lat << ' ' << p.lon << '\n';
   TempFile input("points.txt", lines.str());
   const std::string script = std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/gdal_heights.py";
-  const auto result =
-      run_command("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(dem.string()) + " " + input.str());
+  const auto result = run_command("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(dem.string()) + " " +
+                                  shell_quote(input.str()));
   EXPECT_EQ(result.status, 0) << "gdal_heights.py failed (is python3-gdal installed? run scripts/setup.sh)";
   std::vector<double> heights;
   if (result.status != 0) return heights;
