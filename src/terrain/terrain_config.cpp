@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <set>
+#include <fstream>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -114,9 +115,18 @@ TerrainConfig load_terrain_config(const std::filesystem::path& explicit_file) {
     if (must_exist) throw ConfigError(file.string() + ": configuration file not found");
     return c;
   }
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw ConfigError(file.string() + ": cannot read the configuration file");
+  return parse_terrain_config(text.str(), file);
+}
+
+TerrainConfig parse_terrain_config(std::string_view text, const std::filesystem::path& file) {
+  TerrainConfig c = default_terrain_config();
   toml::table root;
   try {
-    root = toml::parse_file(file.string());
+    root = toml::parse(text, file.string());
   } catch (const toml::parse_error& e) {
     throw ConfigError(where(file, e.source()) + ": " + std::string(e.description()));
   }

@@ -31,6 +31,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -86,5 +87,8 @@ std::filesystem::path default_config_path();
 // default file is fine, a missing explicit one is a ConfigError). Unknown keys are errors too: a
 // typo should not silently fall back to a default.
 TerrainConfig load_terrain_config(const std::filesystem::path& file = {});
+
+// The defaults overridden by the TOML `text`; `file` names it in errors.
+TerrainConfig parse_terrain_config(std::string_view text, const std::filesystem::path& file);
 
 }  // namespace trailray::terrain
