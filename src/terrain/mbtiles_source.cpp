@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -129,7 +130,9 @@ void read_metadata_table(sqlite3* db, const std::string& where, TileMetadata& me
   while ((rc = sqlite3_step(s.stmt)) == SQLITE_ROW) {
     const auto* key = reinterpret_cast<const char*>(sqlite3_column_text(s.stmt, 0));
     const auto* value = reinterpret_cast<const char*>(sqlite3_column_text(s.stmt, 1));
-    if (key && value) metadata.set(key, value, where);
+    // Rows are TMS by the spec whatever a "scheme" row says (GDAL reads them so too): the key is
+    // not ours to parse, nor a reason to refuse the file.
+    if (key && value && std::string_view(key) != "scheme") metadata.set(key, value, where);
   }
   if (rc != SQLITE_DONE) throw SourceError(where + ": cannot read the metadata table: " + sqlite3_errmsg(db));
   metadata.check(where);

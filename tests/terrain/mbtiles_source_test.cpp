@@ -59,6 +59,7 @@ TEST(MbtilesSource, FetchesTilesByXyzIdFromTmsRows) {
     w.add_metadata("attribution", "<a href=\"https://example.org\">example</a>");
     w.add_metadata("encoding", "mapbox");
     w.add_metadata("json", "{}");
+    w.add_metadata("scheme", "whatever");            // not a key of MBTiles: ignored, rows stay TMS
     w.add_raw_tile(3, 4, 5, tile_bytes({3, 4, 2}));  // TMS row 5 of 8 is XYZ row 2
     w.add_tile({12, 2138, 1443}, tile_bytes({12, 2138, 1443}));
   }
