@@ -61,7 +61,7 @@ TEST(SourceFactory, OpensEachKind) {
   EXPECT_THROW(open_height_source(settings("https://tiles.example/{z}/{x}.png"), context), SourceError);
 
   test::MemoryHeightSource heights;
-  heights.add(test::make_height_tile({3, 4, 2}, 256, [](std::uint32_t c, std::uint32_t) { return 100.0f + c; }));
+  heights.add(test::make_height_tile({3, 4, 2}, 256, [](std::uint32_t c, std::uint32_t) { return 100.0f + static_cast<float>(c); }));
   const std::vector<TileId> ids{{3, 4, 2}};
   test::write_terrarium_folder(heights, ids, cache.path() / "folder", TileScheme::tms);
   auto folder = open_height_source(settings((cache.path() / "folder").string()), context);
