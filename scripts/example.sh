@@ -11,5 +11,17 @@ cmake --build build --target trailray
 mkdir -p out
 build/src/app/trailray stats examples/paraglider_flight.igc examples/hike.gpx | tee out/example-stats.txt
 build/src/app/trailray stats --json examples/paraglider_flight.igc examples/hike.gpx > out/example-stats.json
+
+# Height above ground along the flight, from the swisstopo DEM in the shared data (the default
+# online source needs the network, which this machine may not have).
+dem=../shared/data/dem/interlaken_dhm25_wgs84.tif
+if [ -f "$dem" ]; then
+  echo
+  build/src/app/trailray elevation --terrain "$dem" examples/paraglider_flight.igc | tee out/example-elevation.txt
+  build/src/app/trailray elevation --terrain "$dem" --csv examples/paraglider_flight.igc > out/example-elevation.csv
+else
+  echo "($dem absent: skipping the elevation example)"
+fi
 echo
-echo "Output: out/example-stats.txt (table) and out/example-stats.json (JSON); binary: build/src/app/trailray"
+echo "Output: out/example-stats.txt (table), out/example-stats.json (JSON), out/example-elevation.txt and .csv;"
+echo "binary: build/src/app/trailray"

@@ -25,7 +25,7 @@ struct ElevationArgs {
   std::string file;
   bool json = false, csv = false, replace = false, force = false, quiet = false;
   std::string output;
-  TrackOptions track;
+  track::ReadOptions read;
   TerrainOptions terrain;
 };
 
@@ -85,7 +85,7 @@ int run_elevation(const ElevationArgs& a) {
       throw std::runtime_error(a.output + ": already exists (--force replaces it)");
   }
 
-  track::ReadResult read = track::load_track_file(a.file, a.track.read);
+  track::ReadResult read = track::load_track_file(a.file, a.read);
   for (const auto& w : read.warnings) fmt::print(stderr, "trailray: warning: {}\n", w.to_string());
   if (read.error) {
     fmt::print(stderr, "trailray: error: {}\n", read.error->to_string());
@@ -172,7 +172,7 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--force", args->force, "Let --replace overwrite an existing OUT");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress display");
   add_terrain_options(*cmd, args->terrain);
-  add_track_options(*cmd, args->track);
+  add_read_options(*cmd, args->read);
   cmd->callback([args, &exit_code] { exit_code = run_elevation(*args); });
 }
 

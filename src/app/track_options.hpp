@@ -16,4 +16,10 @@ struct TrackOptions {
 // Adds --strict, --igc-altitude, --min-distance, --no-smooth, --smooth-width, --smooth-sigma.
 void add_track_options(CLI::App& command, TrackOptions& options);
 
+// Only the reading ones, --strict and --igc-altitude (for commands that use points as recorded).
+void add_read_options(CLI::App& command, track::ReadOptions& options);
+
+// Only the cleaning ones: --min-distance, --no-smooth, --smooth-width, --smooth-sigma.
+void add_cleaning_options(CLI::App& command, track::AnalysisOptions& options);
+
 }  // namespace trailray::app
