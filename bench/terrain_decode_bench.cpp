@@ -16,6 +16,9 @@
 #include <string>
 #include <vector>
 
+#include <gdal/cpl_vsi.h>
+#include <gdal/gdal.h>
+
 #include "terrain/height_decode.hpp"
 #include "terrain/image_codec.hpp"
 
@@ -110,6 +113,35 @@ void BM_DecodeHeightRealAlpineMaps(benchmark::State& state) {
   run_height_decode(state, bytes, HeightEncoding::alpinemaps);
 }
 BENCHMARK(BM_DecodeHeightRealAlpineMaps);
+
+// The peer: GDAL's PNG driver (libpng underneath, like ours) decoding the same Terrarium bytes
+// from memory into three byte planes, plus the same formula: what a GDAL-based tool pays.
+void BM_DecodeTerrariumWithGdal(benchmark::State& state) {
+  const Bytes bytes = trailray::terrain::encode_height_tile(mountain_tile(256), HeightEncoding::terrarium);
+  GDALAllRegister();
+  const char* name = "/vsimem/trailray-bench-terrarium.png";
+  VSILFILE* f = VSIFileFromMemBuffer(name, const_cast<GByte*>(bytes.data()), bytes.size(), FALSE);
+  VSIFCloseL(f);
+  std::vector<unsigned char> rgb(256 * 256 * 3);
+  std::vector<float> heights(256 * 256);
+  int bands[3] = {1, 2, 3};
+  for (auto _ : state) {
+    GDALDatasetH ds = GDALOpen(name, GA_ReadOnly);
+    if (!ds || GDALDatasetRasterIO(ds, GF_Read, 0, 0, 256, 256, rgb.data(), 256, 256, GDT_Byte, 3, bands, 3,
+                                   256 * 3, 1) != CE_None) {
+      state.SkipWithError("GDAL could not read the tile");
+      break;
+    }
+    GDALClose(ds);
+    for (std::size_t i = 0; i < heights.size(); ++i)
+      heights[i] = static_cast<float>(rgb[3 * i] * 256.0 + rgb[3 * i + 1] + rgb[3 * i + 2] / 256.0 - 32768.0);
+    benchmark::DoNotOptimize(heights.data());
+  }
+  VSIUnlink(name);
+  state.SetItemsProcessed(state.iterations());
+  state.counters["tile_bytes"] = static_cast<double>(bytes.size());
+}
+BENCHMARK(BM_DecodeTerrariumWithGdal);
 
 void run_image_decode(benchmark::State& state, const Bytes& bytes) {
   for (auto _ : state) {
