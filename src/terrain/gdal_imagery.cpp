@@ -133,25 +133,7 @@ GdalImagerySource::~GdalImagerySource() = default;
 const SourceInfo& GdalImagerySource::info() const { return impl_->info; }
 
 TileResult<ImageTile> GdalImagerySource::load(const TileId& tile, std::stop_token stop) {
-  TileResult<ImageTile> result;
-  if (!geo::is_valid(tile)) {
-    result.status = TileStatus::failed;
-    result.error = impl_->raster.tile_error(tile, "invalid tile id");
-    return result;
-  }
-  if (stop.stop_requested()) {
-    result.status = TileStatus::cancelled;
-    return result;
-  }
-  if (std::optional<ImageTile> cached = impl_->tiles.find(tile)) {
-    result.status = TileStatus::ok;
-    result.tile = std::move(*cached);
-    return result;
-  }
-  if (!impl_->raster.may_cover(tile)) return result;  // no_data
-  result = impl_->warp(tile, stop);
-  if (result.status == TileStatus::ok) impl_->tiles.insert(result.tile);
-  return result;
+  return gdal_detail::load_warped_tile<ImageTile>(*impl_, tile, stop);
 }
 
 }  // namespace trailray::terrain

@@ -122,25 +122,7 @@ int GdalHeightSource::raster_width() const { return impl_->raster.georef().width
 int GdalHeightSource::raster_height() const { return impl_->raster.georef().height; }
 
 TileResult<HeightTile> GdalHeightSource::load(const TileId& tile, std::stop_token stop) {
-  TileResult<HeightTile> result;
-  if (!geo::is_valid(tile)) {
-    result.status = TileStatus::failed;
-    result.error = impl_->raster.tile_error(tile, "invalid tile id");
-    return result;
-  }
-  if (stop.stop_requested()) {
-    result.status = TileStatus::cancelled;
-    return result;
-  }
-  if (std::optional<HeightTile> cached = impl_->tiles.find(tile)) {
-    result.status = TileStatus::ok;
-    result.tile = std::move(*cached);
-    return result;
-  }
-  if (!impl_->raster.may_cover(tile)) return result;  // no_data
-  result = impl_->warp(tile, stop);
-  if (result.status == TileStatus::ok) impl_->tiles.insert(result.tile);
-  return result;
+  return gdal_detail::load_warped_tile<HeightTile>(*impl_, tile, stop);
 }
 
 void GdalHeightSource::sample_native(std::span<const geo::LatLon> points, std::span<double> heights) {

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <list>
 #include <mutex>
+#include <stop_token>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -54,5 +55,31 @@ class WarpedTileCache {
   std::unordered_map<TileId, typename std::list<Tile>::iterator> index_;
   std::size_t used_bytes_ = 0;
 };
+
+// The load() of both GDAL sources: an invalid id fails, a cancelled request stops, a cached tile
+// is returned, a tile the raster cannot cover is no_data, anything else is warped and cached.
+// Impl has `raster` (OpenedRaster), `tiles` (WarpedTileCache<Tile>) and warp(id, stop).
+template <class Tile, class Impl>
+TileResult<Tile> load_warped_tile(Impl& impl, const TileId& tile, std::stop_token stop) {
+  TileResult<Tile> result;
+  if (!geo::is_valid(tile)) {
+    result.status = TileStatus::failed;
+    result.error = impl.raster.tile_error(tile, "invalid tile id");
+    return result;
+  }
+  if (stop.stop_requested()) {
+    result.status = TileStatus::cancelled;
+    return result;
+  }
+  if (std::optional<Tile> cached = impl.tiles.find(tile)) {
+    result.status = TileStatus::ok;
+    result.tile = std::move(*cached);
+    return result;
+  }
+  if (!impl.raster.may_cover(tile)) return result;  // no_data
+  result = impl.warp(tile, stop);
+  if (result.status == TileStatus::ok) impl.tiles.insert(result.tile);
+  return result;
+}
 
 }  // namespace trailray::terrain::gdal_detail
