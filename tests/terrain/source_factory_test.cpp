@@ -81,3 +81,27 @@ TEST(SourceFactory, RasterFilesGoThroughGdal) {
 
 }  // namespace
 }  // namespace trailray::terrain
+
+namespace trailray::terrain {
+namespace {
+
+TEST(SourceFactory, ImageryFromATmsFolderOfJpegs) {
+  TRAILRAY_REQUIRE_DATA(ortho, "tiles/alpinemaps_ortho");
+  SourceSettings s;
+  s.source = ortho.string();
+  s.scheme = TileScheme::tms;
+  auto imagery = open_imagery_source(s, {});
+  ASSERT_TRUE(imagery);
+  // TMS 7/69/83 is XYZ 7/69/44: north-east of the four, over Vienna and the Danube.
+  const auto tile = imagery->load(TileId{7, 69, 44}, {});
+  ASSERT_EQ(tile.status, TileStatus::ok) << tile.error;
+  EXPECT_EQ(tile.tile.width, 256u);
+  ASSERT_EQ(tile.tile.rgba.size(), 256u * 256u * 4u);
+  std::size_t opaque = 0;
+  for (std::size_t i = 3; i < tile.tile.rgba.size(); i += 4) opaque += tile.tile.rgba[i] == 255 ? 1 : 0;
+  EXPECT_EQ(opaque, 256u * 256u);
+  EXPECT_EQ(imagery->load(TileId{7, 10, 10}, {}).status, TileStatus::no_data);
+}
+
+}  // namespace
+}  // namespace trailray::terrain
