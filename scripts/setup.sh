@@ -24,6 +24,11 @@ packages=(
   libturbojpeg0-dev      # JPEG imagery tiles (terrain/)
   libwebp-dev            # WebP tiles (terrain/)
   libtomlplusplus-dev    # ~/.config/trailray/config.toml (terrain sources, cache size)
+  libegl-dev             # EGL headers and libEGL (glvnd): headless GL contexts (render/)
+  libgles-dev            # OpenGL ES 3 headers and libGLESv2 (glvnd): the renderer's one GL API
+  libegl-mesa0           # Mesa's EGL driver: the surfaceless platform, rendering without a GPU or display
+  libgl1-mesa-dri        # Mesa's drivers, llvmpipe among them: render tests and CI on the CPU
+  glslang-tools          # glslangValidator: every shader is checked at build time, so an error fails the build
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
