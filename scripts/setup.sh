@@ -29,6 +29,7 @@ packages=(
   libegl-mesa0           # Mesa's EGL driver: the surfaceless platform, rendering without a GPU or display
   libgl1-mesa-dri        # Mesa's drivers, llvmpipe among them: render tests and CI on the CPU
   glslang-tools          # glslangValidator: every shader is checked at build time, so an error fails the build
+  libglm-dev             # GLSL-like vectors and matrices on the CPU (render/): camera, projections, sun direction
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
