@@ -1,0 +1,44 @@
+#pragma once
+// Automatic framing: a camera that shows a set of points (the tracks) whole, from an oblique
+// angle, with the track spread across the image and terrain around it.
+//
+//   - heading: the camera looks along the points' short axis (the direction in which their
+//     horizontal extent is smallest), so the long axis lies across the screen; where the shape
+//     has no clear short axis (round, square, a single point), the preferred heading wins;
+//   - pitch: fixed, -45 degrees by default (an oblique view that shows relief and height);
+//   - distance: the smallest that keeps every point inside the image with the margin (found by
+//     bisection on the exact projection, earth curvature included), the points' image centred,
+//     and at least a minimum width of terrain in view.
+// Framing knows no terrain: where peaks rise between the camera and the track, the caller may
+// choose a steeper pitch.
+
+#include <limits>
+#include <span>
+
+#include "render/camera.hpp"
+
+namespace trailray::render {
+
+struct FramingOptions {
+  Lens lens;
+  double pitch_deg = -45.0;            // within [-90, -5]
+  double margin_fraction = 0.08;       // of the width (left, right) and height (top, bottom) kept free
+  double preferred_heading_deg = 0.0;  // among equally good headings, the one closest to this
+  double min_view_width_m = 2000.0;    // terrain width in view at the target, however small the track
+  // The terrain height under the points, for the depth range and for points without a height;
+  // NaN: the lowest point's height.
+  double ground_height_m = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct Framing {
+  LookAt look_at;  // target (the centre of the points' image), distance, heading and pitch
+  Camera camera;
+};
+
+// A camera framing `points` (latitude and longitude in degrees, heights in metres; a point
+// without a height, NaN, is placed on the ground). Points whose latitude or longitude is not a
+// finite number within range are left out; an error when none is left or an option is out of
+// range.
+Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingOptions& options = {});
+
+}  // namespace trailray::render
