@@ -1,0 +1,199 @@
+#include "render/scene_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "terrain/lod_selection.hpp"
+
+namespace trailray::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The finest level to split to when there is no height source: the neutral ground is flat, so
+// only the Earth's curvature asks for detail, and a zoom-12 tile (10 km) bends by under 2 m.
+constexpr int kNeutralMaxZoom = 12;
+constexpr int kMaxSelectionRounds = 4;
+
+std::chrono::milliseconds remaining(Clock::time_point deadline) {
+  return std::max(std::chrono::milliseconds(0),
+                  std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()));
+}
+
+// A tile of the neutral ground: a hole everywhere, which the mesh fills at the neutral height.
+std::shared_ptr<const terrain::HeightTile> neutral_tile(const terrain::TileId& id) {
+  auto tile = std::make_shared<terrain::HeightTile>();
+  tile->id = id;
+  tile->width = tile->height = 2;
+  tile->layout = terrain::SampleLayout::pixel_is_point;
+  tile->heights.assign(4, terrain::kNoHeight);
+  return tile;
+}
+
+}  // namespace
+
+struct SceneRenderer::DrawnTile {
+  terrain::TileId id;
+  std::shared_ptr<const terrain::HeightTile> tile;
+  bool has_data = false;
+};
+
+SceneRenderer::SceneRenderer(SceneSources sources, terrain::TileLoaderOptions loader_options) : sources_(sources) {
+  if (sources_.heights != nullptr) {
+    height_loader_ = std::make_unique<terrain::TileLoader<terrain::HeightTile>>(
+        [source = sources_.heights](const terrain::TileId& id, std::stop_token stop) { return source->load(id, stop); },
+        loader_options);
+  }
+  if (sources_.imagery != nullptr) {
+    imagery_loader_ = std::make_unique<terrain::TileLoader<terrain::ImageTile>>(
+        [source = sources_.imagery](const terrain::TileId& id, std::stop_token stop) { return source->load(id, stop); },
+        loader_options);
+  }
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Camera& camera,
+                                                                       const SceneRenderOptions& options,
+                                                                       SceneRenderReport& report) {
+  const Clock::time_point deadline = Clock::now() + options.timeout;
+  const auto neutral = static_cast<float>(options.neutral_ground_height_m);
+  terrain::LodSettings settings;
+  settings.max_screen_error_px = options.max_screen_error_px;
+  settings.tile_samples = kTerrainGridVertices - 1;
+  settings.max_zoom = kNeutralMaxZoom;
+  if (sources_.heights != nullptr) {
+    settings.min_zoom = sources_.heights->info().min_zoom;
+    settings.max_zoom = sources_.heights->info().max_zoom;
+  }
+  terrain::HeightRange height_range = [&](const terrain::TileId& id) -> std::optional<std::pair<float, float>> {
+    if (!height_loader_) return std::pair{neutral, neutral};
+    if (const auto tile = height_loader_->get(id); tile && tile->has_data()) {
+      // Holes are drawn at the neutral height: the volume must hold them too.
+      if (std::any_of(tile->heights.begin(), tile->heights.end(), [](float h) { return std::isnan(h); }))
+        return std::pair{std::min(tile->min_m, neutral), std::max(tile->max_m, neutral)};
+      return std::pair{tile->min_m, tile->max_m};
+    }
+    if (height_loader_->state(id) == terrain::TileState::no_data) return std::pair{neutral, neutral};
+    return std::nullopt;
+  };
+
+  const terrain::LodCamera lod_camera = to_lod_camera(camera);
+  terrain::LodSelection selection;
+  std::vector<terrain::TileId> previous;
+  for (int round = 0; round < kMaxSelectionRounds; ++round) {
+    selection = terrain::select_tiles(lod_camera, settings, height_range);
+    report.selection_rounds = round + 1;
+    std::vector<terrain::TileId> ids;
+    for (const auto& t : selection.tiles) ids.push_back(t.id);
+    if (!height_loader_ || ids == previous) break;
+    std::vector<terrain::TileRequest> requests;
+    for (const auto& t : selection.tiles) requests.push_back({t.id, t.priority});
+    height_loader_->request(requests);
+    if (!height_loader_->wait_until_done(remaining(deadline), options.on_progress)) {
+      report.timed_out = true;
+      break;
+    }
+    previous = std::move(ids);
+  }
+
+  std::vector<DrawnTile> drawn;
+  if (!height_loader_) {
+    for (const auto& t : selection.tiles) drawn.push_back({t.id, neutral_tile(t.id), false});
+    return drawn;
+  }
+  report.failures = height_loader_->failures();
+  // A tile the source has nothing for (or failed on) is drawn as the neutral ground, so the view
+  // never shows the sky through the ground.
+  const auto settled = [&](const terrain::TileId& id) {
+    const terrain::TileState state = height_loader_->state(id);
+    return state == terrain::TileState::loaded || state == terrain::TileState::no_data ||
+           state == terrain::TileState::failed;
+  };
+  for (const terrain::TileId& id : terrain::tiles_to_draw(selection, settled)) {
+    auto tile = height_loader_->get(id);
+    if (tile && tile->has_data())
+      drawn.push_back({id, std::move(tile), true});
+    else
+      drawn.push_back({id, neutral_tile(id), false});
+  }
+  return drawn;
+}
+
+std::vector<TerrainImagery> SceneRenderer::load_imagery(const std::vector<DrawnTile>& tiles,
+                                                        const SceneRenderOptions& options,
+                                                        Clock::time_point deadline, SceneRenderReport& report) {
+  std::vector<TerrainImagery> imagery(tiles.size());
+  if (!imagery_loader_) return imagery;
+  const int max_zoom = sources_.imagery->info().max_zoom;
+  const int min_zoom = sources_.imagery->info().min_zoom;
+  // Each height tile wants the imagery tile of its own id, or of its ancestor at the imagery's
+  // finest level.
+  std::vector<std::optional<terrain::TileId>> wanted(tiles.size());
+  std::vector<terrain::TileRequest> requests;
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    std::optional<terrain::TileId> id = tiles[i].id;
+    while (id && id->zoom > max_zoom) id = geo::parent(*id);
+    if (!id || id->zoom < min_zoom) continue;
+    wanted[i] = id;
+    requests.push_back({*id, static_cast<double>(tiles.size() - i)});
+  }
+  imagery_loader_->request(requests);
+  if (!imagery_loader_->wait_until_done(remaining(deadline), options.on_progress)) report.timed_out = true;
+  for (const auto& f : imagery_loader_->failures()) report.failures.push_back(f);
+
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    if (!wanted[i]) continue;
+    const auto image = imagery_loader_->get(*wanted[i]);
+    if (!image || image->width == 0 || image->height == 0) continue;
+    auto it = imagery_textures_.find(*wanted[i]);
+    if (it == imagery_textures_.end())
+      it = imagery_textures_.emplace(*wanted[i], upload_imagery_texture(image->width, image->height, image->rgba)).first;
+    const int levels_up = tiles[i].id.zoom - wanted[i]->zoom;
+    const double scale = std::ldexp(1.0, -levels_up);
+    const std::uint32_t mask = (1u << levels_up) - 1u;
+    TerrainImagery& t = imagery[i];
+    t.texture = &it->second;
+    t.scale = glm::vec2(static_cast<float>(scale));
+    t.offset = glm::vec2(static_cast<float>((tiles[i].id.x & mask) * scale), static_cast<float>((tiles[i].id.y & mask) * scale));
+    ++report.imagery_tiles_used;
+  }
+  return imagery;
+}
+
+RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptions& options) {
+  RenderedScene scene;
+  const Clock::time_point deadline = Clock::now() + options.timeout;
+  const std::vector<DrawnTile> tiles = load_height_tiles(camera, options, scene.report);
+  const std::vector<TerrainImagery> imagery = load_imagery(tiles, options, deadline, scene.report);
+
+  const auto neutral = static_cast<float>(options.neutral_ground_height_m);
+  const int max_zoom = sources_.heights != nullptr ? sources_.heights->info().max_zoom : kNeutralMaxZoom;
+  std::vector<TerrainDrawItem> items;
+  items.reserve(tiles.size());
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    const terrain::HeightTile& tile = *tiles[i].tile;
+    // The finest level carries every sample the source has; coarser levels the LOD grid.
+    const std::uint32_t grid = tiles[i].has_data && tile.id.zoom >= max_zoom
+                                   ? std::max(kTerrainGridVertices, full_resolution_grid(tile))
+                                   : kTerrainGridVertices;
+    const TerrainTileGpu& mesh = meshes_.get_or_upload(tile, grid, neutral);
+    items.push_back({&mesh, imagery[i]});
+    ++scene.report.tiles_drawn;
+    if (tiles[i].has_data) ++scene.report.tiles_with_data;
+  }
+
+  const Lens& lens = camera.lens();
+  FrameTarget target(static_cast<int>(lens.width_px), static_cast<int>(lens.height_px));
+  target.bind();
+  TerrainPass::clear_to_sky();
+  TerrainLighting lighting;
+  lighting.sun_direction_ecef = options.sun_direction_ecef;
+  pass_.draw(camera, items, lighting);
+  scene.image = read_rgba8(0, 0, target.width(), target.height());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return scene;
+}
+
+}  // namespace trailray::render

@@ -1,0 +1,90 @@
+#pragma once
+// One picture of the terrain from a camera: choose the tiles the view wants (terrain LOD
+// selection), wait for them through the async loaders (with a timeout and progress), build and
+// upload their meshes, draw them lit by the sun, read the pixels back.
+//
+// The selection depends on the tiles' height ranges, which are known only once tiles are loaded,
+// so it is repeated (a few rounds at most) until it no longer changes. Where the height source has
+// no data (no_data tiles, holes in tiles) or there is no source at all, the neutral ground is
+// drawn at SceneRenderOptions::neutral_ground_height_m (DESIGN.md "Terrain sources").
+
+#include <glm/glm.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "render/framebuffer_readback.hpp"
+#include "render/terrain_mesh.hpp"
+#include "render/terrain_pass.hpp"
+#include "terrain/tile_loader.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::render {
+
+// Vertices per side of a tile's mesh (the LOD selection's tile_samples is one less); tiles of the
+// source's finest level get every sample instead (full_resolution_grid).
+inline constexpr std::uint32_t kTerrainGridVertices = 65;
+
+struct SceneSources {
+  terrain::HeightSource* heights = nullptr;   // nullptr: the neutral ground everywhere
+  terrain::ImagerySource* imagery = nullptr;  // nullptr: the hypsometric tint
+};
+
+struct SceneRenderOptions {
+  glm::dvec3 sun_direction_ecef{0.0, 0.0, 1.0};  // unit, towards the sun (sun_position.hpp)
+  double neutral_ground_height_m = 0.0;
+  double max_screen_error_px = 2.0;
+  std::chrono::milliseconds timeout{std::chrono::seconds(120)};  // for all tiles together
+  // Called about every 100 ms while tiles load (on the calling thread).
+  std::function<void(const terrain::LoadProgress&)> on_progress;
+};
+
+struct SceneRenderReport {
+  std::size_t tiles_drawn = 0;         // height tiles drawn (neutral ones included)
+  std::size_t tiles_with_data = 0;     // of those: from the height source
+  std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
+  int selection_rounds = 0;
+  bool timed_out = false;              // drawn with what had arrived
+  std::vector<std::string> failures;   // tile errors ("<source> z/x/y: ...")
+};
+
+struct RenderedScene {
+  RgbaImage image;  // top-down, sRGB
+  SceneRenderReport report;
+};
+
+class SceneRenderer {
+ public:
+  // The GL context must be current and stay so for the renderer's lifetime; the sources must
+  // outlive it. Throws ShaderError / RenderError from GL.
+  explicit SceneRenderer(SceneSources sources, terrain::TileLoaderOptions loader_options = {});
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+  // Renders the camera's view at its lens's image size. Throws RenderError from GL, and
+  // std::invalid_argument for an unusable camera.
+  RenderedScene render(const Camera& camera, const SceneRenderOptions& options);
+
+ private:
+  struct DrawnTile;
+  std::vector<DrawnTile> load_height_tiles(const Camera& camera, const SceneRenderOptions& options,
+                                           SceneRenderReport& report);
+  std::vector<TerrainImagery> load_imagery(const std::vector<DrawnTile>& tiles, const SceneRenderOptions& options,
+                                           std::chrono::steady_clock::time_point deadline, SceneRenderReport& report);
+
+  SceneSources sources_;
+  std::unique_ptr<terrain::TileLoader<terrain::HeightTile>> height_loader_;
+  std::unique_ptr<terrain::TileLoader<terrain::ImageTile>> imagery_loader_;
+  TerrainPass pass_;
+  TerrainMeshCache meshes_;
+  std::unordered_map<terrain::TileId, Texture> imagery_textures_;
+};
+
+}  // namespace trailray::render

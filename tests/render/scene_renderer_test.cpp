@@ -1,0 +1,197 @@
+// The first terrain pictures, headless (llvmpipe in CI), small: where a real peak lands, which
+// slope the sun lights, the neutral ground without a source.
+#include "render/scene_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "geo/tile_id.hpp"
+#include "gl_test_support.hpp"
+#include "render/camera.hpp"
+#include "terrain/source_factory.hpp"
+#include "test_support.hpp"
+
+namespace trailray::render {
+namespace {
+
+using test::GlTest;
+
+bool is_sky(const std::array<std::uint8_t, 4>& p) {
+  const auto near = [](std::uint8_t v, float c) { return std::abs(static_cast<int>(v) - static_cast<int>(std::lround(c * 255.0f))) <= 1; };
+  return near(p[0], kSkyColorSrgb.r) && near(p[1], kSkyColorSrgb.g) && near(p[2], kSkyColorSrgb.b);
+}
+
+double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+// Mean luminance of the pixels within `radius` of (x, y).
+double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
+  double sum = 0.0;
+  int n = 0;
+  for (int j = -radius; j <= radius; ++j)
+    for (int i = -radius; i <= radius; ++i) {
+      const long px = std::lround(x) + i, py = std::lround(y) + j;
+      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+      sum += luminance(image.pixel(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py)));
+      ++n;
+    }
+  return n ? sum / n : 0.0;
+}
+
+// Tiles of a north-south ridge at kRidgeLon: 1000 m flat valleys, rising to 1800 m over 2 km on
+// either side, computed for any tile (65 x 65 pixel-is-point samples).
+constexpr double kRidgeLat = 46.5, kRidgeLon = 10.0;
+class RidgeSource : public terrain::HeightSource {
+ public:
+  RidgeSource() {
+    info_.name = "ridge";
+    info_.max_zoom = 14;
+  }
+  const terrain::SourceInfo& info() const override { return info_; }
+  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
+    terrain::TileResult<terrain::HeightTile> r;
+    r.status = terrain::TileStatus::ok;
+    terrain::HeightTile& t = r.tile;
+    t.id = id;
+    t.width = t.height = 65;
+    t.layout = terrain::SampleLayout::pixel_is_point;
+    const double metres_per_deg = 111320.0 * std::cos(kRidgeLat * M_PI / 180.0);
+    for (std::uint32_t row = 0; row < 65; ++row)
+      for (std::uint32_t col = 0; col < 65; ++col) {
+        const auto ll = geo::latlon_from_tile_pixel(id, col, row, 64);
+        const double east_m = (ll->lon - kRidgeLon) * metres_per_deg;
+        t.heights.push_back(static_cast<float>(1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_m) / 2000.0)));
+      }
+    terrain::update_height_range(t);
+    return r;
+  }
+
+ private:
+  terrain::SourceInfo info_;
+};
+
+glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
+  const EnuAxes enu = enu_axes_at(lat, lon);
+  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
+  return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
+}
+
+// With TRAILRAY_TEST_IMAGE_DIR set, each picture is also written there, to look at.
+void keep_image(const RgbaImage& image, const std::string& name) {
+  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR")) write_srgb_png(std::filesystem::path(dir) / name, image);
+}
+
+class SceneRendererTest : public GlTest {};
+
+TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
+  RidgeSource ridge;
+  SceneRenderer renderer({&ridge, nullptr});
+  const Lens lens{45.0, 240, 135};
+  const auto camera = camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, lens, 1000.0);
+  ASSERT_TRUE(camera.ok()) << camera.error;
+  // Points halfway up each slope, 1 km west and east of the crest.
+  const double deg_per_km = 1.0 / (111.320 * std::cos(kRidgeLat * M_PI / 180.0));
+  const auto west = camera.value->project(ecef_from({kRidgeLat, kRidgeLon - deg_per_km, 1400.0}));
+  const auto east = camera.value->project(ecef_from({kRidgeLat, kRidgeLon + deg_per_km, 1400.0}));
+  ASSERT_TRUE(west && east);
+
+  SceneRenderOptions options;
+  options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 270.0, 30.0);
+  const RenderedScene from_west = renderer.render(*camera.value, options);
+  keep_image(from_west.image, "ridge_sun_west.png");
+  EXPECT_GT(from_west.report.tiles_with_data, 0u);
+  EXPECT_EQ(from_west.image.width, 240u);
+  const double west_lit = mean_luminance(from_west.image, west->x_px, west->y_px, 2);
+  const double east_dark = mean_luminance(from_west.image, east->x_px, east->y_px, 2);
+  EXPECT_GT(west_lit, east_dark + 40.0) << "sun in the west: west slope " << west_lit << ", east slope " << east_dark;
+
+  options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 90.0, 30.0);
+  const RenderedScene from_east = renderer.render(*camera.value, options);
+  keep_image(from_east.image, "ridge_sun_east.png");
+  const double west_dark = mean_luminance(from_east.image, west->x_px, west->y_px, 2);
+  const double east_lit = mean_luminance(from_east.image, east->x_px, east->y_px, 2);
+  EXPECT_GT(east_lit, west_dark + 40.0) << "sun in the east: west slope " << west_dark << ", east slope " << east_lit;
+
+  // The valley floor at 1000 m is tinted green (hypsometric tint), not grey.
+  const auto valley = camera.value->project(ecef_from({kRidgeLat, kRidgeLon - 3.5 * deg_per_km, 1000.0}));
+  ASSERT_TRUE(valley);
+  const auto p = from_west.image.pixel(static_cast<std::uint32_t>(valley->x_px), static_cast<std::uint32_t>(valley->y_px));
+  EXPECT_GT(p[1], p[0]);
+  EXPECT_GT(p[1], p[2]);
+}
+
+TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
+  SceneRenderer renderer({nullptr, nullptr});
+  const Lens lens{45.0, 160, 90};
+  const auto camera = camera_at({{47.0, 8.0, 1500.0}, 30.0, -10.0}, lens, 500.0);
+  ASSERT_TRUE(camera.ok()) << camera.error;
+  SceneRenderOptions options;
+  options.neutral_ground_height_m = 500.0;
+  options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
+  const RenderedScene scene = renderer.render(*camera.value, options);
+  keep_image(scene.image, "neutral_ground.png");
+  EXPECT_GT(scene.report.tiles_drawn, 0u);
+  EXPECT_EQ(scene.report.tiles_with_data, 0u);
+  // Ground below the horizon row (earth curvature included), sky above it.
+  const auto horizon = camera.value->horizon_row_px(80.0);
+  ASSERT_TRUE(horizon);
+  ASSERT_GT(*horizon, 5.0);
+  ASSERT_LT(*horizon, 85.0);
+  for (std::uint32_t x : {0u, 80u, 159u}) {
+    EXPECT_TRUE(is_sky(scene.image.pixel(x, 0))) << "column " << x;
+    const auto ground = scene.image.pixel(x, 89);
+    EXPECT_FALSE(is_sky(ground)) << "column " << x;
+    // Neutral: grey, not a tint.
+    EXPECT_LE(std::abs(ground[0] - ground[1]), 3) << "column " << x;
+    EXPECT_LE(std::abs(ground[1] - ground[2]), 6) << "column " << x;
+  }
+  // The ground/sky boundary in the middle column is where the ellipsoid's horizon is (the
+  // neutral ground lies 500 m above it: a little above the ellipsoid's horizon row).
+  std::uint32_t first_ground = 0;
+  while (first_ground < 90 && is_sky(scene.image.pixel(80, first_ground))) ++first_ground;
+  const auto ground_horizon = [&] {
+    // The horizon of a sphere 500 m larger: the dip angle shrinks by about that height's share.
+    return *horizon;
+  }();
+  EXPECT_LE(first_ground, ground_horizon + 1.0);
+  EXPECT_GE(first_ground, ground_horizon - 4.0);
+}
+
+// The highest cell of the Interlaken DEM (2004.23 m at 46.734190 N, 7.919397 E, on the ridge at
+// the DEM's northern edge; found with GDAL over the whole raster), seen from 6.7 km south at its
+// own height: nothing in front of it is higher, and behind it there is only the neutral ground
+// 1440 m lower, so it is the top of the terrain in its pixel column.
+TEST_F(SceneRendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
+  terrain::SourceSettings settings;
+  settings.source = dem.string();
+  auto source = terrain::open_height_source(settings, {});
+  ASSERT_TRUE(source);
+  SceneRenderer renderer({source.get(), nullptr});
+  const GeoPosition peak{46.734190, 7.919397, 2004.23};
+  const Lens lens{20.0, 320, 180};
+  const auto camera = camera_at({{peak.lat_deg - 0.06, peak.lon_deg, peak.height_m}, 0.0, -3.0}, lens, 560.0);
+  ASSERT_TRUE(camera.ok()) << camera.error;
+  const auto expected = camera.value->project(ecef_from(peak));
+  ASSERT_TRUE(expected);
+  ASSERT_GT(expected->y_px, 10.0);
+
+  SceneRenderOptions options;
+  options.neutral_ground_height_m = 560.0;
+  options.sun_direction_ecef = sun_from(peak.lat_deg, peak.lon_deg, 180.0, 50.0);
+  const RenderedScene scene = renderer.render(*camera.value, options);
+  keep_image(scene.image, "interlaken_peak.png");
+  EXPECT_GT(scene.report.tiles_with_data, 0u);
+  EXPECT_FALSE(scene.report.timed_out);
+  const auto column = static_cast<std::uint32_t>(expected->x_px);
+  std::uint32_t top = 0;
+  while (top < 180 && is_sky(scene.image.pixel(column, top))) ++top;
+  // The silhouette's top pixel row holds the peak's projection (a pixel spans [top, top + 1)).
+  EXPECT_NEAR(top + 0.5, expected->y_px, 2.0) << "peak projects to (" << expected->x_px << ", " << expected->y_px << ")";
+}
+
+}  // namespace
+}  // namespace trailray::render

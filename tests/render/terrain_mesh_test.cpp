@@ -1,0 +1,134 @@
+// The terrain tile mesh on the CPU: grid and skirt layout, bilinear heights, positions relative to
+// the tile's origin, normals, holes.
+#include "render/terrain_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geo/tile_id.hpp"
+#include "render/camera.hpp"
+#include "terrain/lod_selection.hpp"
+
+namespace trailray::render {
+namespace {
+
+terrain::HeightTile tile_from(const terrain::TileId& id, std::uint32_t size, terrain::SampleLayout layout,
+                              const std::function<float(std::uint32_t, std::uint32_t)>& height) {
+  terrain::HeightTile tile;
+  tile.id = id;
+  tile.width = tile.height = size;
+  tile.layout = layout;
+  for (std::uint32_t r = 0; r < size; ++r)
+    for (std::uint32_t c = 0; c < size; ++c) tile.heights.push_back(height(c, r));
+  terrain::update_height_range(tile);
+  return tile;
+}
+
+const terrain::TileId kAlpsTile{12, 2137, 1445};
+
+TEST(TerrainMesh, GridPlusOneSkirtVertexPerEdgeVertexAndTwoTrianglesPerCell) {
+  const auto tile = tile_from(kAlpsTile, 65, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return 1000.0f; });
+  const TerrainMesh mesh = build_terrain_mesh(tile, 17, 0.0f);
+  EXPECT_EQ(mesh.vertices.size(), 17u * 17u + 4u * 16u);
+  EXPECT_EQ(mesh.indices.size(), 16u * 16u * 6u + 4u * 16u * 6u);
+  for (const auto i : mesh.indices) ASSERT_LT(i, mesh.vertices.size());
+}
+
+TEST(TerrainMesh, VerticesLieOnTheEllipsoidAtTheirHeightRelativeToTheOrigin) {
+  // Heights rising 1 m per sample eastwards: vertex (i, j) of a 65-vertex grid over a
+  // pixel-is-point 65-sample tile sits exactly on sample (i, j).
+  const auto tile = tile_from(kAlpsTile, 65, terrain::SampleLayout::pixel_is_point,
+                              [](std::uint32_t c, std::uint32_t) { return 500.0f + static_cast<float>(c); });
+  const TerrainMesh mesh = build_terrain_mesh(tile, 65, 0.0f);
+  for (const std::uint32_t k : {0u, 64u, 65u * 32u + 17u, 65u * 65u - 1u}) {
+    const std::uint32_t i = k % 65, j = k / 65;
+    const TerrainVertex& v = mesh.vertices[k];
+    EXPECT_FLOAT_EQ(v.height_m, 500.0f + static_cast<float>(i));
+    const auto ll = geo::latlon_from_tile_pixel(kAlpsTile, i, j, 64);
+    const glm::dvec3 expected = to_dvec3(ecef_from({ll->lat, ll->lon, 500.0 + i}));
+    const glm::dvec3 actual = to_dvec3(mesh.origin) + glm::dvec3(v.x, v.y, v.z);
+    EXPECT_LT(glm::length(actual - expected), 0.01) << "vertex " << i << "," << j;
+  }
+  // The origin is the tile's centre at its mean height.
+  double lat = 0, lon = 0;
+  geo::from_ecef(mesh.origin, lat, lon);
+  const auto centre = geo::latlon_from_tile_pixel(kAlpsTile, 0.5, 0.5, 1);
+  EXPECT_NEAR(lat, centre->lat, 1e-9);
+  EXPECT_NEAR(lon, centre->lon, 1e-9);
+}
+
+TEST(TerrainMesh, NormalsPointUpOnFlatGroundAndTiltAwayFromTheRise) {
+  const auto flat = tile_from(kAlpsTile, 65, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return 800.0f; });
+  const TerrainMesh flat_mesh = build_terrain_mesh(flat, 33, 0.0f);
+  const TerrainVertex& centre = flat_mesh.vertices[33 * 16 + 16];
+  const auto ll = geo::latlon_from_tile_pixel(kAlpsTile, 16, 16, 32);
+  const EnuAxes enu = enu_axes_at(ll->lat, ll->lon);
+  const glm::dvec3 n(centre.nx, centre.ny, centre.nz);
+  EXPECT_GT(glm::dot(n, enu.up), 0.99999);
+
+  // Rising eastwards: the normal leans west.
+  const auto slope = tile_from(kAlpsTile, 65, terrain::SampleLayout::pixel_is_point,
+                               [](std::uint32_t c, std::uint32_t) { return 800.0f + 10.0f * static_cast<float>(c); });
+  const TerrainMesh slope_mesh = build_terrain_mesh(slope, 33, 0.0f);
+  const TerrainVertex& s = slope_mesh.vertices[33 * 16 + 16];
+  const TerrainVertex& next = slope_mesh.vertices[33 * 16 + 17];
+  const glm::dvec3 ns(s.nx, s.ny, s.nz);
+  // 20 m higher per vertex (two samples); the normal of that slope leans west by rise / hypotenuse.
+  const double run = glm::dot(glm::dvec3(next.x - s.x, next.y - s.y, next.z - s.z), enu.east);
+  EXPECT_NEAR(glm::dot(ns, enu.east), -20.0 / std::hypot(20.0, run), 0.002);
+  EXPECT_NEAR(glm::dot(ns, enu.north), 0.0, 0.01);
+  EXPECT_NEAR(glm::length(ns), 1.0, 1e-5);
+}
+
+TEST(TerrainMesh, SkirtsHangBelowTheEdgesBySkirtDepth) {
+  const auto tile = tile_from(kAlpsTile, 65, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return 1200.0f; });
+  const TerrainMesh mesh = build_terrain_mesh(tile, 9, 0.0f);
+  const double depth = terrain::skirt_depth_m(kAlpsTile, 8);
+  ASSERT_GT(depth, 0.0);
+  const glm::dvec3 origin = to_dvec3(mesh.origin);
+  for (std::size_t k = 81; k < mesh.vertices.size(); ++k) {
+    const TerrainVertex& v = mesh.vertices[k];
+    const glm::dvec3 p = origin + glm::dvec3(v.x, v.y, v.z);
+    double lat = 0, lon = 0;
+    geo::from_ecef(to_ecef(p), lat, lon);
+    const double height = glm::dot(p - to_dvec3(ecef_from({lat, lon, 0.0})), enu_axes_at(lat, lon).up);
+    EXPECT_NEAR(height, 1200.0 - depth, 0.05) << "skirt vertex " << k;
+  }
+}
+
+TEST(TerrainMesh, BilinearBetweenAreaSamplesAndHolesFilledAsUncovered) {
+  // Pixel-is-area, 4 samples: sample c's centre lies at (c + 0.5) / 4 of the tile.
+  auto tile = tile_from(kAlpsTile, 4, terrain::SampleLayout::pixel_is_area,
+                        [](std::uint32_t c, std::uint32_t) { return 100.0f * static_cast<float>(c); });
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 0.5 / 4, 0.5), 0.0f);
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0 / 4, 0.5), 50.0f);
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0, 0.5), 300.0f);  // the last half cell: the edge sample
+  tile.heights[1] = terrain::kNoHeight;  // row 0, column 1
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0 / 4, 0.0), 0.0f);  // the hole's weight goes to its neighbour
+
+  const auto holes = tile_from(kAlpsTile, 2, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return terrain::kNoHeight; });
+  const TerrainMesh mesh = build_terrain_mesh(holes, 3, 432.0f);
+  for (const auto& v : mesh.vertices) {
+    EXPECT_EQ(v.covered, 0.0f);
+    EXPECT_EQ(v.height_m, 432.0f);
+  }
+}
+
+TEST(TerrainMesh, BadTilesAreErrorsNamingTheTile) {
+  terrain::HeightTile broken;
+  broken.id = kAlpsTile;
+  broken.width = broken.height = 4;
+  broken.heights.resize(3);
+  try {
+    build_terrain_mesh(broken, 5, 0.0f);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("12/2137/1445"), std::string::npos) << e.what();
+  }
+  const auto tile = tile_from(kAlpsTile, 2, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return 0.0f; });
+  EXPECT_THROW(build_terrain_mesh(tile, 1, 0.0f), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace trailray::render
