@@ -28,12 +28,24 @@ void add_terrain_options(CLI::App& cmd, TerrainOptions& o) {
       ->type_name("FILE");
 }
 
+void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
+  cmd.add_option("--imagery", o.imagery,
+                 "Imagery for the ground's colour: a raster file, a {z}/{x}/{y} tile folder, an .mbtiles file, an "
+                 "http(s) URL template, or none (default: none, a tint by height)")
+      ->type_name("SRC");
+}
+
 terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& o) {
   terrain::TerrainConfig c = terrain::load_terrain_config(o.config_file);
   if (!o.terrain.empty()) {
     terrain::SourceSettings s;
     s.source = o.terrain;
     c.terrain = s;
+  }
+  if (!o.imagery.empty()) {
+    terrain::SourceSettings s;
+    s.source = o.imagery;
+    c.imagery = s;
   }
   if (!o.terrain_encoding.empty()) c.terrain.encoding = terrain::parse_height_encoding(o.terrain_encoding);
   if (!o.terrain_scheme.empty())

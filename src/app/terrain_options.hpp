@@ -18,9 +18,12 @@ struct TerrainOptions {
   std::string terrain_scheme;
   std::optional<int> terrain_zoom;
   bool offline = false;
+  std::string imagery;  // --imagery, for commands that draw (add_imagery_option)
 };
 
 void add_terrain_options(CLI::App& command, TerrainOptions& options);
+// --imagery SRC (same spellings as --terrain), for the commands that draw terrain.
+void add_imagery_option(CLI::App& command, TerrainOptions& options);
 
 // The configuration file (if any) with the flags applied. Throws terrain::ConfigError.
 terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& options);

@@ -1,0 +1,119 @@
+// `trailray render` as a user runs it: a PNG of the requested size with terrain in it from the
+// shared Interlaken DEM and flight, the neutral ground with --terrain none, option errors.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "app/render_command.hpp"
+#include "run_command.hpp"
+#include "terrain/image_codec.hpp"
+#include "terrain/tile_fixtures.hpp"
+#include "test_support.hpp"
+
+using trailray::test::run_command;
+using trailray::test::shell_quote;
+using trailray::test::TempDir;
+
+namespace {
+
+struct Env {
+  TempDir home;
+  std::string prefix() const {
+    return "XDG_CONFIG_HOME=" + shell_quote((home.path() / "config").string()) +
+           " XDG_CACHE_HOME=" + shell_quote((home.path() / "cache").string()) + " TRAILRAY_CONFIG= " +
+           shell_quote(TRAILRAY_BINARY) + " render ";
+  }
+  std::string out() const { return (home.path() / "out.png").string(); }
+};
+
+trailray::terrain::DecodedImage read_png(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string bytes = s.str();
+  return trailray::terrain::decode_image(
+      std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+}
+
+struct Rgb {
+  int r, g, b;
+};
+Rgb pixel(const trailray::terrain::DecodedImage& image, std::uint32_t x, std::uint32_t y) {
+  const std::size_t i = (std::size_t{y} * image.width + x) * image.channels;
+  return {image.samples8[i], image.samples8[i + 1], image.samples8[i + 2]};
+}
+// The hypsometric tint of low and middle heights: more green than red and blue.
+bool tinted(const Rgb& p) { return p.g > p.r + 5 && p.g > p.b + 5; }
+bool grey(const Rgb& p) { return std::abs(p.r - p.g) <= 3 && std::abs(p.g - p.b) <= 6; }
+
+}  // namespace
+
+TEST(RenderCli, FramesTheInterlakenFlightOnTheSharedDem) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
+  TRAILRAY_REQUIRE_DATA(flight, "igc/goigc_0100_interlaken.igc");
+  Env env;
+  const auto r = run_command(env.prefix() + shell_quote(flight.string()) + " --terrain " + shell_quote(dem.string()) +
+                             " --size 320x180 -o " + shell_quote(env.out()) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto image = read_png(env.out());
+  ASSERT_EQ(image.width, 320u);
+  ASSERT_EQ(image.height, 180u);
+  ASSERT_GE(image.channels, 3u);
+  // The framed flight is over the DEM: most of the picture is tinted terrain.
+  std::size_t terrain = 0;
+  for (std::uint32_t y = 0; y < 180; y += 4)
+    for (std::uint32_t x = 0; x < 320; x += 4) terrain += tinted(pixel(image, x, y)) ? 1 : 0;
+  EXPECT_GT(terrain, 80u * 45u / 2u) << "tinted pixels of 3600 sampled";
+  EXPECT_EQ(r.out.find("neutral ground"), std::string::npos) << r.out;
+}
+
+TEST(RenderCli, TerrainNoneDrawsTheNeutralGroundUnderTheSky) {
+  Env env;
+  const auto r = run_command(env.prefix() + "--terrain none --camera 46.7,7.85,1500,0,-5 --size 160x90 --time 2024-06-18T11:00:00Z -o " +
+                             shell_quote(env.out()) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("neutral ground"), std::string::npos) << r.out;
+  const auto image = read_png(env.out());
+  ASSERT_EQ(image.width, 160u);
+  ASSERT_EQ(image.height, 90u);
+  const Rgb sky = pixel(image, 80, 0), ground = pixel(image, 80, 89);
+  EXPECT_GT(sky.b, sky.r + 30) << "the top row is sky blue";
+  EXPECT_TRUE(grey(ground)) << ground.r << "," << ground.g << "," << ground.b;
+  EXPECT_FALSE(tinted(ground));
+}
+
+TEST(RenderCli, WrongOptionValuesGetMessages) {
+  Env env;
+  const std::string o = " -o " + shell_quote(env.out()) + " --terrain none";
+  struct Case {
+    std::string args, expected;
+  };
+  const Case cases[] = {
+      {"--camera 46.7,7.85,1500,0,-5 --size 100", "WxH"},
+      {"--camera 46.7,7.85,1500,0,-5 --size 0x90", "WxH"},
+      {"--camera 46.7,7.85", "LAT,LON,ALT,HEADING,PITCH"},
+      {"--camera 46.7,7.85,1500,0,-120", "pitch"},
+      {"", "--camera LAT,LON,ALT,HEADING,PITCH or --look-at"},
+      {"--camera 46.7,7.85,1500,0,-5 --look-at 46.7,7.85,1000", "exclude"},
+      {"--camera 46.7,7.85,1500,0,-5 --distance 500", "--look-at"},
+      {"--camera 46.7,7.85,1500,0,-5 --time yesterday", "ISO 8601"},
+      {"--camera 46.7,7.85,1500,0,-5 --fov 200", "--fov"},
+      {"--camera 46.7,7.85,1500,0,-5 --timeout 0", "--timeout"},
+  };
+  for (const Case& c : cases) {
+    const auto r = run_command(env.prefix() + c.args + o + " 2>&1");
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.expected), std::string::npos) << c.args << "\n" << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(env.out()));
+}
+
+TEST(RenderCli, ImageSizeParsing) {
+  using trailray::app::parse_image_size;
+  ASSERT_TRUE(parse_image_size("320x180"));
+  EXPECT_EQ(parse_image_size("320x180")->width, 320u);
+  EXPECT_EQ(parse_image_size("320X180")->height, 180u);
+  for (const char* bad : {"", "x", "320", "320x", "x180", "0x10", "10x0", "-1x10", "16385x10", "10x10x10", "1.5x2"})
+    EXPECT_FALSE(parse_image_size(bad)) << bad;
+}
