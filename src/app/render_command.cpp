@@ -146,14 +146,13 @@ int run_render(const RenderArgs& a) {
   if (!a.terrain.imagery.empty()) imagery = terrain::open_imagery_source(config.imagery, context);
 
   // The camera, and the neutral ground's height: the tracks' lowest point (DESIGN.md), else the
-  // terrain under the camera or target, else sea level.
+  // lowest terrain in view (NaN asks the renderer for it).
   double neutral = lowest_height(tracks.points);
   std::optional<render::Camera> camera;
   if (placement || look_at) {
     const render::GeoPosition& where = placement ? placement->position : look_at->target;
     double ground = ground_height_at(heights.get(), where.lat_deg, where.lon_deg);
-    if (std::isnan(neutral)) neutral = std::isnan(ground) ? 0.0 : ground;
-    if (std::isnan(ground)) ground = neutral;
+    if (std::isnan(ground)) ground = std::isnan(neutral) ? 0.0 : neutral;
     auto made = placement ? render::camera_at(*placement, lens, ground) : render::camera_looking_at(*look_at, lens, ground);
     if (!made.ok()) throw CLI::ValidationError(placement ? "--camera" : "--look-at", made.error);
     camera = std::move(*made.value);
@@ -163,11 +162,6 @@ int run_render(const RenderArgs& a) {
     auto framed = render::frame_points(tracks.points, framing);
     if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
     camera = framed.value->camera;
-    if (std::isnan(neutral)) {
-      const auto& target = framed.value->look_at.target;
-      neutral = ground_height_at(heights.get(), target.lat_deg, target.lon_deg);
-      if (std::isnan(neutral)) neutral = 0.0;
-    }
   }
 
   render::GlContext gl = render::GlContext::create_headless();
@@ -193,7 +187,7 @@ int run_render(const RenderArgs& a) {
     warn(fmt::format("{} tile{} failed; first: {}", r.failures.size(), r.failures.size() == 1 ? "" : "s", r.failures.front()));
   if (r.tiles_with_data == 0)
     warn(fmt::format("no terrain source covers the view ({}): drawing a neutral ground at {:.0f} m",
-                     heights ? heights->info().name : std::string("--terrain none"), neutral));
+                     heights ? heights->info().name : std::string("--terrain none"), r.neutral_ground_height_m));
   const render::SolarPosition sun = render::solar_position(unix_time, camera->geodetic().lat_deg, camera->geodetic().lon_deg);
   if (sun.elevation_deg < 0.0) warn(fmt::format("the sun is below the horizon ({:.1f} degrees) at that time", sun.elevation_deg));
   if (a.verbose) {

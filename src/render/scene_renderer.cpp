@@ -58,7 +58,10 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
                                                                        const SceneRenderOptions& options,
                                                                        SceneRenderReport& report) {
   const Clock::time_point deadline = Clock::now() + options.timeout;
-  const auto neutral = static_cast<float>(options.neutral_ground_height_m);
+  // NaN asks for the lowest loaded terrain in view (so the ground around a DEM does not stand
+  // above its valleys), refined after each round; sea level until something is loaded.
+  const bool lowest_in_view = std::isnan(options.neutral_ground_height_m);
+  float neutral = lowest_in_view ? 0.0f : static_cast<float>(options.neutral_ground_height_m);
   terrain::LodSettings settings;
   settings.max_screen_error_px = options.max_screen_error_px;
   settings.tile_samples = kTerrainGridVertices - 1;
@@ -95,10 +98,18 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
       report.timed_out = true;
       break;
     }
+    if (lowest_in_view) {
+      float lowest = INFINITY;
+      for (const auto& t : selection.tiles)
+        if (const auto tile = height_loader_->get(t.id); tile && tile->has_data()) lowest = std::min(lowest, tile->min_m);
+      if (std::isfinite(lowest)) neutral = lowest;
+    }
     previous = std::move(ids);
   }
+  report.neutral_ground_height_m = neutral;
 
   std::vector<DrawnTile> drawn;
+  report.neutral_ground_height_m = neutral;
   if (!height_loader_) {
     for (const auto& t : selection.tiles) drawn.push_back({t.id, neutral_tile(t.id), false});
     return drawn;
@@ -168,7 +179,7 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
   const std::vector<DrawnTile> tiles = load_height_tiles(camera, options, scene.report);
   const std::vector<TerrainImagery> imagery = load_imagery(tiles, options, deadline, scene.report);
 
-  const auto neutral = static_cast<float>(options.neutral_ground_height_m);
+  const auto neutral = static_cast<float>(scene.report.neutral_ground_height_m);
   const int max_zoom = sources_.heights != nullptr ? sources_.heights->info().max_zoom : kNeutralMaxZoom;
   std::vector<TerrainDrawItem> items;
   items.reserve(tiles.size());

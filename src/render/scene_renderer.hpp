@@ -38,6 +38,7 @@ struct SceneSources {
 
 struct SceneRenderOptions {
   glm::dvec3 sun_direction_ecef{0.0, 0.0, 1.0};  // unit, towards the sun (sun_position.hpp)
+  // NaN: the lowest height of the terrain loaded for the view (0 where there is none).
   double neutral_ground_height_m = 0.0;
   double max_screen_error_px = 2.0;
   std::chrono::milliseconds timeout{std::chrono::seconds(120)};  // for all tiles together
@@ -50,6 +51,7 @@ struct SceneRenderReport {
   std::size_t tiles_with_data = 0;     // of those: from the height source
   std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
   int selection_rounds = 0;
+  double neutral_ground_height_m = 0.0;  // where the neutral ground was drawn
   bool timed_out = false;              // drawn with what had arrived
   std::vector<std::string> failures;   // tile errors ("<source> z/x/y: ...")
 };
