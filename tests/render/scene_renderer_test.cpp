@@ -73,6 +73,31 @@ class RidgeSource : public terrain::HeightSource {
   terrain::SourceInfo info_;
 };
 
+// Imagery up to zoom 8 only (coarser than the terrain drawn): red west of kRidgeLon, blue east.
+class HalvesImagery : public terrain::ImagerySource {
+ public:
+  HalvesImagery() {
+    info_.name = "halves";
+    info_.max_zoom = 8;
+  }
+  const terrain::SourceInfo& info() const override { return info_; }
+  terrain::TileResult<terrain::ImageTile> load(const terrain::TileId& id, std::stop_token) override {
+    terrain::TileResult<terrain::ImageTile> r;
+    r.status = terrain::TileStatus::ok;
+    r.tile.id = id;
+    r.tile.width = r.tile.height = 256;
+    for (std::uint32_t row = 0; row < 256; ++row)
+      for (std::uint32_t col = 0; col < 256; ++col) {
+        const bool west = geo::latlon_from_tile_pixel(id, col + 0.5, row + 0.5, 256)->lon < kRidgeLon;
+        r.tile.rgba.insert(r.tile.rgba.end(), {std::uint8_t(west ? 220 : 20), 20, std::uint8_t(west ? 20 : 220), 255});
+      }
+    return r;
+  }
+
+ private:
+  terrain::SourceInfo info_;
+};
+
 glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
   const EnuAxes enu = enu_axes_at(lat, lon);
   const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
@@ -121,6 +146,30 @@ TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   const auto p = from_west.image.pixel(static_cast<std::uint32_t>(valley->x_px), static_cast<std::uint32_t>(valley->y_px));
   EXPECT_GT(p[1], p[0]);
   EXPECT_GT(p[1], p[2]);
+}
+
+TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
+  RidgeSource ridge;
+  HalvesImagery imagery;
+  SceneRenderer renderer({&ridge, &imagery});
+  const auto camera = camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, Lens{45.0, 160, 90}, 1000.0);
+  ASSERT_TRUE(camera.ok()) << camera.error;
+  SceneRenderOptions options;
+  options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 180.0, 89.0);
+  const RenderedScene scene = renderer.render(*camera.value, options);
+  keep_image(scene.image, "ridge_imagery.png");
+  EXPECT_GT(scene.report.imagery_tiles_used, 0u);
+  EXPECT_EQ(scene.report.imagery_tiles_used, scene.report.tiles_drawn);
+  const double deg_per_km = 1.0 / (111.320 * std::cos(kRidgeLat * M_PI / 180.0));
+  for (const double km : {-3.0, -0.5, 0.5, 3.0}) {
+    const auto at = camera.value->project(ecef_from({kRidgeLat, kRidgeLon + km * deg_per_km, km < -2 || km > 2 ? 1000.0 : 1600.0}));
+    ASSERT_TRUE(at);
+    const auto p = scene.image.pixel(static_cast<std::uint32_t>(at->x_px), static_cast<std::uint32_t>(at->y_px));
+    if (km < 0)
+      EXPECT_GT(p[0], p[2] + 60) << km << " km east: red expected";
+    else
+      EXPECT_GT(p[2], p[0] + 60) << km << " km east: blue expected";
+  }
 }
 
 TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
