@@ -95,7 +95,8 @@ double sun_time(const RenderArgs& a, const TrackPoints& tracks) {
   if (!a.time.empty()) {
     const auto t = track::parse_iso8601(a.time);
     if (!t)
-      throw CLI::ValidationError("--time", "'" + a.time + "' is not an ISO 8601 date and time, e.g. 2024-06-18T12:00:00Z");
+      throw CLI::ValidationError("--time",
+                                 "'" + a.time + "' is not an ISO 8601 date and time, e.g. 2024-06-18T12:00:00Z");
     return *t;
   }
   if (tracks.first_time_s) return render::solar_noon_utc(*tracks.first_time_s, tracks.first_lon_deg);
@@ -105,17 +106,19 @@ double sun_time(const RenderArgs& a, const TrackPoints& tracks) {
 int run_render(const RenderArgs& a) {
   const auto size = parse_image_size(a.size);
   if (!size)
-    throw CLI::ValidationError("--size", fmt::format("'{}' is not WxH with W and H in 1..{}, e.g. 1920x1080", a.size,
-                                                     kMaxImageSide));
+    throw CLI::ValidationError(
+        "--size", fmt::format("'{}' is not WxH with W and H in 1..{}, e.g. 1920x1080", a.size, kMaxImageSide));
   render::Lens lens{a.fov_deg, size->width, size->height};
   if (auto problem = render::lens_problem(lens)) throw CLI::ValidationError("--fov/--size", *problem);
-  if (!a.camera.empty() && !a.look_at.empty()) throw CLI::ValidationError("--camera", "and --look-at exclude each other");
+  if (!a.camera.empty() && !a.look_at.empty())
+    throw CLI::ValidationError("--camera", "and --look-at exclude each other");
   if (a.look_at.empty() && (a.distance_m || a.heading_deg || a.pitch_deg))
     throw CLI::ValidationError("--distance/--heading/--pitch", "go with --look-at LAT,LON,ALT");
   if (a.tracks.empty() && a.camera.empty() && a.look_at.empty())
     throw CLI::ValidationError(
-        "camera", "without a track, say where to look from: --camera LAT,LON,ALT,HEADING,PITCH or --look-at LAT,LON,ALT "
-                  "[--distance M --heading DEG --pitch DEG]");
+        "camera",
+        "without a track, say where to look from: --camera LAT,LON,ALT,HEADING,PITCH or --look-at LAT,LON,ALT "
+        "[--distance M --heading DEG --pitch DEG]");
   if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
     throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
   std::optional<render::CameraPlacement> placement;
@@ -153,7 +156,8 @@ int run_render(const RenderArgs& a) {
     const render::GeoPosition& where = placement ? placement->position : look_at->target;
     double ground = ground_height_at(heights.get(), where.lat_deg, where.lon_deg);
     if (std::isnan(ground)) ground = std::isnan(neutral) ? 0.0 : neutral;
-    auto made = placement ? render::camera_at(*placement, lens, ground) : render::camera_looking_at(*look_at, lens, ground);
+    auto made =
+        placement ? render::camera_at(*placement, lens, ground) : render::camera_looking_at(*look_at, lens, ground);
     if (!made.ok()) throw CLI::ValidationError(placement ? "--camera" : "--look-at", made.error);
     camera = std::move(*made.value);
   } else {
@@ -182,21 +186,27 @@ int run_render(const RenderArgs& a) {
   if (progress) fmt::print(stderr, "\r\x1b[K");
 
   const render::SceneRenderReport& r = scene.report;
-  if (r.timed_out) warn(fmt::format("tiles still loading after --timeout {} s: drawn with what had arrived", a.timeout_s));
+  if (r.timed_out)
+    warn(fmt::format("tiles still loading after --timeout {} s: drawn with what had arrived", a.timeout_s));
   if (!r.failures.empty())
-    warn(fmt::format("{} tile{} failed; first: {}", r.failures.size(), r.failures.size() == 1 ? "" : "s", r.failures.front()));
+    warn(fmt::format("{} tile{} failed; first: {}", r.failures.size(), r.failures.size() == 1 ? "" : "s",
+                     r.failures.front()));
   if (r.tiles_with_data == 0)
     warn(fmt::format("no terrain source covers the view ({}): drawing a neutral ground at {:.0f} m",
                      heights ? heights->info().name : std::string("--terrain none"), r.neutral_ground_height_m));
-  const render::SolarPosition sun = render::solar_position(unix_time, camera->geodetic().lat_deg, camera->geodetic().lon_deg);
-  if (sun.elevation_deg < 0.0) warn(fmt::format("the sun is below the horizon ({:.1f} degrees) at that time", sun.elevation_deg));
+  const render::SolarPosition sun =
+      render::solar_position(unix_time, camera->geodetic().lat_deg, camera->geodetic().lon_deg);
+  if (sun.elevation_deg < 0.0)
+    warn(fmt::format("the sun is below the horizon ({:.1f} degrees) at that time", sun.elevation_deg));
   if (a.verbose) {
     const auto& g = camera->geodetic();
-    fmt::print(stderr, "trailray: camera {:.6f},{:.6f},{:.0f} m heading {:.1f} pitch {:.1f}, sun azimuth {:.1f} elevation {:.1f}\n",
-               g.lat_deg, g.lon_deg, g.height_m, camera->heading_deg(), camera->pitch_deg(), sun.azimuth_deg,
-               sun.elevation_deg);
-    fmt::print(stderr, "trailray: {} tiles drawn ({} with terrain, {} with imagery), {} selection rounds\n", r.tiles_drawn,
-               r.tiles_with_data, r.imagery_tiles_used, r.selection_rounds);
+    fmt::print(
+        stderr,
+        "trailray: camera {:.6f},{:.6f},{:.0f} m heading {:.1f} pitch {:.1f}, sun azimuth {:.1f} elevation {:.1f}\n",
+        g.lat_deg, g.lon_deg, g.height_m, camera->heading_deg(), camera->pitch_deg(), sun.azimuth_deg,
+        sun.elevation_deg);
+    fmt::print(stderr, "trailray: {} tiles drawn ({} with terrain, {} with imagery), {} selection rounds\n",
+               r.tiles_drawn, r.tiles_with_data, r.imagery_tiles_used, r.selection_rounds);
   }
   render::write_srgb_png(a.output, scene.image);
   if (a.verbose) fmt::print(stderr, "trailray: wrote {} ({}x{})\n", a.output, scene.image.width, scene.image.height);
@@ -211,7 +221,8 @@ std::optional<ImageSize> parse_image_size(std::string_view text) {
   const auto number = [](std::string_view s) -> std::optional<std::uint32_t> {
     std::uint32_t v = 0;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (s.empty() || ec != std::errc() || end != s.data() + s.size() || v == 0 || v > kMaxImageSide) return std::nullopt;
+    if (s.empty() || ec != std::errc() || end != s.data() + s.size() || v == 0 || v > kMaxImageSide)
+      return std::nullopt;
     return v;
   };
   const auto w = number(text.substr(0, x)), h = number(text.substr(x + 1));
@@ -234,7 +245,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--camera", args->camera, "Camera position and orientation (degrees, metres)")
       ->type_name("LAT,LON,ALT,HEADING,PITCH");
   cmd->add_option("--look-at", args->look_at, "Look at this point (degrees, metres)")->type_name("LAT,LON,ALT");
-  cmd->add_option("--distance", args->distance_m, "With --look-at: camera distance from the point, metres (default 1000)")
+  cmd->add_option("--distance", args->distance_m,
+                  "With --look-at: camera distance from the point, metres (default 1000)")
       ->type_name("M");
   cmd->add_option("--heading", args->heading_deg, "With --look-at: degrees clockwise from north (default 0)")
       ->type_name("DEG");

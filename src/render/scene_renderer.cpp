@@ -101,7 +101,8 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
     if (lowest_in_view) {
       float lowest = INFINITY;
       for (const auto& t : selection.tiles)
-        if (const auto tile = height_loader_->get(t.id); tile && tile->has_data()) lowest = std::min(lowest, tile->min_m);
+        if (const auto tile = height_loader_->get(t.id); tile && tile->has_data())
+          lowest = std::min(lowest, tile->min_m);
       if (std::isfinite(lowest)) neutral = lowest;
     }
     previous = std::move(ids);
@@ -133,8 +134,8 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
 }
 
 std::vector<TerrainImagery> SceneRenderer::load_imagery(const std::vector<DrawnTile>& tiles,
-                                                        const SceneRenderOptions& options,
-                                                        Clock::time_point deadline, SceneRenderReport& report) {
+                                                        const SceneRenderOptions& options, Clock::time_point deadline,
+                                                        SceneRenderReport& report) {
   std::vector<TerrainImagery> imagery(tiles.size());
   if (!imagery_loader_) return imagery;
   const int max_zoom = sources_.imagery->info().max_zoom;
@@ -160,14 +161,16 @@ std::vector<TerrainImagery> SceneRenderer::load_imagery(const std::vector<DrawnT
     if (!image || image->width == 0 || image->height == 0) continue;
     auto it = imagery_textures_.find(*wanted[i]);
     if (it == imagery_textures_.end())
-      it = imagery_textures_.emplace(*wanted[i], upload_imagery_texture(image->width, image->height, image->rgba)).first;
+      it =
+          imagery_textures_.emplace(*wanted[i], upload_imagery_texture(image->width, image->height, image->rgba)).first;
     const int levels_up = tiles[i].id.zoom - wanted[i]->zoom;
     const double scale = std::ldexp(1.0, -levels_up);
     const std::uint32_t mask = (1u << levels_up) - 1u;
     TerrainImagery& t = imagery[i];
     t.texture = &it->second;
     t.scale = glm::vec2(static_cast<float>(scale));
-    t.offset = glm::vec2(static_cast<float>((tiles[i].id.x & mask) * scale), static_cast<float>((tiles[i].id.y & mask) * scale));
+    t.offset = glm::vec2(static_cast<float>((tiles[i].id.x & mask) * scale),
+                         static_cast<float>((tiles[i].id.y & mask) * scale));
     ++report.imagery_tiles_used;
   }
   return imagery;

@@ -52,8 +52,8 @@ struct SceneRenderReport {
   std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
   int selection_rounds = 0;
   double neutral_ground_height_m = 0.0;  // where the neutral ground was drawn
-  bool timed_out = false;              // drawn with what had arrived
-  std::vector<std::string> failures;   // tile errors ("<source> z/x/y: ...")
+  bool timed_out = false;                // drawn with what had arrived
+  std::vector<std::string> failures;     // tile errors ("<source> z/x/y: ...")
 };
 
 struct RenderedScene {

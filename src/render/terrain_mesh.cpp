@@ -54,7 +54,8 @@ float sample_height_bilinear(const terrain::HeightTile& tile, double u, double v
   }
   if (weight <= 0.0) {
     // Exactly on a sample whose neighbours are holes, or only holes around: the nearest sample.
-    const float nearest = tile.at(static_cast<std::uint32_t>(std::lround(sx)), static_cast<std::uint32_t>(std::lround(sy)));
+    const float nearest =
+        tile.at(static_cast<std::uint32_t>(std::lround(sx)), static_cast<std::uint32_t>(std::lround(sy)));
     return nearest;
   }
   return static_cast<float>(sum / weight);
@@ -63,8 +64,8 @@ float sample_height_bilinear(const terrain::HeightTile& tile, double u, double v
 TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t grid_vertices, float fill_height_m) {
   check_tile(tile);
   if (grid_vertices < 2)
-    throw std::invalid_argument("terrain mesh: tile " + geo::to_string(tile.id) + " needs at least 2 grid vertices, not " +
-                                std::to_string(grid_vertices));
+    throw std::invalid_argument("terrain mesh: tile " + geo::to_string(tile.id) +
+                                " needs at least 2 grid vertices, not " + std::to_string(grid_vertices));
   const std::uint32_t n = grid_vertices;
   const std::uint32_t cells = n - 1;
 
@@ -104,13 +105,16 @@ TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t gr
       const std::size_t k = std::size_t{j} * n + i;
       // Central differences (one-sided on the edges) of the ECEF positions: the normal follows the
       // height differences and the ellipsoid's curvature alike.
-      const glm::dvec3 east = positions[std::size_t{j} * n + std::min(i + 1, cells)] - positions[std::size_t{j} * n + (i > 0 ? i - 1 : 0)];
-      const glm::dvec3 north = positions[std::size_t{j > 0 ? j - 1 : 0} * n + i] - positions[std::size_t{std::min(j + 1, cells)} * n + i];
+      const glm::dvec3 east =
+          positions[std::size_t{j} * n + std::min(i + 1, cells)] - positions[std::size_t{j} * n + (i > 0 ? i - 1 : 0)];
+      const glm::dvec3 north =
+          positions[std::size_t{j > 0 ? j - 1 : 0} * n + i] - positions[std::size_t{std::min(j + 1, cells)} * n + i];
       glm::dvec3 normal = glm::cross(east, north);
       const double length = glm::length(normal);
       normal = length > 0.0 ? normal / length : enu_axes_at(where[k].lat_deg, where[k].lon_deg).up;
       const glm::vec3 p = to_vec3(positions[k] - origin), nn = to_vec3(normal);
-      mesh.vertices.push_back({p.x, p.y, p.z, nn.x, nn.y, nn.z, heights[k], static_cast<float>(i) / static_cast<float>(cells),
+      mesh.vertices.push_back({p.x, p.y, p.z, nn.x, nn.y, nn.z, heights[k],
+                               static_cast<float>(i) / static_cast<float>(cells),
                                static_cast<float>(j) / static_cast<float>(cells), covered[k]});
     }
   }
@@ -124,10 +128,10 @@ TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t gr
 
   // Skirts: the perimeter once around, each vertex with a copy hanging straight down below it.
   std::vector<std::uint32_t> perimeter;
-  for (std::uint32_t i = 0; i < cells; ++i) perimeter.push_back(i);                      // north, west to east
-  for (std::uint32_t j = 0; j < cells; ++j) perimeter.push_back(j * n + cells);          // east, north to south
-  for (std::uint32_t i = cells; i > 0; --i) perimeter.push_back(cells * n + i);          // south, east to west
-  for (std::uint32_t j = cells; j > 0; --j) perimeter.push_back(j * n);                  // west, south to north
+  for (std::uint32_t i = 0; i < cells; ++i) perimeter.push_back(i);              // north, west to east
+  for (std::uint32_t j = 0; j < cells; ++j) perimeter.push_back(j * n + cells);  // east, north to south
+  for (std::uint32_t i = cells; i > 0; --i) perimeter.push_back(cells * n + i);  // south, east to west
+  for (std::uint32_t j = cells; j > 0; --j) perimeter.push_back(j * n);          // west, south to north
   const double depth = terrain::skirt_depth_m(tile.id, cells);
   const auto first_skirt = static_cast<std::uint32_t>(mesh.vertices.size());
   for (const std::uint32_t edge : perimeter) {

@@ -68,8 +68,8 @@ void TerrainPass::draw(const Camera& camera, std::span<const TerrainDrawItem> ti
 
 Texture upload_imagery_texture(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba) {
   if (width == 0 || height == 0 || rgba.size() != std::size_t{width} * height * 4)
-    throw RenderError("imagery texture: " + std::to_string(rgba.size()) + " bytes for " + std::to_string(width) + " x " +
-                      std::to_string(height) + " RGBA pixels");
+    throw RenderError("imagery texture: " + std::to_string(rgba.size()) + " bytes for " + std::to_string(width) +
+                      " x " + std::to_string(height) + " RGBA pixels");
   int levels = 1;
   for (std::uint32_t s = std::max(width, height); s > 1; s /= 2) ++levels;
   Texture texture = make_texture_2d(GL_SRGB8_ALPHA8, static_cast<int>(width), static_cast<int>(height), levels);

@@ -20,8 +20,8 @@ namespace trailray::render {
 
 struct TerrainLighting {
   glm::dvec3 sun_direction_ecef{0.0, 0.0, 1.0};  // unit, towards the sun
-  glm::vec3 sun_radiance{1.0f, 0.97f, 0.92f};     // linear, for a surface facing the sun
-  glm::vec3 sky_radiance{0.22f, 0.26f, 0.32f};    // linear, for a surface facing the zenith
+  glm::vec3 sun_radiance{1.0f, 0.97f, 0.92f};    // linear, for a surface facing the sun
+  glm::vec3 sky_radiance{0.22f, 0.26f, 0.32f};   // linear, for a surface facing the zenith
 };
 
 // Linear albedo of the neutral ground (DESIGN.md: where no source covers the view).

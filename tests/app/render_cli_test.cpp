@@ -21,8 +21,8 @@ struct Env {
   TempDir home;
   std::string prefix() const {
     return "XDG_CONFIG_HOME=" + shell_quote((home.path() / "config").string()) +
-           " XDG_CACHE_HOME=" + shell_quote((home.path() / "cache").string()) + " TRAILRAY_CONFIG= " +
-           shell_quote(TRAILRAY_BINARY) + " render ";
+           " XDG_CACHE_HOME=" + shell_quote((home.path() / "cache").string()) +
+           " TRAILRAY_CONFIG= " + shell_quote(TRAILRAY_BINARY) + " render ";
   }
   std::string out() const { return (home.path() / "out.png").string(); }
 };
@@ -32,8 +32,7 @@ trailray::terrain::DecodedImage read_png(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   const std::string bytes = s.str();
-  return trailray::terrain::decode_image(
-      std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+  return trailray::terrain::decode_image(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }
 
 struct Rgb {
@@ -70,8 +69,9 @@ TEST(RenderCli, FramesTheInterlakenFlightOnTheSharedDem) {
 
 TEST(RenderCli, TerrainNoneDrawsTheNeutralGroundUnderTheSky) {
   Env env;
-  const auto r = run_command(env.prefix() + "--terrain none --camera 46.7,7.85,1500,0,-5 --size 160x90 --time 2024-06-18T11:00:00Z -o " +
-                             shell_quote(env.out()) + " 2>&1");
+  const auto r = run_command(
+      env.prefix() + "--terrain none --camera 46.7,7.85,1500,0,-5 --size 160x90 --time 2024-06-18T11:00:00Z -o " +
+      shell_quote(env.out()) + " 2>&1");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("neutral ground"), std::string::npos) << r.out;
   const auto image = read_png(env.out());

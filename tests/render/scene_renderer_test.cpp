@@ -21,7 +21,9 @@ namespace {
 using test::GlTest;
 
 bool is_sky(const std::array<std::uint8_t, 4>& p) {
-  const auto near = [](std::uint8_t v, float c) { return std::abs(static_cast<int>(v) - static_cast<int>(std::lround(c * 255.0f))) <= 1; };
+  const auto near = [](std::uint8_t v, float c) {
+    return std::abs(static_cast<int>(v) - static_cast<int>(std::lround(c * 255.0f))) <= 1;
+  };
   return near(p[0], kSkyColorSrgb.r) && near(p[1], kSkyColorSrgb.g) && near(p[2], kSkyColorSrgb.b);
 }
 
@@ -106,7 +108,8 @@ glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation
 
 // With TRAILRAY_TEST_IMAGE_DIR set, each picture is also written there, to look at.
 void keep_image(const RgbaImage& image, const std::string& name) {
-  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR")) write_srgb_png(std::filesystem::path(dir) / name, image);
+  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
+    write_srgb_png(std::filesystem::path(dir) / name, image);
 }
 
 class SceneRendererTest : public GlTest {};
@@ -143,7 +146,8 @@ TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   // The valley floor at 1000 m is tinted green (hypsometric tint), not grey.
   const auto valley = camera.value->project(ecef_from({kRidgeLat, kRidgeLon - 3.5 * deg_per_km, 1000.0}));
   ASSERT_TRUE(valley);
-  const auto p = from_west.image.pixel(static_cast<std::uint32_t>(valley->x_px), static_cast<std::uint32_t>(valley->y_px));
+  const auto p =
+      from_west.image.pixel(static_cast<std::uint32_t>(valley->x_px), static_cast<std::uint32_t>(valley->y_px));
   EXPECT_GT(p[1], p[0]);
   EXPECT_GT(p[1], p[2]);
 }
@@ -162,7 +166,8 @@ TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
   EXPECT_EQ(scene.report.imagery_tiles_used, scene.report.tiles_drawn);
   const double deg_per_km = 1.0 / (111.320 * std::cos(kRidgeLat * M_PI / 180.0));
   for (const double km : {-3.0, -0.5, 0.5, 3.0}) {
-    const auto at = camera.value->project(ecef_from({kRidgeLat, kRidgeLon + km * deg_per_km, km < -2 || km > 2 ? 1000.0 : 1600.0}));
+    const auto at =
+        camera.value->project(ecef_from({kRidgeLat, kRidgeLon + km * deg_per_km, km < -2 || km > 2 ? 1000.0 : 1600.0}));
     ASSERT_TRUE(at);
     const auto p = scene.image.pixel(static_cast<std::uint32_t>(at->x_px), static_cast<std::uint32_t>(at->y_px));
     if (km < 0)
@@ -239,7 +244,8 @@ TEST_F(SceneRendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
   std::uint32_t top = 0;
   while (top < 180 && is_sky(scene.image.pixel(column, top))) ++top;
   // The silhouette's top pixel row holds the peak's projection (a pixel spans [top, top + 1)).
-  EXPECT_NEAR(top + 0.5, expected->y_px, 2.0) << "peak projects to (" << expected->x_px << ", " << expected->y_px << ")";
+  EXPECT_NEAR(top + 0.5, expected->y_px, 2.0)
+      << "peak projects to (" << expected->x_px << ", " << expected->y_px << ")";
 }
 
 }  // namespace

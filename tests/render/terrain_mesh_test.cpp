@@ -103,11 +103,12 @@ TEST(TerrainMesh, BilinearBetweenAreaSamplesAndHolesFilledAsUncovered) {
                         [](std::uint32_t c, std::uint32_t) { return 100.0f * static_cast<float>(c); });
   EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 0.5 / 4, 0.5), 0.0f);
   EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0 / 4, 0.5), 50.0f);
-  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0, 0.5), 300.0f);  // the last half cell: the edge sample
-  tile.heights[1] = terrain::kNoHeight;  // row 0, column 1
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0, 0.5), 300.0f);    // the last half cell: the edge sample
+  tile.heights[1] = terrain::kNoHeight;                               // row 0, column 1
   EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0 / 4, 0.0), 0.0f);  // the hole's weight goes to its neighbour
 
-  const auto holes = tile_from(kAlpsTile, 2, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return terrain::kNoHeight; });
+  const auto holes =
+      tile_from(kAlpsTile, 2, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return terrain::kNoHeight; });
   const TerrainMesh mesh = build_terrain_mesh(holes, 3, 432.0f);
   for (const auto& v : mesh.vertices) {
     EXPECT_EQ(v.covered, 0.0f);
