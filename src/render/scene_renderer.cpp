@@ -15,6 +15,9 @@ using Clock = std::chrono::steady_clock;
 // only the Earth's curvature asks for detail, and a zoom-12 tile (10 km) bends by under 2 m.
 constexpr int kNeutralMaxZoom = 12;
 constexpr int kMaxSelectionRounds = 4;
+// Vertices per side of a neutral ground tile: the LOD splits it until its geometric error (a
+// 64th of its width) is 2 px, so 16 cells keep its curvature's sag within a pixel or so.
+constexpr std::uint32_t kNeutralGridVertices = 17;
 
 std::chrono::milliseconds remaining(Clock::time_point deadline) {
   return std::max(std::chrono::milliseconds(0),
@@ -188,10 +191,13 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
   items.reserve(tiles.size());
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     const terrain::HeightTile& tile = *tiles[i].tile;
-    // The finest level carries every sample the source has; coarser levels the LOD grid.
-    const std::uint32_t grid = tiles[i].has_data && tile.id.zoom >= max_zoom
-                                   ? std::max(kTerrainGridVertices, full_resolution_grid(tile))
-                                   : kTerrainGridVertices;
+    // The finest level carries every sample the source has; coarser levels the LOD grid; the flat
+    // neutral ground only bends with the Earth, which a few vertices follow.
+    std::uint32_t grid = kTerrainGridVertices;
+    if (!tiles[i].has_data)
+      grid = kNeutralGridVertices;
+    else if (tile.id.zoom >= max_zoom)
+      grid = std::max(kTerrainGridVertices, full_resolution_grid(tile));
     const TerrainTileGpu& mesh = meshes_.get_or_upload(tile, grid, neutral);
     items.push_back({&mesh, imagery[i]});
     ++scene.report.tiles_drawn;
