@@ -4,8 +4,6 @@
 #include <EGL/eglext.h>
 
 #include <cstdio>
-#include <map>
-#include <mutex>
 #include <utility>
 
 #include "render/gl_api.hpp"
@@ -69,32 +67,12 @@ bool has_word(const char* list, std::string_view word) {
   return false;
 }
 
-// EGL has no reference count on displays: eglGetPlatformDisplay hands every caller the same
-// display, and eglTerminate ends it for all of them. Contexts on one display (tests create
-// several) therefore share it, and the last one to go terminates it.
-class DisplayUsers {
- public:
-  void add(EGLDisplay display) {
-    std::lock_guard lock(mutex_);
-    ++count_[display];
-  }
-  void remove(EGLDisplay display) {
-    std::lock_guard lock(mutex_);
-    auto it = count_.find(display);
-    if (it == count_.end() || --it->second > 0) return;
-    count_.erase(it);
-    eglTerminate(display);
-  }
-
- private:
-  std::mutex mutex_;
-  std::map<EGLDisplay, int> count_;
-};
-
-DisplayUsers& display_users() {
-  static DisplayUsers users;
-  return users;
-}
+// Displays are never terminated (eglTerminate). EGL hands every caller of eglGetPlatformDisplay
+// the same display and has no reference count on it: terminating it would end it for every other
+// context of the process (tests and the viewer hold several). And terminating makes Mesa unload
+// its driver, whose teardown leaks memory LeakSanitizer can then not even attribute. A display
+// stays initialized until the process exits, as in most EGL programs; initializing it again is a
+// no-op, so creating contexts over and over costs nothing more.
 
 // One way to a display: which platform, which native handle, and how to name it in messages.
 struct DisplayCandidate {
@@ -183,7 +161,6 @@ struct GlContext::State {
       eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);
     if (surface != EGL_NO_SURFACE) eglDestroySurface(display, surface);
-    display_users().remove(display);
     display = EGL_NO_DISPLAY;
     context = EGL_NO_CONTEXT;
     surface = EGL_NO_SURFACE;
@@ -201,7 +178,6 @@ std::string GlContext::State::open(const EglExtensions& egl, const DisplayCandid
   if (candidate_display == EGL_NO_DISPLAY) return egl_failure("eglGetPlatformDisplayEXT");
   EGLint egl_major = 0, egl_minor = 0;
   if (!eglInitialize(candidate_display, &egl_major, &egl_minor)) return egl_failure("eglInitialize");
-  display_users().add(candidate_display);
   state.display = candidate_display;
   state.platform = candidate.platform;
   auto fail = [&state](const std::string& why) {
