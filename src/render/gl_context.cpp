@@ -281,19 +281,25 @@ void GlContext::release() noexcept {
   state_.reset();
 }
 
+const GlContext::State& GlContext::state() const {
+  if (!state_) throw RenderError("this GL context was moved from: it holds no context any more");
+  return *state_;
+}
+
 void GlContext::make_current() const {
-  if (!eglMakeCurrent(state_->display, state_->surface, state_->surface, state_->context))
+  const State& current = state();
+  if (!eglMakeCurrent(current.display, current.surface, current.surface, current.context))
     throw RenderError("cannot make the GL context current: " + egl_failure("eglMakeCurrent"));
 }
 
 bool GlContext::is_current() const { return state_ && eglGetCurrentContext() == state_->context; }
-EglPlatform GlContext::platform() const { return state_->platform; }
-const std::string& GlContext::egl_description() const { return state_->egl_description; }
-const GlCapabilities& GlContext::capabilities() const { return state_->capabilities; }
+EglPlatform GlContext::platform() const { return state().platform; }
+const std::string& GlContext::egl_description() const { return state().egl_description; }
+const GlCapabilities& GlContext::capabilities() const { return state().capabilities; }
 
 std::vector<std::string> GlContext::describe() const {
   std::vector<std::string> lines{egl_description()};
-  for (std::string& line : state_->capabilities.describe()) lines.push_back(std::move(line));
+  for (std::string& line : state().capabilities.describe()) lines.push_back(std::move(line));
   return lines;
 }
 

@@ -47,6 +47,7 @@ class GlContext {
   // freed with it, so destroy them first (their wrappers would otherwise delete stale names).
   ~GlContext();
 
+  // The accessors below throw RenderError on a moved-from context (it holds none).
   // Makes the context current on the calling thread. Throws RenderError when EGL refuses.
   void make_current() const;
   bool is_current() const;
@@ -63,6 +64,7 @@ class GlContext {
   struct State;
   explicit GlContext(std::unique_ptr<State> state);
   void release() noexcept;
+  const State& state() const;
   std::unique_ptr<State> state_;
 };
 

@@ -98,7 +98,9 @@ TEST(GlContext, MovingKeepsTheContextAndEmptiesTheSource) {
   const std::string renderer = original.capabilities().renderer;
   GlContext moved = std::move(original);
   EXPECT_TRUE(moved.is_current());
-  EXPECT_FALSE(original.is_current());  // NOLINT(bugprone-use-after-move): a moved-from context is empty
+  EXPECT_FALSE(original.is_current());                 // NOLINT(bugprone-use-after-move): a moved-from context is empty
+  EXPECT_THROW(original.make_current(), RenderError);  // NOLINT(bugprone-use-after-move): an error, not a crash
+  EXPECT_THROW(original.capabilities(), RenderError);  // NOLINT(bugprone-use-after-move)
   EXPECT_EQ(moved.capabilities().renderer, renderer);
   GlContext assigned = GlContext::create_headless();
   assigned = std::move(moved);  // releases the context `assigned` held
