@@ -202,16 +202,28 @@ TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
     EXPECT_LE(std::abs(ground[0] - ground[1]), 3) << "column " << x;
     EXPECT_LE(std::abs(ground[1] - ground[2]), 6) << "column " << x;
   }
-  // The ground/sky boundary in the middle column is where the ellipsoid's horizon is (the
-  // neutral ground lies 500 m above it: a little above the ellipsoid's horizon row).
-  std::uint32_t first_ground = 0;
-  while (first_ground < 90 && is_sky(scene.image.pixel(80, first_ground))) ++first_ground;
-  const auto ground_horizon = [&] {
-    // The horizon of a sphere 500 m larger: the dip angle shrinks by about that height's share.
-    return *horizon;
-  }();
-  EXPECT_LE(first_ground, ground_horizon + 1.0);
-  EXPECT_GE(first_ground, ground_horizon - 4.0);
+}
+
+// Flat ground at the ellipsoid from 1500 m with a level camera: the ground meets the sky on the
+// ellipsoid's horizon row (earth curvature: 1.24 degrees below the horizontal), column by column.
+TEST_F(SceneRendererTest, FlatGroundMeetsTheSkyOnTheHorizonRowOfTheCurvedEarth) {
+  SceneRenderer renderer({nullptr, nullptr});
+  const Lens lens{20.0, 320, 180};
+  const auto camera = camera_at({{47.0, 8.0, 1500.0}, 30.0, 0.0}, lens, 0.0);
+  ASSERT_TRUE(camera.ok()) << camera.error;
+  SceneRenderOptions options;
+  options.neutral_ground_height_m = 0.0;
+  options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
+  const RenderedScene scene = renderer.render(*camera.value, options);
+  keep_image(scene.image, "horizon.png");
+  for (const std::uint32_t x : {0u, 100u, 160u, 319u}) {
+    const auto horizon = camera.value->horizon_row_px(x + 0.5);
+    ASSERT_TRUE(horizon);
+    ASSERT_GT(*horizon, 100.0);  // 1.24 degrees below the centre row at 9 px a degree
+    std::uint32_t first_ground = 0;
+    while (first_ground < 180 && is_sky(scene.image.pixel(x, first_ground))) ++first_ground;
+    EXPECT_NEAR(first_ground + 0.5, *horizon, 1.0) << "column " << x;
+  }
 }
 
 // The highest cell of the Interlaken DEM (2004.23 m at 46.734190 N, 7.919397 E, on the ridge at
