@@ -40,6 +40,7 @@ struct RenderArgs {
   std::string time;
   double timeout_s = 120.0;
   bool verbose = false;
+  bool no_ssao = false, no_atmosphere = false;
   track::ReadOptions read;
   TerrainOptions terrain;
 };
@@ -176,6 +177,8 @@ int run_render(const RenderArgs& a) {
   options.sun_direction_ecef = render::sun_direction_ecef(unix_time);
   options.neutral_ground_height_m = neutral;
   options.timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000.0));
+  options.ssao = !a.no_ssao;
+  options.atmosphere = !a.no_atmosphere;
   const bool progress = isatty(STDERR_FILENO) != 0;
   if (progress)
     options.on_progress = [](const terrain::LoadProgress& p) {
@@ -257,6 +260,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
       ->type_name("ISO8601");
   cmd->add_option("--timeout", args->timeout_s, "Seconds to wait for terrain tiles (default 120)")->type_name("S");
   cmd->add_flag("--verbose", args->verbose, "Log the GL context, camera, sun and tiles");
+  cmd->add_flag("--no-ssao", args->no_ssao, "No ambient occlusion (valleys and hollows not darkened)");
+  cmd->add_flag("--no-atmosphere", args->no_atmosphere, "No aerial perspective or sky gradient (no haze, a flat sky)");
   add_terrain_options(*cmd, args->terrain);
   add_imagery_option(*cmd, args->terrain);
   add_read_options(*cmd, args->read);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "render/gl_capabilities.hpp"
 #include "terrain/lod_selection.hpp"
 
 namespace trailray::render {
@@ -42,7 +43,8 @@ struct SceneRenderer::DrawnTile {
   bool has_data = false;
 };
 
-SceneRenderer::SceneRenderer(SceneSources sources, terrain::TileLoaderOptions loader_options) : sources_(sources) {
+SceneRenderer::SceneRenderer(SceneSources sources, terrain::TileLoaderOptions loader_options)
+    : sources_(sources), distance_encoding_(distance_encoding_for(query_gl_capabilities())) {
   if (sources_.heights != nullptr) {
     height_loader_ = std::make_unique<terrain::TileLoader<terrain::HeightTile>>(
         [source = sources_.heights](const terrain::TileId& id, std::stop_token stop) { return source->load(id, stop); },
@@ -205,12 +207,16 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
   }
 
   const Lens& lens = camera.lens();
-  FrameTarget target(static_cast<int>(lens.width_px), static_cast<int>(lens.height_px));
+  const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
+  const GBuffer gbuffer(width, height, distance_encoding_);
+  terrain_pass_.draw(gbuffer, camera, items);
+  const Texture* ambient_occlusion = options.ssao ? &ssao_pass_.run(gbuffer, camera) : nullptr;
+  FrameTarget target(width, height);
   target.bind();
-  TerrainPass::clear_to_sky();
-  TerrainLighting lighting;
-  lighting.sun_direction_ecef = options.sun_direction_ecef;
-  pass_.draw(camera, items, lighting);
+  ComposeSettings compose;
+  compose.atmosphere = options.atmosphere;
+  compose_pass_.draw(gbuffer, ambient_occlusion, camera,
+                     lighting_for(options.sun_direction_ecef, camera, compose.model), compose);
   scene.image = read_rgba8(0, 0, target.width(), target.height());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return scene;

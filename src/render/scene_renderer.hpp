@@ -1,7 +1,8 @@
 #pragma once
 // One picture of the terrain from a camera: choose the tiles the view wants (terrain LOD
 // selection), wait for them through the async loaders (with a timeout and progress), build and
-// upload their meshes, draw them lit by the sun, read the pixels back.
+// upload their meshes, fill the G-buffer, ambient occlusion, compose with sun, sky and atmosphere,
+// read the pixels back.
 //
 // The selection depends on the tiles' height ranges, which are known only once tiles are loaded,
 // so it is repeated (a few rounds at most) until it no longer changes. Where the height source has
@@ -19,7 +20,10 @@
 #include <vector>
 
 #include "render/camera.hpp"
+#include "render/compose_pass.hpp"
 #include "render/framebuffer_readback.hpp"
+#include "render/gbuffer.hpp"
+#include "render/ssao_pass.hpp"
 #include "render/terrain_mesh.hpp"
 #include "render/terrain_pass.hpp"
 #include "terrain/tile_loader.hpp"
@@ -42,6 +46,8 @@ struct SceneRenderOptions {
   double neutral_ground_height_m = 0.0;
   double max_screen_error_px = 2.0;
   std::chrono::milliseconds timeout{std::chrono::seconds(120)};  // for all tiles together
+  bool ssao = true;                                              // screen-space ambient occlusion (`--no-ssao`)
+  bool atmosphere = true;  // aerial perspective and sky (`--no-atmosphere`: no haze, a flat sky)
   // Called about every 100 ms while tiles load (on the calling thread).
   std::function<void(const terrain::LoadProgress&)> on_progress;
 };
@@ -74,6 +80,11 @@ class SceneRenderer {
   // std::invalid_argument for an unusable camera.
   RenderedScene render(const Camera& camera, const SceneRenderOptions& options);
 
+  // The G-buffer's distance encoding: from the context's capabilities, queried once at
+  // construction; tests force the packed path to check it against the float one.
+  DistanceEncoding distance_encoding() const { return distance_encoding_; }
+  void set_distance_encoding(DistanceEncoding encoding) { distance_encoding_ = encoding; }
+
  private:
   struct DrawnTile;
   std::vector<DrawnTile> load_height_tiles(const Camera& camera, const SceneRenderOptions& options,
@@ -84,7 +95,10 @@ class SceneRenderer {
   SceneSources sources_;
   std::unique_ptr<terrain::TileLoader<terrain::HeightTile>> height_loader_;
   std::unique_ptr<terrain::TileLoader<terrain::ImageTile>> imagery_loader_;
-  TerrainPass pass_;
+  DistanceEncoding distance_encoding_;
+  TerrainPass terrain_pass_;
+  SsaoPass ssao_pass_;
+  ComposePass compose_pass_;
   TerrainMeshCache meshes_;
   std::unordered_map<terrain::TileId, Texture> imagery_textures_;
 };

@@ -1,8 +1,8 @@
 #include "render/terrain_pass.hpp"
 
+#include <array>
 #include <string>
 
-#include "geo/tile_id.hpp"
 #include "render/render_error.hpp"
 
 namespace trailray::render {
@@ -13,45 +13,33 @@ void throw_on_gl_error(const char* what) {
   if (error != GL_NO_ERROR) throw RenderError(std::string(what) + " failed (GL error " + std::to_string(error) + ")");
 }
 
-// The ellipsoid normal at a point given in ECEF.
-glm::dvec3 up_at(const geo::Ecef& point) {
-  double lat = 0.0, lon = 0.0;
-  geo::from_ecef(point, lat, lon);
-  return enu_axes_at(lat, lon).up;
-}
-
 }  // namespace
 
 TerrainPass::TerrainPass() : program_(ShaderProgram::from_embedded("terrain.vert", "terrain.frag")) {}
 
-void TerrainPass::clear_to_sky() {
-  glClearColor(kSkyColorSrgb.r, kSkyColorSrgb.g, kSkyColorSrgb.b, 1.0f);
-  glClearDepthf(1.0f);
-  glDepthMask(GL_TRUE);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-}
-
-void TerrainPass::draw(const Camera& camera, std::span<const TerrainDrawItem> tiles,
-                       const TerrainLighting& lighting) const {
+void TerrainPass::draw(const GBuffer& gbuffer, const Camera& camera, std::span<const TerrainDrawItem> tiles) const {
+  gbuffer.bind_and_clear();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // Skirts face every way and tiles are seen from below at times (a camera under a cliff): no
   // culling; depth sorts it out.
   glDisable(GL_CULL_FACE);
   program_.use();
-  const glm::vec3 sun = glm::vec3(glm::normalize(lighting.sun_direction_ecef));
-  program_.set_vec3("u_sun_direction", sun.x, sun.y, sun.z);
-  program_.set_vec3("u_sun_radiance", lighting.sun_radiance.r, lighting.sun_radiance.g, lighting.sun_radiance.b);
-  program_.set_vec3("u_sky_radiance", lighting.sky_radiance.r, lighting.sky_radiance.g, lighting.sky_radiance.b);
+  const glm::dmat3 to_view = camera.view_rotation();
+  std::array<float, 9> rotation{};
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) rotation[static_cast<std::size_t>(c * 3 + r)] = static_cast<float>(to_view[c][r]);
+  program_.set_mat3("u_view_rotation", std::span<const float, 9>(rotation));
   program_.set_vec3("u_neutral_albedo", kNeutralGroundAlbedo.r, kNeutralGroundAlbedo.g, kNeutralGroundAlbedo.b);
+  program_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
   program_.set_int("u_imagery", 0);
   glActiveTexture(GL_TEXTURE0);
   for (const TerrainDrawItem& item : tiles) {
     if (item.mesh == nullptr || item.mesh->index_count == 0) continue;
     const std::array<float, 16> view_projection = camera.view_projection_relative_to(item.mesh->origin);
     program_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
-    const glm::vec3 up = glm::vec3(up_at(item.mesh->origin));
-    program_.set_vec3("u_up", up.x, up.y, up.z);
+    const glm::vec3 offset = camera.origin_minus_camera(item.mesh->origin);
+    program_.set_vec3("u_origin_minus_camera", offset.x, offset.y, offset.z);
     const bool has_imagery = item.imagery.texture != nullptr && *item.imagery.texture;
     program_.set_int("u_has_imagery", has_imagery ? 1 : 0);
     program_.set_vec4("u_imagery_transform", item.imagery.scale.x, item.imagery.scale.y, item.imagery.offset.x,

@@ -185,6 +185,7 @@ TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
   SceneRenderOptions options;
   options.neutral_ground_height_m = 500.0;
   options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
+  options.atmosphere = false;  // the flat sky, and ground colours without haze
   const RenderedScene scene = renderer.render(*camera.value, options);
   keep_image(scene.image, "neutral_ground.png");
   EXPECT_GT(scene.report.tiles_drawn, 0u);
@@ -214,6 +215,7 @@ TEST_F(SceneRendererTest, FlatGroundMeetsTheSkyOnTheHorizonRowOfTheCurvedEarth) 
   SceneRenderOptions options;
   options.neutral_ground_height_m = 0.0;
   options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
+  options.atmosphere = false;  // haze would blend the far ground into the sky at the horizon
   const RenderedScene scene = renderer.render(*camera.value, options);
   keep_image(scene.image, "horizon.png");
   for (const std::uint32_t x : {0u, 100u, 160u, 319u}) {
@@ -248,6 +250,7 @@ TEST_F(SceneRendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
   SceneRenderOptions options;
   options.neutral_ground_height_m = 560.0;
   options.sun_direction_ecef = sun_from(peak.lat_deg, peak.lon_deg, 180.0, 50.0);
+  options.atmosphere = false;  // the silhouette against the flat sky
   const RenderedScene scene = renderer.render(*camera.value, options);
   keep_image(scene.image, "interlaken_peak.png");
   EXPECT_GT(scene.report.tiles_with_data, 0u);

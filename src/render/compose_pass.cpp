@@ -1,0 +1,87 @@
+#include "render/compose_pass.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "render/render_error.hpp"
+
+namespace trailray::render {
+namespace {
+
+void throw_on_gl_error(const char* what) {
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) throw RenderError(std::string(what) + " failed (GL error " + std::to_string(error) + ")");
+}
+
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+void set_vec3(const ShaderProgram& program, std::string_view name, const glm::vec3& v) {
+  program.set_vec3(name, v.x, v.y, v.z);
+}
+
+}  // namespace
+
+SceneLighting lighting_for(const glm::dvec3& sun_direction_ecef, const Camera& camera, const AtmosphereModel& model) {
+  const GeoPosition& at = camera.geodetic();
+  const double elevation = elevation_deg(sun_direction_ecef, enu_axes_at(at.lat_deg, at.lon_deg).up);
+  SceneLighting lighting;
+  lighting.sun_direction_ecef = glm::normalize(sun_direction_ecef);
+  lighting.sun_radiance = sun_radiance(elevation, model);
+  lighting.sky_radiance = sky_radiance(elevation);
+  return lighting;
+}
+
+ComposePass::ComposePass()
+    : program_(ShaderProgram::from_embedded("fullscreen_triangle.vert", "compose.frag")),
+      fullscreen_(VertexArray::create()) {}
+
+void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion, const Camera& camera,
+                       const SceneLighting& lighting, const ComposeSettings& settings) const {
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  program_.use();
+  const glm::dmat3 to_view = camera.view_rotation();
+  const GeoPosition& at = camera.geodetic();
+  const glm::vec3 sun_view = glm::vec3(glm::normalize(to_view * lighting.sun_direction_ecef));
+  const glm::vec3 up_view = glm::vec3(to_view * enu_axes_at(at.lat_deg, at.lon_deg).up);
+  const double tan_v = std::tan(0.5 * camera.lens().vertical_fov_deg * M_PI / 180.0);
+  program_.set_vec2("u_tan_half_fov", static_cast<float>(tan_v * camera.lens().aspect()), static_cast<float>(tan_v));
+  set_vec3(program_, "u_sun_view", sun_view);
+  set_vec3(program_, "u_up_view", up_view);
+  set_vec3(program_, "u_sun_radiance", lighting.sun_radiance);
+  set_vec3(program_, "u_sky_radiance", lighting.sky_radiance);
+  set_vec3(
+      program_, "u_flat_sky",
+      glm::vec3(srgb_to_linear(kSkyColorSrgb.r), srgb_to_linear(kSkyColorSrgb.g), srgb_to_linear(kSkyColorSrgb.b)));
+  program_.set_int("u_atmosphere", settings.atmosphere ? 1 : 0);
+  const AtmosphereModel& m = settings.model;
+  set_vec3(program_, "u_rayleigh_per_m", m.rayleigh_per_m);
+  program_.set_float("u_rayleigh_scale_height", m.rayleigh_scale_height_m);
+  program_.set_float("u_mie_per_m", m.mie_per_m);
+  program_.set_float("u_mie_scale_height", m.mie_scale_height_m);
+  program_.set_float("u_mie_g", m.mie_asymmetry);
+  program_.set_float("u_inscatter_scale", m.inscatter_scale);
+  program_.set_float("u_camera_height", static_cast<float>(at.height_m));
+  program_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  const bool has_ao = ambient_occlusion != nullptr && *ambient_occlusion;
+  program_.set_int("u_has_ao", has_ao ? 1 : 0);
+
+  const GLuint textures[] = {gbuffer.albedo().id(), gbuffer.normal().id(), gbuffer.distance().id(),
+                             has_ao ? ambient_occlusion->id() : 0u};
+  const char* names[] = {"u_albedo", "u_normal", "u_distance", "u_ao"};
+  for (int unit = 0; unit < 4; ++unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, textures[unit]);
+    program_.set_int(names[unit], unit);
+  }
+  glBindVertexArray(fullscreen_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  for (int unit = 3; unit >= 0; --unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  throw_on_gl_error("composing the frame");
+}
+
+}  // namespace trailray::render
