@@ -28,6 +28,7 @@ struct FrameProfiler::PassRecord {
 // A frame's GPU queries, read together once the last of them has its result.
 struct FrameProfiler::PendingQuery {
   std::size_t frame = 0;
+  std::chrono::steady_clock::time_point begun;         // no GPU time in the frame can be longer than since then
   std::vector<std::pair<std::size_t, Query>> queries;  // pass index, query
 };
 
@@ -116,7 +117,7 @@ void FrameProfiler::begin_frame() {
   in_frame_ = true;
   if (gpu_timing_) {
     collect_gpu_results(false);
-    pending_.push_back(PendingQuery{frame, {}});
+    pending_.push_back(PendingQuery{frame, std::chrono::steady_clock::now(), {}});
   }
 }
 
@@ -130,8 +131,14 @@ void FrameProfiler::begin_pass(std::string_view name) {
   PassRecord& record = record_for(name);
   open_pass_ = record.name;
   if (gpu_timing_) {
-    Query query = free_queries_.empty() ? Query::create() : std::move(free_queries_.back());
-    if (!free_queries_.empty()) free_queries_.pop_back();
+    // Queries are reused once their results are read: no GL allocation per pass and frame.
+    Query query;
+    if (free_queries_.empty()) {
+      query = Query::create();
+    } else {
+      query = std::move(free_queries_.back());
+      free_queries_.pop_back();
+    }
     gl_->begin_query(GL_TIME_ELAPSED_EXT, query.id());
     pending_.back().queries.emplace_back(static_cast<std::size_t>(&record - passes_.data()), std::move(query));
   }
@@ -202,6 +209,7 @@ void FrameProfiler::collect_gpu_results(bool wait) {
   // result read now, so those frames get no GPU sample.
   GLint disjoint = 0;
   glGetIntegerv(GL_GPU_DISJOINT_EXT, &disjoint);
+  const auto now = std::chrono::steady_clock::now();
   for (PendingQuery& frame : ready) {
     std::vector<std::optional<double>> per_pass(passes_.size());
     for (auto& [pass, query] : frame.queries) {
@@ -211,6 +219,11 @@ void FrameProfiler::collect_gpu_results(bool wait) {
       free_queries_.push_back(std::move(query));
     }
     if (disjoint) continue;
+    // A time longer than the wall time since the frame began is not a measurement: llvmpipe
+    // answers a query that saw no rendered scene with an absolute clock reading (hours), which
+    // would swamp every mean. Such a frame is dropped like a disjoint one.
+    const double bound_ms = std::chrono::duration<double, std::milli>(now - frame.begun).count();
+    if (std::any_of(per_pass.begin(), per_pass.end(), [&](const auto& ms) { return ms && *ms > bound_ms; })) continue;
     for (std::size_t i = 0; i < passes_.size(); ++i) {
       if (per_pass[i]) push_sample(passes_[i].gpu_ms, *per_pass[i], frame_window_);
     }

@@ -4,8 +4,9 @@
 // steady_clock: what the pass costs the calling thread, including waits on the driver). GPU
 // time comes from EXT_disjoint_timer_query (GL_TIME_ELAPSED_EXT queries) where the context has
 // it: results are read a frame later (reading them at once would stall the pipeline), and a
-// frame during which the GPU reported a disjoint event (clock change, power state) has its GPU
-// times dropped, since they are meaningless. Without the extension the GPU column reads "n/a".
+// frame during which the GPU reported a disjoint event (clock change, power state), or with a
+// GPU time longer than the wall time since the frame began, has its GPU times dropped, since
+// they are meaningless. Without the extension the GPU column reads "n/a".
 //
 // Passes are flat: one pass at a time, begin and end by name. Misuse (a pass begun while another
 // is open, an end that does not match, a frame ended with a pass open) throws ProfilerError
@@ -44,10 +45,10 @@ struct PassTimes {
 
 class FrameProfiler {
  public:
-  // `gpu_timing`: use GL_TIME_ELAPSED_EXT queries (pass caps.disjoint_timer_query; the entry
-  // points are looked up here, and missing ones turn GPU timing off). Keeps the last
-  // `frame_window` frames (at least 1). The GL context must be current while profiling when
-  // GPU timing is on.
+  // GPU timing is on when `caps` has EXT_disjoint_timer_query and its entry points are found
+  // (eglGetProcAddress); otherwise the GPU column is "n/a". Keeps the last `frame_window` frames
+  // (at least 1). With GPU timing, the GL context must be current while profiling and when the
+  // profiler is destroyed (it owns its queries).
   FrameProfiler(const GlCapabilities& caps, std::size_t frame_window);
   ~FrameProfiler();
   FrameProfiler(const FrameProfiler&) = delete;
