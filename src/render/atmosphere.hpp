@@ -19,7 +19,7 @@ struct AtmosphereModel {
   float mie_asymmetry = 0.76f;  // Henyey-Greenstein g: most light forward, a glow around the sun
   // The scattered light's brightness relative to the sun's radiance (single scattering leaves out
   // the light scattered more than once; this puts the sky's brightness where it is seen).
-  float inscatter_scale = 0.8f;
+  float inscatter_scale = 0.55f;
 };
 
 // The sun's radiance at the ground for a sun `elevation_deg` above the horizon: the colour of a

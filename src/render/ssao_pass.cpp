@@ -81,6 +81,7 @@ const Texture& SsaoPass::run(const GBuffer& gbuffer, const Camera& camera, const
   occlusion_.set_mat4("u_projection", std::span<const float, 16>(projection));
   occlusion_.set_vec2("u_tan_half_fov", tan_half_fov.x, tan_half_fov.y);
   occlusion_.set_float("u_radius_fraction", settings.radius_fraction);
+  occlusion_.set_float("u_intensity", settings.intensity);
   const GLint kernel_location = occlusion_.uniform_location("u_kernel[0]");
   if (kernel_location >= 0) glUniform3fv(kernel_location, static_cast<GLsizei>(kernel_.size()), &kernel_.front().x);
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -25,7 +25,11 @@ std::vector<glm::vec3> hemisphere_kernel(int count);
 struct SsaoSettings {
   // The hemisphere's radius as a fraction of the pixel's distance: the scale of the hollows that
   // darken is the same at every distance (a few percent: valleys, not pebbles).
-  float radius_fraction = 0.05f;
+  float radius_fraction = 0.08f;
+  // Occlusion counted this many times over (1 - intensity * buried fraction, at least 0): a few
+  // samples within a bounded radius see only the nearest part of what hides the sky, and a
+  // valley should read as clearly as in shaded relief.
+  float intensity = 1.5f;
 };
 
 class SsaoPass {

@@ -17,6 +17,7 @@ uniform mat4 u_projection;
 uniform vec2 u_tan_half_fov;
 uniform vec3 u_kernel[kSamples];  // unit hemisphere (z up), ssao_pass.hpp
 uniform float u_radius_fraction;  // radius / distance
+uniform float u_intensity;        // ssao_pass.hpp
 
 in vec2 v_uv;
 out vec4 frag_ao;
@@ -57,5 +58,5 @@ void main() {
     float in_range = smoothstep(0.0, 1.0, radius / max(abs(distance_m - scene_m), 1e-3));
     occlusion += (scene_m < length(s) - 0.02 * radius ? 1.0 : 0.0) * in_range;
   }
-  frag_ao = vec4(vec3(1.0 - occlusion / float(kSamples)), 1.0);
+  frag_ao = vec4(vec3(clamp(1.0 - u_intensity * occlusion / float(kSamples), 0.0, 1.0)), 1.0);
 }
