@@ -145,9 +145,10 @@ int run_render(const RenderArgs& a) {
   terrain::SourceSettings height_settings = config.terrain;
   if (a.terrain.terrain_zoom) height_settings.max_zoom = *a.terrain.terrain_zoom;
   std::unique_ptr<terrain::HeightSource> heights = terrain::open_height_source(height_settings, context);
-  // Imagery only when asked for: without it the hypsometric tint shows the relief best.
-  std::unique_ptr<terrain::ImagerySource> imagery;
-  if (!a.terrain.imagery.empty()) imagery = terrain::open_imagery_source(config.imagery, context);
+  // Imagery from --imagery, else the config file's, else the built-in default (README); `none`
+  // gives the hypsometric tint, which shows the relief best. Tiles it cannot deliver (offline,
+  // unreachable) are tinted too, after one warning.
+  std::unique_ptr<terrain::ImagerySource> imagery = terrain::open_imagery_source(config.imagery, context);
 
   // The camera, and the neutral ground's height: the tracks' lowest point (DESIGN.md), else the
   // lowest terrain in view (NaN asks the renderer for it).

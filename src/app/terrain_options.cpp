@@ -31,7 +31,8 @@ void add_terrain_options(CLI::App& cmd, TerrainOptions& o) {
 void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
   cmd.add_option("--imagery", o.imagery,
                  "Imagery for the ground's colour: a raster file, a {z}/{x}/{y} tile folder, an .mbtiles file, an "
-                 "http(s) URL template, or none (default: none, a tint by height)")
+                 "http(s) URL template, or none: a tint by height (default: the config file's, else EOX Sentinel-2 "
+                 "cloudless)")
       ->type_name("SRC");
 }
 

@@ -22,7 +22,7 @@ struct Env {
   std::string prefix() const {
     return "XDG_CONFIG_HOME=" + shell_quote((home.path() / "config").string()) +
            " XDG_CACHE_HOME=" + shell_quote((home.path() / "cache").string()) +
-           " TRAILRAY_CONFIG= " + shell_quote(TRAILRAY_BINARY) + " render ";
+           " TRAILRAY_CONFIG= " + shell_quote(TRAILRAY_BINARY) + " render --imagery none ";
   }
   std::string out() const { return (home.path() / "out.png").string(); }
 };
