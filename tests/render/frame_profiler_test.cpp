@@ -23,7 +23,8 @@ using namespace std::chrono_literals;
 
 GlCapabilities without_gpu_timing() { return GlCapabilities{}; }
 
-const PassTimes& row(const std::vector<PassTimes>& rows, std::string_view name) {
+// By value: callers pass the temporary from times().
+PassTimes row(const std::vector<PassTimes>& rows, std::string_view name) {
   for (const PassTimes& r : rows) {
     if (r.name == name) return r;
   }
