@@ -41,6 +41,7 @@ class SavedState {
     cull_face_ = glIsEnabled(GL_CULL_FACE);
     depth_test_ = glIsEnabled(GL_DEPTH_TEST);
     glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
+    glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
   }
   SavedState(const SavedState&) = delete;
   SavedState& operator=(const SavedState&) = delete;
@@ -51,10 +52,11 @@ class SavedState {
     if (cull_face_) glEnable(GL_CULL_FACE);
     if (!depth_test_) glDisable(GL_DEPTH_TEST);
     glDepthMask(depth_mask_);
+    glDepthFunc(static_cast<GLenum>(depth_func_));
   }
 
  private:
-  GLint framebuffer_ = 0;
+  GLint framebuffer_ = 0, depth_func_ = GL_LESS;
   std::array<GLint, 4> viewport_{};
   std::array<GLboolean, 4> color_mask_{};
   GLboolean cull_face_ = GL_FALSE, depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE;

@@ -32,10 +32,12 @@ class ShadowMaps {
   const ShaderProgram& caster_program() const { return caster_program_; }
 
   // Renders every cascade: binds its layer, clears depth to far, calls `draw_casters` with its
-  // matrix (once per cascade, in order 0..3: a caster that wants the exact per-origin matrix
-  // counts the calls and asks cascades[i].view_projection_relative_to(its origin)) (depth test on, no colour, no culling: terrain is open). Restores the framebuffer,
-  // viewport, colour mask and culling it found. Throws RenderError when the cascades were
-  // computed for another map size (their texel snapping would not match) or GL reports an error.
+  // camera-relative matrix, depth test on, no colour, no culling (terrain is open). Called once
+  // per cascade, in order 0..3: a caster with its own origin that wants the exact matrix counts
+  // the calls and asks cascades[i].view_projection_relative_to(its origin). Restores the
+  // framebuffer, viewport, colour mask, depth state and culling it found. Throws RenderError
+  // when the cascades were computed for another map size (their texel snapping would not
+  // match) or GL reports an error.
   void render(const ShadowCascades& cascades, const DrawCasters& draw_casters) const;
 
   // Binds the maps to `texture_unit` and sets shadows.glsl's uniforms on `program` (which

@@ -175,6 +175,8 @@ TEST_F(ShadowMapsTest, RenderingLeavesTheCallersFramebufferAndViewportAsFound) {
   const ShadowCascades cascades(s.camera, s.sun, settings);
   const ShadowMaps maps(64);
   const test::RgbaTarget target(5, 3);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_DEPTH_TEST);
   int calls = 0;
   maps.render(cascades, [&](const std::array<float, 16>& matrix) {
     // Each cascade's own matrix, drawing into the shadow map's framebuffer at the map's size.
@@ -191,6 +193,11 @@ TEST_F(ShadowMapsTest, RenderingLeavesTheCallersFramebufferAndViewportAsFound) {
   std::array<GLint, 4> viewport{};
   glGetIntegerv(GL_VIEWPORT, viewport.data());
   EXPECT_EQ(viewport, (std::array<GLint, 4>{0, 0, 5, 3}));
+  GLint depth_func = 0;
+  glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
+  EXPECT_EQ(depth_func, GL_LEQUAL);
+  EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST));
+  glDepthFunc(GL_LESS);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
