@@ -40,7 +40,7 @@ struct RenderArgs {
   std::string time;
   double timeout_s = 120.0;
   bool verbose = false;
-  bool no_ssao = false, no_atmosphere = false;
+  bool no_ssao = false, no_atmosphere = false, no_shadows = false;
   track::ReadOptions read;
   TerrainOptions terrain;
 };
@@ -180,13 +180,14 @@ int run_render(const RenderArgs& a) {
   options.timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000.0));
   options.ssao = !a.no_ssao;
   options.atmosphere = !a.no_atmosphere;
+  options.shadows = !a.no_shadows;
   const bool progress = isatty(STDERR_FILENO) != 0;
   if (progress)
     options.on_progress = [](const terrain::LoadProgress& p) {
       fmt::print(stderr, "\rtiles: {}/{} loaded{}\x1b[K", p.loaded + p.no_data, p.wanted,
                  p.failed ? fmt::format(", {} failed", p.failed) : "");
     };
-  const render::RenderedScene scene = renderer.render(*camera, options);
+  render::RenderedScene scene = renderer.render(*camera, options);
   if (progress) fmt::print(stderr, "\r\x1b[K");
 
   const render::SceneRenderReport& r = scene.report;
@@ -263,6 +264,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--verbose", args->verbose, "Log the GL context, camera, sun and tiles");
   cmd->add_flag("--no-ssao", args->no_ssao, "No ambient occlusion (valleys and hollows not darkened)");
   cmd->add_flag("--no-atmosphere", args->no_atmosphere, "No aerial perspective or sky gradient (no haze, a flat sky)");
+  cmd->add_flag("--no-shadows", args->no_shadows, "No cast shadows (slopes still shaded by their angle to the sun)");
   add_terrain_options(*cmd, args->terrain);
   add_imagery_option(*cmd, args->terrain);
   add_read_options(*cmd, args->read);

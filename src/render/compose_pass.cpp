@@ -1,6 +1,8 @@
 #include "render/compose_pass.hpp"
 
+#include <array>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "render/render_error.hpp"
@@ -12,6 +14,9 @@ void throw_on_gl_error(const char* what) {
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) throw RenderError(std::string(what) + " failed (GL error " + std::to_string(error) + ")");
 }
+
+// Units 0..3 hold the G-buffer and the ambient occlusion.
+constexpr GLuint kShadowUnit = 4;
 
 float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
@@ -35,8 +40,8 @@ ComposePass::ComposePass()
     : program_(ShaderProgram::from_embedded("fullscreen_triangle.vert", "compose.frag")),
       fullscreen_(VertexArray::create()) {}
 
-void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion, const Camera& camera,
-                       const SceneLighting& lighting, const ComposeSettings& settings) const {
+void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion, const ComposeShadows* shadows,
+                       const Camera& camera, const SceneLighting& lighting, const ComposeSettings& settings) const {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   program_.use();
@@ -65,6 +70,19 @@ void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion,
   program_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
   const bool has_ao = ambient_occlusion != nullptr && *ambient_occlusion;
   program_.set_int("u_has_ao", has_ao ? 1 : 0);
+  // The shadow lookup works in camera-relative ECEF (the cascades' matrices); the G-buffer is in
+  // view space: the shader turns its positions and normals back with the view rotation's inverse.
+  const glm::dmat3 to_ecef = glm::transpose(to_view);
+  std::array<float, 9> view_to_ecef{};
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) view_to_ecef[static_cast<std::size_t>(c * 3 + r)] = static_cast<float>(to_ecef[c][r]);
+  program_.set_mat3("u_view_to_ecef", std::span<const float, 9>(view_to_ecef));
+  const bool has_shadows = shadows != nullptr && shadows->maps != nullptr && shadows->cascades != nullptr;
+  program_.set_int("u_has_shadows", has_shadows ? 1 : 0);
+  // The array sampler always gets its own unit: two sampler types on one unit is a GL error at
+  // the draw even when the shader never samples it.
+  program_.set_int("u_shadow_maps", kShadowUnit);
+  if (has_shadows) shadows->maps->bind_for_lookup(program_, *shadows->cascades, kShadowUnit);
 
   const GLuint textures[] = {gbuffer.albedo().id(), gbuffer.normal().id(), gbuffer.distance().id(),
                              has_ao ? ambient_occlusion->id() : 0u};
@@ -80,6 +98,11 @@ void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion,
   for (int unit = 3; unit >= 0; --unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  if (has_shadows) {
+    glActiveTexture(GL_TEXTURE0 + kShadowUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    glActiveTexture(GL_TEXTURE0);
   }
   throw_on_gl_error("composing the frame");
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The compose pass (shaders/compose.frag): lights the G-buffer with the sun and the sky, darkens
-// the sky light by the ambient occlusion, leaves a hook for the shadow maps, adds the atmosphere
+// the sky light by the ambient occlusion, shades the sun by the cascaded shadow maps, adds the atmosphere
 // (aerial perspective over the terrain, the sky where there is none), and writes sRGB into the
 // bound RGBA8 framebuffer.
 
@@ -11,6 +11,7 @@
 #include "render/gbuffer.hpp"
 #include "render/gl_objects.hpp"
 #include "render/shader_program.hpp"
+#include "render/shadow_maps.hpp"
 
 namespace trailray::render {
 
@@ -32,15 +33,23 @@ struct ComposeSettings {
   AtmosphereModel model;
 };
 
+// The sun's shadows for the compose pass: the rendered maps and the cascades they were rendered
+// for (both outlive the draw).
+struct ComposeShadows {
+  const ShadowMaps* maps = nullptr;
+  const ShadowCascades* cascades = nullptr;
+};
+
 class ComposePass {
  public:
   // Compiles the shader (the GL context must be current). Throws ShaderError.
   ComposePass();
 
   // Draws every pixel of the bound framebuffer (its viewport the G-buffer's size) from the
-  // G-buffer; `ambient_occlusion` nullptr: none. Throws RenderError.
-  void draw(const GBuffer& gbuffer, const Texture* ambient_occlusion, const Camera& camera,
-            const SceneLighting& lighting, const ComposeSettings& settings) const;
+  // G-buffer; `ambient_occlusion` nullptr: none; `shadows` nullptr: the sun reaches everything.
+  // Throws RenderError.
+  void draw(const GBuffer& gbuffer, const Texture* ambient_occlusion, const ComposeShadows* shadows,
+            const Camera& camera, const SceneLighting& lighting, const ComposeSettings& settings) const;
 
  private:
   ShaderProgram program_;

@@ -1,10 +1,14 @@
 #include "render/scene_renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
+#include <string_view>
 #include <utility>
 
 #include "render/gl_capabilities.hpp"
+#include "render/shadow_cascades.hpp"
 #include "terrain/lod_selection.hpp"
 
 namespace trailray::render {
@@ -33,6 +37,14 @@ std::shared_ptr<const terrain::HeightTile> neutral_tile(const terrain::TileId& i
   tile->layout = terrain::SampleLayout::pixel_is_point;
   tile->heights.assign(4, terrain::kNoHeight);
   return tile;
+}
+
+// Times `run` as the profiler's pass `name` (when there is a profiler).
+template <typename Run>
+void timed(FrameProfiler* profiler, std::string_view name, Run&& run) {
+  if (profiler == nullptr) return run();
+  const FrameProfiler::Scope scope(*profiler, name);
+  run();
 }
 
 }  // namespace
@@ -208,17 +220,65 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
 
   const Lens& lens = camera.lens();
   const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
-  const GBuffer gbuffer(width, height, distance_encoding_);
-  terrain_pass_.draw(gbuffer, camera, items);
-  const Texture* ambient_occlusion = options.ssao ? &ssao_pass_.run(gbuffer, camera) : nullptr;
-  FrameTarget target(width, height);
-  target.bind();
   ComposeSettings compose;
   compose.atmosphere = options.atmosphere;
-  compose_pass_.draw(gbuffer, ambient_occlusion, camera,
-                     lighting_for(options.sun_direction_ecef, camera, compose.model), compose);
-  scene.image = read_rgba8(0, 0, target.width(), target.height());
+  const SceneLighting lighting = lighting_for(options.sun_direction_ecef, camera, compose.model);
+  // The sun's disc below the horizon gives no direct light (sun_radiance is 0): nothing to shade.
+  const bool sun_up = glm::dot(lighting.sun_radiance, glm::vec3(1.0f)) > 0.0f;
+  std::optional<ShadowCascades> cascades;
+  if (options.shadows && sun_up) {
+    ShadowCascadeSettings shadow_settings;
+    shadow_settings.map_size_px = options.shadow_map_size_px;
+    // Casters reach towards the sun by the height span of what is drawn.
+    float lowest = neutral, highest = neutral;
+    for (const auto& t : tiles)
+      if (t.has_data) {
+        lowest = std::min(lowest, t.tile->min_m);
+        highest = std::max(highest, t.tile->max_m);
+      }
+    shadow_settings.caster_height_span_m = std::max(0.0, static_cast<double>(highest) - lowest);
+    cascades.emplace(camera, options.sun_direction_ecef, shadow_settings);
+    if (!shadow_maps_ || shadow_maps_->map_size_px() != options.shadow_map_size_px)
+      shadow_maps_.emplace(options.shadow_map_size_px);
+  }
+
+  FrameProfiler* profiler = options.profiler;
+  if (profiler != nullptr) profiler->begin_frame();
+  if (cascades) {
+    timed(profiler, "shadows", [&] {
+      const ShaderProgram& casters = shadow_maps_->caster_program();
+      std::size_t cascade = 0;
+      // Each tile with its own origin: the cascade's matrix relative to it, taken in double.
+      shadow_maps_->render(*cascades, [&](const std::array<float, 16>&) {
+        casters.use();
+        for (const TerrainDrawItem& item : items) {
+          if (item.mesh == nullptr || item.mesh->index_count == 0) continue;
+          const std::array<float, 16> matrix = (*cascades)[cascade].view_projection_relative_to(item.mesh->origin);
+          casters.set_mat4("u_light_view_projection", std::span<const float, 16>(matrix));
+          glBindVertexArray(item.mesh->vertex_array.id());
+          glDrawElements(GL_TRIANGLES, item.mesh->index_count, GL_UNSIGNED_INT, nullptr);
+        }
+        glBindVertexArray(0);
+        ++cascade;
+      });
+    });
+    scene.report.shadows_drawn = true;
+  }
+  const GBuffer gbuffer(width, height, distance_encoding_);
+  timed(profiler, "tiles", [&] { terrain_pass_.draw(gbuffer, camera, items); });
+  const Texture* ambient_occlusion = nullptr;
+  if (options.ssao) timed(profiler, "ssao", [&] { ambient_occlusion = &ssao_pass_.run(gbuffer, camera); });
+  FrameTarget target(width, height);
+  // The atmosphere (aerial perspective and sky) is drawn by the compose pass's one draw: its time
+  // is compose's, and the profiler's "atmosphere" row stays empty.
+  timed(profiler, "compose", [&] {
+    target.bind();
+    const ComposeShadows shadows{cascades ? &*shadow_maps_ : nullptr, cascades ? &*cascades : nullptr};
+    compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
+  });
+  timed(profiler, "readback", [&] { scene.image = read_rgba8(0, 0, target.width(), target.height()); });
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (profiler != nullptr) profiler->end_frame();
   return scene;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // One picture of the terrain from a camera: choose the tiles the view wants (terrain LOD
 // selection), wait for them through the async loaders (with a timeout and progress), build and
-// upload their meshes, fill the G-buffer, ambient occlusion, compose with sun, sky and atmosphere,
-// read the pixels back.
+// upload their meshes, render the sun's cascaded shadow maps with the tiles as casters, fill the
+// G-buffer, ambient occlusion, compose with sun, shadows, sky and atmosphere, read the pixels back.
 //
 // The selection depends on the tiles' height ranges, which are known only once tiles are loaded,
 // so it is repeated (a few rounds at most) until it no longer changes. Where the height source has
@@ -15,14 +15,17 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "render/camera.hpp"
 #include "render/compose_pass.hpp"
+#include "render/frame_profiler.hpp"
 #include "render/framebuffer_readback.hpp"
 #include "render/gbuffer.hpp"
+#include "render/shadow_maps.hpp"
 #include "render/ssao_pass.hpp"
 #include "render/terrain_mesh.hpp"
 #include "render/terrain_pass.hpp"
@@ -48,6 +51,11 @@ struct SceneRenderOptions {
   std::chrono::milliseconds timeout{std::chrono::seconds(120)};  // for all tiles together
   bool ssao = true;                                              // screen-space ambient occlusion (`--no-ssao`)
   bool atmosphere = true;  // aerial perspective and sky (`--no-atmosphere`: no haze, a flat sky)
+  bool shadows = true;     // cascaded shadow maps of the sun (`--no-shadows`)
+  int shadow_map_size_px = 2048;  // each cascade's square depth map
+  // When set, the frame's passes (shadows, tiles, ssao, compose, readback) are timed as one
+  // profiler frame, begun after the tiles are loaded.
+  FrameProfiler* profiler = nullptr;
   // Called about every 100 ms while tiles load (on the calling thread).
   std::function<void(const terrain::LoadProgress&)> on_progress;
 };
@@ -59,6 +67,7 @@ struct SceneRenderReport {
   int selection_rounds = 0;
   double neutral_ground_height_m = 0.0;  // where the neutral ground was drawn
   bool timed_out = false;                // drawn with what had arrived
+  bool shadows_drawn = false;            // false: switched off, or the sun below the horizon
   std::vector<std::string> failures;     // tile errors ("<source> z/x/y: ...")
 };
 
@@ -99,6 +108,7 @@ class SceneRenderer {
   TerrainPass terrain_pass_;
   SsaoPass ssao_pass_;
   ComposePass compose_pass_;
+  std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
   TerrainMeshCache meshes_;
   std::unordered_map<terrain::TileId, Texture> imagery_textures_;
 };

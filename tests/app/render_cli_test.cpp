@@ -117,3 +117,30 @@ TEST(RenderCli, ImageSizeParsing) {
   for (const char* bad : {"", "x", "320", "320x", "x180", "0x10", "10x0", "-1x10", "16385x10", "10x10x10", "1.5x2"})
     EXPECT_FALSE(parse_image_size(bad)) << bad;
 }
+
+// Over the shared DEM with a low sun from the west-northwest: cast shadows darken part of the
+// picture, and --no-shadows takes them away (nothing gets darker without them).
+TEST(RenderCli, NoShadowsChangesThePicture) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
+  Env env;
+  const std::string common = env.prefix() + "--terrain " + shell_quote(dem.string()) +
+                             " --look-at 46.705,7.872,900 --distance 10500 --heading 18 --pitch -22"
+                             " --time 2024-06-18T17:30:00Z --size 240x135 -o ";
+  const std::string without = (env.home.path() / "no_shadows.png").string();
+  const auto a = run_command(common + shell_quote(env.out()) + " 2>&1");
+  ASSERT_EQ(a.status, 0) << a.out;
+  const auto b = run_command(common + shell_quote(without) + " --no-shadows 2>&1");
+  ASSERT_EQ(b.status, 0) << b.out;
+  const auto shadowed = read_png(env.out()), plain = read_png(without);
+  ASSERT_EQ(shadowed.width, plain.width);
+  std::size_t darker = 0, brighter = 0;
+  for (std::uint32_t y = 0; y < 135; ++y)
+    for (std::uint32_t x = 0; x < 240; ++x) {
+      const Rgb s = pixel(shadowed, x, y), p = pixel(plain, x, y);
+      const int diff = (s.r + s.g + s.b) - (p.r + p.g + p.b);
+      darker += diff < -15 ? 1 : 0;
+      brighter += diff > 3 ? 1 : 0;
+    }
+  EXPECT_GT(darker, 240u * 135u / 50u) << "pixels in cast shadow";
+  EXPECT_EQ(brighter, 0u) << "shadows only take light away";
+}

@@ -1,5 +1,5 @@
 #version 300 es
-// Compose (DESIGN.md "The frame", step 5): lights the G-buffer (sun x Lambert x shadow + sky
+// Compose (DESIGN.md "The frame", step 5): lights the G-buffer (sun x Lambert x shadow (cascaded shadow maps) + sky
 // light from the normal's up component x ambient occlusion), then the atmosphere: terrain fades
 // into the light the air scatters by its distance, and where there is no terrain the sky is that
 // light along an endless ray. Linear light throughout, sRGB-encoded once at the end.
@@ -7,6 +7,7 @@ precision highp float;
 
 #include "atmosphere.glsl"
 #include "gbuffer.glsl"
+#include "shadows.glsl"
 #include "srgb.glsl"
 
 uniform sampler2D u_albedo;
@@ -16,6 +17,8 @@ uniform sampler2D u_ao;
 uniform bool u_packed_distance;
 uniform bool u_has_ao;
 uniform bool u_atmosphere;
+uniform bool u_has_shadows;
+uniform mat3 u_view_to_ecef;  // view-space directions -> ECEF (the shadow matrices' frame)
 uniform vec2 u_tan_half_fov;
 uniform vec3 u_sun_view;  // unit, towards the sun, view space
 uniform vec3 u_up_view;   // the ellipsoid normal under the camera, view space
@@ -50,8 +53,14 @@ void main() {
     vec3 albedo = texelFetch(u_albedo, pixel, 0).rgb;
     vec3 normal = decode_normal(texelFetch(u_normal, pixel, 0));
     float ao = u_has_ao ? texelFetch(u_ao, pixel, 0).r : 1.0;
-    // TODO(shadows): the cascaded shadow maps' visibility (shadow_maps.hpp) goes here.
     float shadow = 1.0;
+    if (u_has_shadows) {
+      // The pixel's position relative to the camera from its distance along its view ray; the
+      // lookup wants it, its normal and the sun in the cascades' camera-relative ECEF frame.
+      vec3 position_view = ray * distance_m;
+      shadow = shadow_visibility(u_view_to_ecef * position_view, -position_view.z, u_view_to_ecef * normal,
+                                 u_view_to_ecef * u_sun_view);
+    }
     float sun = max(dot(normal, u_sun_view), 0.0) * shadow;
     float sky = 0.5 + 0.5 * dot(normal, u_up_view);
     color = albedo * (u_sun_radiance * sun + u_sky_radiance * sky * ao);

@@ -1,0 +1,180 @@
+// The sun's cascaded shadows in the whole frame (shadow maps rendered from the terrain tiles,
+// looked up by the compose pass), headless and small: a ridge lit by a low sun from the west
+// shades the valley floor east of it and nothing else; the lit slope gets no acne; a sun below
+// the horizon does no shadow work.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "geo/tile_id.hpp"
+#include "gl_test_support.hpp"
+#include "render/camera.hpp"
+#include "render/scene_renderer.hpp"
+
+namespace trailray::render {
+namespace {
+
+using test::GlTest;
+
+double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
+  double sum = 0.0;
+  int n = 0;
+  for (int j = -radius; j <= radius; ++j)
+    for (int i = -radius; i <= radius; ++i) {
+      const long px = std::lround(x) + i, py = std::lround(y) + j;
+      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+      sum += luminance(image.pixel(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py)));
+      ++n;
+    }
+  return n ? sum / n : 0.0;
+}
+
+void keep_image(const RgbaImage& image, const std::string& name) {
+  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
+    write_srgb_png(std::filesystem::path(dir) / name, image);
+}
+
+glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
+  const EnuAxes enu = enu_axes_at(lat, lon);
+  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
+  return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
+}
+
+// A north-south ridge at kLon: flat valleys at 1000 m, the crest 800 m higher, slopes 2 km wide
+// on either side (22 degrees). A sun 12 degrees up in the west throws the crest's shadow
+// 800 m / tan(12 deg) = 3.76 km east of the crest: over the east valley's floor from 2 to 3.76 km.
+constexpr double kLat = 46.5, kLon = 10.0;
+constexpr double kSunElevationDeg = 12.0;
+double degrees_per_km() { return 1.0 / (111.320 * std::cos(kLat * M_PI / 180.0)); }
+
+class RidgeSource : public terrain::HeightSource {
+ public:
+  RidgeSource() {
+    info_.name = "ridge";
+    info_.max_zoom = 14;
+  }
+  const terrain::SourceInfo& info() const override { return info_; }
+  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
+    terrain::TileResult<terrain::HeightTile> r;
+    r.status = terrain::TileStatus::ok;
+    terrain::HeightTile& t = r.tile;
+    t.id = id;
+    t.width = t.height = 65;
+    t.layout = terrain::SampleLayout::pixel_is_point;
+    for (std::uint32_t row = 0; row < 65; ++row)
+      for (std::uint32_t col = 0; col < 65; ++col) {
+        const double east_km = (geo::latlon_from_tile_pixel(id, col, row, 64)->lon - kLon) / degrees_per_km();
+        t.heights.push_back(static_cast<float>(1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_km) / 2.0)));
+      }
+    terrain::update_height_range(t);
+    return r;
+  }
+
+ private:
+  terrain::SourceInfo info_;
+};
+
+class SceneShadowsTest : public GlTest {
+ protected:
+  // Looking straight down from 9 km over the crest: about 6 km either side in view.
+  static Camera overhead() {
+    auto made = camera_at({{kLat, kLon, 9000.0}, 0.0, -90.0}, Lens{45.0, 240, 135}, 1000.0);
+    if (!made.ok()) throw std::runtime_error(made.error);
+    return *made.value;
+  }
+  // The pixel of the ground `east_km` east of the crest (negative: west).
+  static terrain::ScreenPoint ground_at(const Camera& camera, double east_km) {
+    const double height = 1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_km) / 2.0);
+    const auto p = camera.project(ecef_from({kLat, kLon + east_km * degrees_per_km(), height}));
+    if (!p) throw std::runtime_error("ground point out of view");
+    return *p;
+  }
+};
+
+TEST_F(SceneShadowsTest, ALowWestSunShadowsTheGroundJustEastOfTheRidgeAndNothingFarFromIt) {
+  RidgeSource ridge;
+  SceneRenderer renderer({&ridge, nullptr});
+  const Camera camera = overhead();
+  SceneRenderOptions options;
+  options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, kSunElevationDeg);
+  const RenderedScene shadowed = renderer.render(camera, options);
+  options.shadows = false;
+  const RenderedScene unshadowed = renderer.render(camera, options);
+  keep_image(shadowed.image, "ridge_low_sun_shadows.png");
+  keep_image(unshadowed.image, "ridge_low_sun_no_shadows.png");
+  EXPECT_TRUE(shadowed.report.shadows_drawn);
+  EXPECT_FALSE(unshadowed.report.shadows_drawn);
+
+  const auto ratio = [&](double east_km) {
+    const terrain::ScreenPoint p = ground_at(camera, east_km);
+    return mean_luminance(shadowed.image, p.x_px, p.y_px, 1) / mean_luminance(unshadowed.image, p.x_px, p.y_px, 1);
+  };
+  // In the crest's shadow: flat ground 2.5 and 3.2 km east, which the sun lights without shadows.
+  EXPECT_LT(ratio(2.5), 0.85) << "2.5 km east of the crest";
+  EXPECT_LT(ratio(3.2), 0.85) << "3.2 km east of the crest";
+  // Beyond the shadow's end (3.76 km), in the west valley and on the sunny slope: unchanged. The
+  // sunny slope is where acne would show (it faces the sun at 34 degrees).
+  for (const double east_km : {4.8, -3.0, -1.0}) {
+    EXPECT_GT(ratio(east_km), 0.98) << east_km << " km east of the crest";
+    EXPECT_LT(ratio(east_km), 1.02) << east_km << " km east of the crest";
+  }
+}
+
+TEST_F(SceneShadowsTest, TheShadowMovesWithTheSun) {
+  RidgeSource ridge;
+  SceneRenderer renderer({&ridge, nullptr});
+  const Camera camera = overhead();
+  SceneRenderOptions options;
+  options.sun_direction_ecef = sun_from(kLat, kLon, 90.0, kSunElevationDeg);  // from the east now
+  const RenderedScene shadowed = renderer.render(camera, options);
+  options.shadows = false;
+  const RenderedScene unshadowed = renderer.render(camera, options);
+  const auto ratio = [&](double east_km) {
+    const terrain::ScreenPoint p = ground_at(camera, east_km);
+    return mean_luminance(shadowed.image, p.x_px, p.y_px, 1) / mean_luminance(unshadowed.image, p.x_px, p.y_px, 1);
+  };
+  EXPECT_LT(ratio(-2.8), 0.85) << "2.8 km west of the crest";
+  EXPECT_GT(ratio(2.8), 0.98) << "2.8 km east of the crest";
+}
+
+TEST_F(SceneShadowsTest, ASunBelowTheHorizonDoesNoShadowWork) {
+  RidgeSource ridge;
+  SceneRenderer renderer({&ridge, nullptr});
+  const Camera camera = overhead();
+  SceneRenderOptions options;
+  options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, -3.0);
+  const RenderedScene night = renderer.render(camera, options);
+  EXPECT_FALSE(night.report.shadows_drawn);
+  options.shadows = false;
+  const RenderedScene night_without = renderer.render(camera, options);
+  const terrain::ScreenPoint p = ground_at(camera, 2.8);
+  EXPECT_EQ(night.image.pixel(static_cast<std::uint32_t>(p.x_px), static_cast<std::uint32_t>(p.y_px)),
+            night_without.image.pixel(static_cast<std::uint32_t>(p.x_px), static_cast<std::uint32_t>(p.y_px)));
+}
+
+TEST_F(SceneShadowsTest, ProfiledFramesTimeEachPassOfTheFrame) {
+  RidgeSource ridge;
+  SceneRenderer renderer({&ridge, nullptr});
+  const Camera camera = overhead();
+  FrameProfiler profiler(query_gl_capabilities(), 4);
+  SceneRenderOptions options;
+  options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, 30.0);
+  options.profiler = &profiler;
+  for (int frame = 0; frame < 3; ++frame) renderer.render(camera, options);
+  profiler.finish();
+  EXPECT_EQ(profiler.frames_ended(), 3u);
+  for (const PassTimes& pass : profiler.times()) {
+    const bool drawn = pass.name == "shadows" || pass.name == "tiles" || pass.name == "ssao" ||
+                       pass.name == "compose" || pass.name == "readback";
+    EXPECT_EQ(pass.cpu_samples, drawn ? 3u : 0u) << pass.name;
+  }
+}
+
+}  // namespace
+}  // namespace trailray::render
