@@ -14,8 +14,10 @@
 #include "app/terrain_options.hpp"
 #include "app/track_options.hpp"
 #include "render/camera.hpp"
+#include "render/frame_profiler.hpp"
 #include "render/framebuffer_readback.hpp"
 #include "render/framing.hpp"
+#include "render/gl_capabilities.hpp"
 #include "render/gl_context.hpp"
 #include "render/scene_renderer.hpp"
 #include "render/sun_position.hpp"
@@ -29,6 +31,7 @@ namespace trailray::app {
 namespace {
 
 constexpr std::uint32_t kMaxImageSide = 16384;
+constexpr int kMaxProfiledFrames = 10000;
 
 struct RenderArgs {
   std::vector<std::string> tracks;
@@ -41,6 +44,8 @@ struct RenderArgs {
   double timeout_s = 120.0;
   bool verbose = false;
   bool no_ssao = false, no_atmosphere = false, no_shadows = false;
+  bool profile = false;
+  int frames = 1;
   track::ReadOptions read;
   TerrainOptions terrain;
 };
@@ -120,6 +125,10 @@ int run_render(const RenderArgs& a) {
         "camera",
         "without a track, say where to look from: --camera LAT,LON,ALT,HEADING,PITCH or --look-at LAT,LON,ALT "
         "[--distance M --heading DEG --pitch DEG]");
+  if (a.frames < 1 || a.frames > kMaxProfiledFrames)
+    throw CLI::ValidationError("--frames",
+                               fmt::format("'{}' is not a frame count in 1..{}", a.frames, kMaxProfiledFrames));
+  if (a.frames > 1 && !a.profile) throw CLI::ValidationError("--frames", "goes with --profile");
   if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
     throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
   std::optional<render::CameraPlacement> placement;
@@ -189,6 +198,14 @@ int run_render(const RenderArgs& a) {
     };
   render::RenderedScene scene = renderer.render(*camera, options);
   if (progress) fmt::print(stderr, "\r\x1b[K");
+  if (a.profile) {
+    // The first render waited for the tiles; these frames find them loaded and time the passes.
+    render::FrameProfiler profiler(render::query_gl_capabilities(), static_cast<std::size_t>(a.frames));
+    options.profiler = &profiler;
+    for (int frame = 0; frame < a.frames; ++frame) scene = renderer.render(*camera, options);
+    profiler.finish();
+    fmt::print(stderr, "{}", profiler.table());
+  }
 
   const render::SceneRenderReport& r = scene.report;
   if (r.timed_out)
@@ -265,6 +282,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-ssao", args->no_ssao, "No ambient occlusion (valleys and hollows not darkened)");
   cmd->add_flag("--no-atmosphere", args->no_atmosphere, "No aerial perspective or sky gradient (no haze, a flat sky)");
   cmd->add_flag("--no-shadows", args->no_shadows, "No cast shadows (slopes still shaded by their angle to the sun)");
+  cmd->add_flag("--profile", args->profile,
+                "After the tiles are loaded, render --frames times and print CPU and GPU time per pass to "
+                "standard error");
+  cmd->add_option("--frames", args->frames, "With --profile: frames to render and average (default 1)")->type_name("N");
   add_terrain_options(*cmd, args->terrain);
   add_imagery_option(*cmd, args->terrain);
   add_read_options(*cmd, args->read);

@@ -50,8 +50,8 @@ struct SceneRenderOptions {
   double max_screen_error_px = 2.0;
   std::chrono::milliseconds timeout{std::chrono::seconds(120)};  // for all tiles together
   bool ssao = true;                                              // screen-space ambient occlusion (`--no-ssao`)
-  bool atmosphere = true;  // aerial perspective and sky (`--no-atmosphere`: no haze, a flat sky)
-  bool shadows = true;     // cascaded shadow maps of the sun (`--no-shadows`)
+  bool atmosphere = true;         // aerial perspective and sky (`--no-atmosphere`: no haze, a flat sky)
+  bool shadows = true;            // cascaded shadow maps of the sun (`--no-shadows`)
   int shadow_map_size_px = 2048;  // each cascade's square depth map
   // When set, the frame's passes (shadows, tiles, ssao, compose, readback) are timed as one
   // profiler frame, begun after the tiles are loaded.

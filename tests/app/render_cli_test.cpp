@@ -1,9 +1,15 @@
 // `trailray render` as a user runs it: a PNG of the requested size with terrain in it from the
-// shared Interlaken DEM and flight, the neutral ground with --terrain none, option errors.
+// shared Interlaken DEM and flight, the neutral ground with --terrain none, option errors,
+// --no-shadows, the --profile table.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/render_command.hpp"
 #include "run_command.hpp"
@@ -143,4 +149,50 @@ TEST(RenderCli, NoShadowsChangesThePicture) {
     }
   EXPECT_GT(darker, 240u * 135u / 50u) << "pixels in cast shadow";
   EXPECT_EQ(brighter, 0u) << "shadows only take light away";
+}
+
+// --profile --frames 3: the picture, and on standard error a table with a row per pass of the
+// frame, with times where a pass ran and n/a where none does yet.
+TEST(RenderCli, ProfilePrintsATableOfThePasses) {
+  Env env;
+  const std::string err = (env.home.path() / "stderr.txt").string();
+  const auto r = run_command(env.prefix() +
+                             "--terrain none --camera 46.7,7.85,1500,0,-5 --size 160x90 --time 2024-06-18T11:00:00Z "
+                             "--profile --frames 3 -o " +
+                             shell_quote(env.out()) + " 2>" + shell_quote(err));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(env.out()));
+  std::ifstream in(err);
+  std::map<std::string, std::vector<std::string>> rows;
+  std::string header;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("frames") != std::string::npos) header = line;
+    std::istringstream words(line);
+    std::string name, cell;
+    words >> name;
+    while (words >> cell) rows[name].push_back(cell);
+  }
+  EXPECT_NE(header.find("3 of 3 frames"), std::string::npos) << header;
+  for (const char* pass : {"shadows", "tiles", "tracks", "ssao", "compose", "atmosphere", "overlays"}) {
+    ASSERT_EQ(rows[pass].size(), 4u) << pass;
+  }
+  for (const char* timed : {"shadows", "tiles", "ssao", "compose"}) {
+    const std::string& cpu_median = rows[timed][1];
+    char* end = nullptr;
+    const double ms = std::strtod(cpu_median.c_str(), &end);
+    EXPECT_EQ(*end, '\0') << timed << ": " << cpu_median;
+    EXPECT_GT(ms, 0.0) << timed;
+  }
+  for (const char* untimed : {"tracks", "atmosphere", "overlays"})
+    for (const std::string& cell : rows[untimed]) EXPECT_EQ(cell, "n/a") << untimed;
+}
+
+TEST(RenderCli, FramesGoWithProfile) {
+  Env env;
+  const std::string o = " --terrain none --camera 46.7,7.85,1500,0,-5 --size 16x16 -o " + shell_quote(env.out());
+  for (const std::string& args : {std::string("--frames 3"), std::string("--profile --frames 0")}) {
+    const auto r = run_command(env.prefix() + args + o + " 2>&1");
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find("--frames"), std::string::npos) << args << "\n" << r.out;
+  }
 }
