@@ -251,9 +251,12 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
       // Each tile with its own origin: the cascade's matrix relative to it, taken in double.
       shadow_maps_->render(*cascades, [&](const std::array<float, 16>&) {
         casters.use();
+        const ShadowCascade& light = (*cascades)[cascade];
         for (const TerrainDrawItem& item : items) {
           if (item.mesh == nullptr || item.mesh->index_count == 0) continue;
-          const std::array<float, 16> matrix = (*cascades)[cascade].view_projection_relative_to(item.mesh->origin);
+          // The near cascades cover a few km: most tiles of the view fall outside them.
+          if (!light.may_hold(to_dvec3(item.mesh->origin), item.mesh->bounding_radius_m)) continue;
+          const std::array<float, 16> matrix = light.view_projection_relative_to(item.mesh->origin);
           casters.set_mat4("u_light_view_projection", std::span<const float, 16>(matrix));
           glBindVertexArray(item.mesh->vertex_array.id());
           glDrawElements(GL_TRIANGLES, item.mesh->index_count, GL_UNSIGNED_INT, nullptr);

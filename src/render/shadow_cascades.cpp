@@ -107,6 +107,14 @@ glm::dvec3 ShadowCascade::texel_and_depth(const glm::dvec3& point_ecef, int map_
   return {(0.5 * clip.x + 0.5) * size, (0.5 * clip.y + 0.5) * size, 0.5 * clip.z + 0.5};
 }
 
+bool ShadowCascade::may_hold(const glm::dvec3& sphere_centre_ecef, double sphere_radius_m) const {
+  // In the light's view space the box is |x|, |y| <= radius and depth (-z) in 0..depth_extent.
+  const glm::dvec3 p = light_rotation * (sphere_centre_ecef - eye_ecef);
+  const double r = sphere_radius_m;
+  return std::abs(p.x) <= radius_m + r && std::abs(p.y) <= radius_m + r && -p.z + r >= 0.0 &&
+         -p.z - r <= depth_extent_m;
+}
+
 ShadowCascades::ShadowCascades(const Camera& camera, const glm::dvec3& sun_direction_ecef,
                                const ShadowCascadeSettings& settings)
     : settings_(settings), camera_position_(camera.position()) {

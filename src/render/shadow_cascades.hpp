@@ -66,6 +66,10 @@ struct ShadowCascade {
   glm::dmat4 view_projection_relative_to_d(const glm::dvec3& origin_ecef) const;
   // A point's texel coordinates (x, y; continuous, 0..map size) and window depth (0..1).
   glm::dvec3 texel_and_depth(const glm::dvec3& point_ecef, int map_size_px) const;
+  // Whether a sphere reaches into the cascade's light box (its square around the centre and its
+  // depth range): casters that do not are left out of the cascade's map. Conservative: a sphere
+  // near a corner of the box counts as inside.
+  bool may_hold(const glm::dvec3& sphere_centre_ecef, double sphere_radius_m) const;
 };
 
 class ShadowCascades {

@@ -155,6 +155,8 @@ TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t gr
 TerrainTileGpu upload_terrain_mesh(const TerrainMesh& mesh) {
   TerrainTileGpu gpu;
   gpu.origin = mesh.origin;
+  for (const TerrainVertex& v : mesh.vertices)
+    gpu.bounding_radius_m = std::max(gpu.bounding_radius_m, std::hypot(double{v.x}, double{v.y}, double{v.z}));
   gpu.vertex_array = VertexArray::create();
   gpu.vertices = Buffer::create();
   gpu.indices = Buffer::create();

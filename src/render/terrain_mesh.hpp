@@ -59,6 +59,7 @@ struct TerrainTileGpu {
   Buffer vertices, indices;
   GLsizei index_count = 0;
   geo::Ecef origin;
+  double bounding_radius_m = 0.0;  // the farthest vertex (skirts included) from the origin
 };
 
 // Uploads a mesh (the GL context must be current). Throws RenderError when GL refuses.

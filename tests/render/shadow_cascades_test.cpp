@@ -219,6 +219,29 @@ TEST(ShadowCascades, CameraRelativeFloatMatrixAgreesWithTheDoubleProjection) {
   }
 }
 
+// may_hold agrees with the projection: a sphere whose centre projects inside the box is held,
+// one entirely off to a side is not, one just touching an edge is.
+TEST(ShadowCascades, MayHoldTheSpheresThatReachIntoTheLightBox) {
+  const ShadowCascades cascades(camera(30.0, -20.0), sun_direction());
+  const ShadowCascade& c = cascades[0];
+  const glm::dvec3 sideways = glm::transpose(c.light_rotation) * glm::dvec3(1.0, 0.0, 0.0);  // light x in ECEF
+  EXPECT_TRUE(c.may_hold(c.centre_ecef, 1.0));
+  const glm::dvec3 outside = c.centre_ecef + sideways * (c.radius_m + 500.0);
+  EXPECT_GT(std::abs(clip_of(c, outside).x), 1.0);
+  EXPECT_FALSE(c.may_hold(outside, 400.0));
+  EXPECT_TRUE(c.may_hold(outside, 600.0));
+  // Beyond the far end of the light's depth range (away from the sun), and towards the sun
+  // behind the light's eye: not held.
+  const glm::dvec3 sun = glm::normalize(sun_direction());
+  const glm::dvec3 below = c.eye_ecef - sun * (c.depth_extent_m + 300.0);
+  EXPECT_GT(clip_of(c, below).z, 1.0);
+  EXPECT_FALSE(c.may_hold(below, 200.0));
+  EXPECT_TRUE(c.may_hold(below, 400.0));
+  EXPECT_FALSE(c.may_hold(c.eye_ecef + sun * 300.0, 200.0));
+  // The last cascade is larger: the first one's outside point is inside it.
+  EXPECT_TRUE(cascades[3].may_hold(outside, 1.0));
+}
+
 TEST(ShadowCascades, BadInputIsRefusedByName) {
   const Camera cam = camera(0.0, -30.0);
   auto message_of = [&](const glm::dvec3& sun, const ShadowCascadeSettings& settings) -> std::string {
