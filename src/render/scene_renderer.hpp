@@ -86,7 +86,7 @@ class SceneRenderer {
   SceneRenderer& operator=(const SceneRenderer&) = delete;
 
   // Renders the camera's view at its lens's image size. Throws RenderError from GL, and
-  // std::invalid_argument for an unusable camera.
+  // std::invalid_argument for an unusable camera or a shadow map size outside 16..16384.
   RenderedScene render(const Camera& camera, const SceneRenderOptions& options);
 
   // The G-buffer's distance encoding: from the context's capabilities, queried once at
