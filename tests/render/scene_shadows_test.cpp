@@ -118,9 +118,12 @@ TEST_F(SceneShadowsTest, ALowWestSunShadowsTheGroundJustEastOfTheRidgeAndNothing
   // In the crest's shadow: flat ground 2.5 and 3.2 km east, which the sun lights without shadows.
   EXPECT_LT(ratio(2.5), 0.85) << "2.5 km east of the crest";
   EXPECT_LT(ratio(3.2), 0.85) << "3.2 km east of the crest";
-  // Beyond the shadow's end (3.76 km), in the west valley and on the sunny slope: unchanged. The
-  // sunny slope is where acne would show (it faces the sun at 34 degrees).
-  for (const double east_km : {4.8, -3.0, -1.0}) {
+  // The shadow is as long as the crest's height and the sun's elevation make it (3.76 km): still
+  // there at 3.5 km, gone at 4.1 km (a shadow detached from its caster or cut short would fail).
+  EXPECT_LT(ratio(3.5), 0.85) << "3.5 km east of the crest";
+  // Beyond the shadow's end, in the west valley and on the sunny slope: unchanged. The sunny
+  // slope is where acne would show (it faces the sun at 34 degrees).
+  for (const double east_km : {4.1, 4.8, -3.0, -1.0}) {
     EXPECT_GT(ratio(east_km), 0.98) << east_km << " km east of the crest";
     EXPECT_LT(ratio(east_km), 1.02) << east_km << " km east of the crest";
   }
