@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "geo/tile_id.hpp"
@@ -13,12 +14,35 @@ namespace trailray::render {
 namespace {
 
 // The continuous sample coordinate (0 = first sample) of a position `t` in [0, 1] across a tile
-// of `samples` samples, clamped to the samples (pixel-is-area tiles have no sample on the edge:
-// the outermost half cell takes the edge sample's height).
-double sample_coordinate(double t, std::uint32_t samples, terrain::SampleLayout layout) {
+// of `samples` samples, not clamped: pixel-is-area tiles have no sample on their edge, so the
+// outermost half cell lies in [-0.5, 0) or (last, last + 0.5].
+double unclamped_sample_coordinate(double t, std::uint32_t samples, terrain::SampleLayout layout) {
   const double last = static_cast<double>(samples - 1);
-  const double s = layout == terrain::SampleLayout::pixel_is_point ? t * last : t * samples - 0.5;
-  return std::clamp(s, 0.0, last);
+  return layout == terrain::SampleLayout::pixel_is_point ? t * last : t * samples - 0.5;
+}
+
+double sample_coordinate(double t, std::uint32_t samples, terrain::SampleLayout layout) {
+  return std::clamp(unclamped_sample_coordinate(t, samples, layout), 0.0, static_cast<double>(samples - 1));
+}
+
+// On the outer half cell of a pixel-is-area tile: the height extrapolated linearly from the two
+// outermost samples (in each direction), so that two neighbouring tiles put their shared edge at
+// nearly the same height (the same to second order on smooth ground) instead of each holding
+// its own edge sample flat: the crack a skirt would otherwise show as a dark seam closes. None
+// when a sample involved is a hole (the caller then holds the edge sample).
+std::optional<float> extrapolated_rim_height(const terrain::HeightTile& tile, double u, double v) {
+  if (tile.layout != terrain::SampleLayout::pixel_is_area || tile.width < 2 || tile.height < 2) return std::nullopt;
+  const double sx = unclamped_sample_coordinate(u, tile.width, tile.layout);
+  const double sy = unclamped_sample_coordinate(v, tile.height, tile.layout);
+  const double last_x = tile.width - 1.0, last_y = tile.height - 1.0;
+  if (sx >= 0.0 && sx <= last_x && sy >= 0.0 && sy <= last_y) return std::nullopt;  // inside: plain bilinear
+  const auto x0 = static_cast<std::uint32_t>(std::clamp(std::floor(sx), 0.0, last_x - 1.0));
+  const auto y0 = static_cast<std::uint32_t>(std::clamp(std::floor(sy), 0.0, last_y - 1.0));
+  const double fx = sx - x0, fy = sy - y0;  // outside [0, 1] on the rim: extrapolation
+  const float h[4] = {tile.at(x0, y0), tile.at(x0 + 1, y0), tile.at(x0, y0 + 1), tile.at(x0 + 1, y0 + 1)};
+  for (float value : h)
+    if (std::isnan(value)) return std::nullopt;
+  return static_cast<float>((1 - fx) * (1 - fy) * h[0] + fx * (1 - fy) * h[1] + (1 - fx) * fy * h[2] + fx * fy * h[3]);
 }
 
 void check_tile(const terrain::HeightTile& tile) {
@@ -39,6 +63,7 @@ std::uint32_t full_resolution_grid(const terrain::HeightTile& tile) {
 }
 
 float sample_height_bilinear(const terrain::HeightTile& tile, double u, double v) {
+  if (const std::optional<float> rim = extrapolated_rim_height(tile, u, v)) return *rim;
   const double sx = sample_coordinate(u, tile.width, tile.layout);
   const double sy = sample_coordinate(v, tile.height, tile.layout);
   const auto x0 = static_cast<std::uint32_t>(sx), y0 = static_cast<std::uint32_t>(sy);

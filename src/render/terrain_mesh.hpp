@@ -49,7 +49,9 @@ TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t gr
 
 // The height of `tile` at a continuous position (u, v) in [0, 1] from the north-west corner,
 // bilinear between the four nearest samples (NaN neighbours left out, the weights of the others
-// renormalised); NaN when all four are NaN.
+// renormalised); NaN when all four are NaN. On the outer half cell of a pixel-is-area tile the
+// two outermost samples are extrapolated linearly (when none is a hole), so neighbouring tiles
+// meet on their shared edge and no seam shows.
 float sample_height_bilinear(const terrain::HeightTile& tile, double u, double v);
 
 // One mesh on the GPU: a vertex array with its vertex and index buffers. Attribute locations:

@@ -103,7 +103,10 @@ TEST(TerrainMesh, BilinearBetweenAreaSamplesAndHolesFilledAsUncovered) {
                         [](std::uint32_t c, std::uint32_t) { return 100.0f * static_cast<float>(c); });
   EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 0.5 / 4, 0.5), 0.0f);
   EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0 / 4, 0.5), 50.0f);
-  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0, 0.5), 300.0f);    // the last half cell: the edge sample
+  // The last half cell: extrapolated from the two outermost samples, so the edge of a ramp lies on
+  // the ramp (and meets the neighbouring tile's edge) instead of holding the last sample flat.
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0, 0.5), 350.0f);
+  EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 0.0, 0.5), -50.0f);
   tile.heights[1] = terrain::kNoHeight;                               // row 0, column 1
   EXPECT_FLOAT_EQ(sample_height_bilinear(tile, 1.0 / 4, 0.0), 0.0f);  // the hole's weight goes to its neighbour
 
@@ -113,6 +116,24 @@ TEST(TerrainMesh, BilinearBetweenAreaSamplesAndHolesFilledAsUncovered) {
   for (const auto& v : mesh.vertices) {
     EXPECT_EQ(v.covered, 0.0f);
     EXPECT_EQ(v.height_m, 432.0f);
+  }
+}
+
+TEST(TerrainMesh, NeighbouringAreaTilesMeetOnTheirSharedEdge) {
+  // A smooth surface sampled by two side-by-side tiles: the east edge of the western tile and the
+  // west edge of the eastern one must lie at the same height, or skirts show as seams.
+  auto surface = [](double x, double y) { return 500.0 + 3.0 * x + 0.02 * x * x - 1.5 * y; };
+  const terrain::TileId west{12, 2137, 1445}, east{12, 2138, 1445};
+  auto tile = [&](const terrain::TileId& id, double x0) {
+    return tile_from(id, 8, terrain::SampleLayout::pixel_is_area, [&](std::uint32_t c, std::uint32_t r) {
+      return static_cast<float>(surface(x0 + c + 0.5, r + 0.5));
+    });
+  };
+  const auto a = tile(west, 0.0), b = tile(east, 8.0);
+  for (double v : {0.1, 0.5, 0.9}) {
+    const float from_west = sample_height_bilinear(a, 1.0, v), from_east = sample_height_bilinear(b, 0.0, v);
+    EXPECT_NEAR(from_west, from_east, 0.05) << v;
+    EXPECT_NEAR(from_west, surface(8.0, v * 8.0), 0.05) << v;
   }
 }
 
