@@ -43,7 +43,8 @@ struct RenderArgs {
   std::string time;
   double timeout_s = 120.0;
   bool verbose = false;
-  bool no_ssao = false, no_atmosphere = false, no_shadows = false;
+  bool no_ssao = false, no_atmosphere = false, no_shadows = false, snow = false;
+  double snowline_m = 2500.0;
   bool profile = false;
   int frames = 1;
   track::ReadOptions read;
@@ -190,6 +191,7 @@ int run_render(const RenderArgs& a) {
   options.ssao = !a.no_ssao;
   options.atmosphere = !a.no_atmosphere;
   options.shadows = !a.no_shadows;
+  options.snow = {a.snow, a.snowline_m};
   const bool progress = isatty(STDERR_FILENO) != 0;
   if (progress)
     options.on_progress = [](const terrain::LoadProgress& p) {
@@ -282,6 +284,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-ssao", args->no_ssao, "No ambient occlusion (valleys and hollows not darkened)");
   cmd->add_flag("--no-atmosphere", args->no_atmosphere, "No aerial perspective or sky gradient (no haze, a flat sky)");
   cmd->add_flag("--no-shadows", args->no_shadows, "No cast shadows (slopes still shaded by their angle to the sun)");
+  cmd->add_flag("--snow", args->snow,
+                "Snow cover: white from the snowline up, on slopes under about 40-50 degrees (rock faces stay bare)");
+  cmd->add_option("--snowline", args->snowline_m, "Altitude of the snowline for --snow, metres (default 2500)")
+      ->check(CLI::Range(-500.0, 9000.0))
+      ->type_name("M");
   cmd->add_flag("--profile", args->profile,
                 "After the tiles are loaded, render --frames times and print CPU and GPU time per pass to "
                 "standard error");

@@ -268,7 +268,7 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
     scene.report.shadows_drawn = true;
   }
   const GBuffer gbuffer(width, height, distance_encoding_);
-  timed(profiler, "tiles", [&] { terrain_pass_.draw(gbuffer, camera, items); });
+  timed(profiler, "tiles", [&] { terrain_pass_.draw(gbuffer, camera, items, options.snow); });
   const Texture* ambient_occlusion = nullptr;
   if (options.ssao) timed(profiler, "ssao", [&] { ambient_occlusion = &ssao_pass_.run(gbuffer, camera); });
   FrameTarget target(width, height);

@@ -52,6 +52,7 @@ struct SceneRenderOptions {
   bool ssao = true;                                              // screen-space ambient occlusion (`--no-ssao`)
   bool atmosphere = true;         // aerial perspective and sky (`--no-atmosphere`: no haze, a flat sky)
   bool shadows = true;            // cascaded shadow maps of the sun (`--no-shadows`)
+  SnowCover snow;                 // snow by altitude and slope (`--snow`, `--snowline M`)
   int shadow_map_size_px = 2048;  // each cascade's square depth map
   // When set, the frame's passes (shadows, tiles, ssao, compose, readback) are timed as one
   // profiler frame, begun after the tiles are loaded.

@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 
+#include "geo/local_frame.hpp"
 #include "render/render_error.hpp"
 
 namespace trailray::render {
@@ -17,7 +18,8 @@ void throw_on_gl_error(const char* what) {
 
 TerrainPass::TerrainPass() : program_(ShaderProgram::from_embedded("terrain.vert", "terrain.frag")) {}
 
-void TerrainPass::draw(const GBuffer& gbuffer, const Camera& camera, std::span<const TerrainDrawItem> tiles) const {
+void TerrainPass::draw(const GBuffer& gbuffer, const Camera& camera, std::span<const TerrainDrawItem> tiles,
+                       const SnowCover& snow) const {
   gbuffer.bind_and_clear();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -33,6 +35,8 @@ void TerrainPass::draw(const GBuffer& gbuffer, const Camera& camera, std::span<c
   program_.set_vec3("u_neutral_albedo", kNeutralGroundAlbedo.r, kNeutralGroundAlbedo.g, kNeutralGroundAlbedo.b);
   program_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
   program_.set_int("u_imagery", 0);
+  program_.set_int("u_snow", snow.enabled ? 1 : 0);
+  program_.set_float("u_snowline_m", static_cast<float>(snow.snowline_m));
   glActiveTexture(GL_TEXTURE0);
   for (const TerrainDrawItem& item : tiles) {
     if (item.mesh == nullptr || item.mesh->index_count == 0) continue;
@@ -40,6 +44,12 @@ void TerrainPass::draw(const GBuffer& gbuffer, const Camera& camera, std::span<c
     program_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
     const glm::vec3 offset = camera.origin_minus_camera(item.mesh->origin);
     program_.set_vec3("u_origin_minus_camera", offset.x, offset.y, offset.z);
+    if (snow.enabled) {
+      double lat = 0.0, lon = 0.0;
+      geo::from_ecef(item.mesh->origin, lat, lon);
+      const glm::dvec3 up = to_view * enu_axes_at(lat, lon).up;
+      program_.set_vec3("u_view_up", static_cast<float>(up.x), static_cast<float>(up.y), static_cast<float>(up.z));
+    }
     const bool has_imagery = item.imagery.texture != nullptr && *item.imagery.texture;
     program_.set_int("u_has_imagery", has_imagery ? 1 : 0);
     program_.set_vec4("u_imagery_transform", item.imagery.scale.x, item.imagery.scale.y, item.imagery.offset.x,

@@ -31,6 +31,13 @@ struct TerrainDrawItem {
   TerrainImagery imagery;  // texture nullptr: the hypsometric tint
 };
 
+// Snow on the ground by altitude and slope (`trailray render --snow`): white from about
+// `snowline_m` up (fading in over the 300 m below it), on slopes under about 40-50 degrees.
+struct SnowCover {
+  bool enabled = false;
+  double snowline_m = 2500.0;
+};
+
 class TerrainPass {
  public:
   // Compiles the terrain shaders (the GL context must be current). Throws ShaderError.
@@ -38,7 +45,8 @@ class TerrainPass {
 
   // Clears the G-buffer and draws the tiles into it with depth testing. Throws RenderError when
   // GL reports an error.
-  void draw(const GBuffer& gbuffer, const Camera& camera, std::span<const TerrainDrawItem> tiles) const;
+  void draw(const GBuffer& gbuffer, const Camera& camera, std::span<const TerrainDrawItem> tiles,
+            const SnowCover& snow = {}) const;
 
  private:
   ShaderProgram program_;

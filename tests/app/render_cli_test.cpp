@@ -151,6 +151,37 @@ TEST(RenderCli, NoShadowsChangesThePicture) {
   EXPECT_EQ(brighter, 0u) << "shadows only take light away";
 }
 
+// --snow whitens the ground from the snowline up: with the line at 1500 m the ridges of the
+// Interlaken DEM (up to 2004 m) turn white and only get brighter; with the line above every
+// summit nothing changes, so the cover follows altitude, not a global tint.
+TEST(RenderCli, SnowCoversTheGroundAboveTheSnowline) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
+  Env env;
+  const std::string common = env.prefix() + "--terrain " + shell_quote(dem.string()) +
+                             " --look-at 46.705,7.872,900 --distance 10500 --heading 18 --pitch -22"
+                             " --time 2024-06-18T13:30:00Z --size 240x135 -o ";
+  auto render = [&](const std::string& name, const std::string& extra) {
+    const std::string path = (env.home.path() / name).string();
+    const auto r = run_command(common + shell_quote(path) + " " + extra + " 2>&1");
+    EXPECT_EQ(r.status, 0) << r.out;
+    return read_png(path);
+  };
+  const auto plain = render("plain.png", ""), low = render("low.png", "--snow --snowline 1500"),
+             high = render("high.png", "--snow --snowline 6000");
+  std::size_t whiter = 0, darker = 0, changed_high = 0;
+  for (std::uint32_t y = 0; y < 135; ++y)
+    for (std::uint32_t x = 0; x < 240; ++x) {
+      const Rgb p = pixel(plain, x, y), l = pixel(low, x, y), h = pixel(high, x, y);
+      const int diff = (l.r + l.g + l.b) - (p.r + p.g + p.b);
+      whiter += diff > 30 ? 1 : 0;
+      darker += diff < -3 ? 1 : 0;
+      changed_high += std::abs((h.r + h.g + h.b) - (p.r + p.g + p.b)) > 3 ? 1 : 0;
+    }
+  EXPECT_GT(whiter, 240u * 135u / 100u) << "snow on the ridges";
+  EXPECT_EQ(darker, 0u) << "snow only brightens the ground";
+  EXPECT_EQ(changed_high, 0u) << "a snowline above every summit changes nothing";
+}
+
 // --profile --frames 3: the picture, and on standard error a table with a row per pass of the
 // frame, with times where a pass ran and n/a where none does yet.
 TEST(RenderCli, ProfilePrintsATableOfThePasses) {

@@ -11,6 +11,11 @@ uniform vec3 u_neutral_albedo;  // linear
 uniform bool u_has_imagery;
 uniform sampler2D u_imagery;  // sRGB texture: sampled as linear
 uniform bool u_packed_distance;
+// Snow cover (`--snow`): from about u_snowline_m up, on slopes gentle enough to hold it;
+// u_view_up is the local vertical at the tile's origin, in view space.
+uniform bool u_snow;
+uniform float u_snowline_m;
+uniform vec3 u_view_up;
 
 in vec3 v_view_normal;
 in vec3 v_from_camera;
@@ -40,6 +45,14 @@ vec3 hypsometric_tint(float height_m) {
 
 void main() {
   vec3 albedo = u_has_imagery ? texture(u_imagery, v_imagery_uv).rgb : hypsometric_tint(v_height);
+  if (u_snow) {
+    // Snow thins out over the last few hundred metres below the line, and slides off slopes
+    // steeper than about 45 degrees (rock faces stay dark, as seen in the Alps in spring).
+    float by_height = smoothstep(u_snowline_m - 300.0, u_snowline_m + 150.0, v_height);
+    float cos_slope = dot(normalize(v_view_normal), u_view_up);
+    float by_slope = smoothstep(0.64, 0.80, cos_slope);  // cos 50 deg .. cos 37 deg
+    albedo = mix(albedo, srgb_to_linear(vec3(0.93, 0.95, 0.98)), by_height * by_slope);
+  }
   if (v_covered < 0.5) albedo = u_neutral_albedo;
   g_albedo = vec4(albedo, 1.0);
   g_normal = encode_normal(normalize(v_view_normal));
