@@ -34,6 +34,11 @@ void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
                  "http(s) URL template, or none: a tint by height (default: the config file's, else EOX Sentinel-2 "
                  "cloudless)")
       ->type_name("SRC");
+  cmd.add_option("--imagery-scheme", o.imagery_scheme,
+                 "Row order of an imagery tile folder: xyz (from the north) or tms (from the south); default: its "
+                 "metadata, else xyz")
+      ->check(CLI::IsMember({"xyz", "tms"}, CLI::ignore_case))
+      ->type_name("xyz|tms");
 }
 
 terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& o) {
@@ -48,6 +53,9 @@ terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& o) {
     s.source = o.imagery;
     c.imagery = s;
   }
+  if (!o.imagery_scheme.empty())
+    c.imagery.scheme = o.imagery_scheme == "tms" || o.imagery_scheme == "TMS" ? terrain::TileScheme::tms
+                                                                              : terrain::TileScheme::xyz;
   if (!o.terrain_encoding.empty()) c.terrain.encoding = terrain::parse_height_encoding(o.terrain_encoding);
   if (!o.terrain_scheme.empty())
     c.terrain.scheme = o.terrain_scheme == "tms" || o.terrain_scheme == "TMS" ? terrain::TileScheme::tms

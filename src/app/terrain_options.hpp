@@ -19,10 +19,12 @@ struct TerrainOptions {
   std::optional<int> terrain_zoom;
   bool offline = false;
   std::string imagery;  // --imagery, for commands that draw (add_imagery_option)
+  std::string imagery_scheme;  // --imagery-scheme
 };
 
 void add_terrain_options(CLI::App& command, TerrainOptions& options);
-// --imagery SRC (same spellings as --terrain), for the commands that draw terrain.
+// --imagery SRC (same spellings as --terrain) and --imagery-scheme, for the commands that draw
+// terrain.
 void add_imagery_option(CLI::App& command, TerrainOptions& options);
 
 // The configuration file (if any) with the flags applied. Throws terrain::ConfigError.

@@ -182,6 +182,33 @@ TEST(RenderCli, SnowCoversTheGroundAboveTheSnowline) {
   EXPECT_EQ(changed_high, 0u) << "a snowline above every summit changes nothing";
 }
 
+// Real imagery over a real DEM: the shared AlpineMaps orthophotos (a TMS folder of z7 JPEGs)
+// drape the Austria DEM only when their rows are read as TMS.
+TEST(RenderCli, ImageryFromATmsFolderDrapesTheDem) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/austria_1km_wgs84.tif");
+  TRAILRAY_REQUIRE_DATA(ortho, "tiles/alpinemaps_ortho");
+  Env env;
+  // Env's prefix says --imagery none: this test names its own imagery instead.
+  std::string prefix = env.prefix();
+  prefix.erase(prefix.find("--imagery none "), std::string("--imagery none ").size());
+  const std::string common = prefix + "--terrain " + shell_quote(dem.string()) + " --imagery " +
+                             shell_quote(ortho.string()) +
+                             " --look-at 47.1,13.0,1500 --distance 90000 --heading 0 --pitch -30"
+                             " --time 2024-06-18T10:00:00Z --size 160x90 --verbose -o " + shell_quote(env.out());
+  const auto tms = run_command(common + " --imagery-scheme tms 2>&1");
+  ASSERT_EQ(tms.status, 0) << tms.out;
+  const auto xyz = run_command(common + " 2>&1");
+  ASSERT_EQ(xyz.status, 0) << xyz.out;
+  auto imagery_tiles = [](const std::string& log) {
+    const auto at = log.find(" with imagery)");
+    if (at == std::string::npos) return -1;
+    const auto start = log.rfind(' ', at - 1);
+    return std::stoi(log.substr(start + 1, at - start - 1));
+  };
+  EXPECT_GT(imagery_tiles(tms.out), 0) << tms.out;
+  EXPECT_EQ(imagery_tiles(xyz.out), 0) << xyz.out;  // read as XYZ the rows land elsewhere: no imagery here
+}
+
 // --profile --frames 3: the picture, and on standard error a table with a row per pass of the
 // frame, with times where a pass ran and n/a where none does yet.
 TEST(RenderCli, ProfilePrintsATableOfThePasses) {
