@@ -14,27 +14,17 @@
 #include "render/camera.hpp"
 #include "render/gl_capabilities.hpp"
 #include "render/scene_renderer.hpp"
+#include "scene_test_support.hpp"
 
 namespace trailray::render {
 namespace {
 
 using test::GlTest;
+using test::keep_image;
+using test::luminance;
+using test::mean_luminance;
+using test::sun_from;
 using Pixel = std::array<std::uint8_t, 4>;
-
-double luminance(const Pixel& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
-
-double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
-  double sum = 0.0;
-  int n = 0;
-  for (int j = -radius; j <= radius; ++j)
-    for (int i = -radius; i <= radius; ++i) {
-      const long px = std::lround(x) + i, py = std::lround(y) + j;
-      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-      sum += luminance(image.pixel(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py)));
-      ++n;
-    }
-  return n ? sum / n : 0.0;
-}
 
 double colour_distance(const Pixel& a, const Pixel& b) {
   double sum = 0.0;
@@ -57,48 +47,17 @@ double fraction_differing(const RgbaImage& a, const RgbaImage& b, int tolerance)
   return static_cast<double>(differing) / (double(a.width) * a.height);
 }
 
-void keep_image(const RgbaImage& image, const std::string& name) {
-  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
-    write_srgb_png(std::filesystem::path(dir) / name, image);
-}
-
-glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
-  const EnuAxes enu = enu_axes_at(lat, lon);
-  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
-  return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
-}
-
 // North-south V valleys every 4 km: floors at 1000 m on kLon and 4 km apart, ridge tops at
 // 2600 m halfway between, straight 0.8 slopes (39 degrees) in between.
 constexpr double kLat = 46.5, kLon = 10.0;
 double metres_per_degree_lon() { return 111320.0 * std::cos(kLat * M_PI / 180.0); }
 
-class ValleysSource : public terrain::HeightSource {
- public:
-  ValleysSource() {
-    info_.name = "valleys";
-    info_.max_zoom = 14;
-  }
-  const terrain::SourceInfo& info() const override { return info_; }
-  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
-    terrain::TileResult<terrain::HeightTile> r;
-    r.status = terrain::TileStatus::ok;
-    terrain::HeightTile& t = r.tile;
-    t.id = id;
-    t.width = t.height = 65;
-    t.layout = terrain::SampleLayout::pixel_is_point;
-    for (std::uint32_t row = 0; row < 65; ++row)
-      for (std::uint32_t col = 0; col < 65; ++col) {
-        const double east_m = (geo::latlon_from_tile_pixel(id, col, row, 64)->lon - kLon) * metres_per_degree_lon();
-        const double from_floor = std::abs(std::fmod(std::fmod(east_m + 2000.0, 4000.0) + 4000.0, 4000.0) - 2000.0);
-        t.heights.push_back(static_cast<float>(1000.0 + 0.8 * from_floor));
-      }
-    terrain::update_height_range(t);
-    return r;
-  }
-
- private:
-  terrain::SourceInfo info_;
+struct ValleysSource : test::EastProfileSource {
+  ValleysSource()
+      : EastProfileSource("valleys", kLat, kLon, [](double east_m) {
+          const double from_floor = std::abs(std::fmod(std::fmod(east_m + 2000.0, 4000.0) + 4000.0, 4000.0) - 2000.0);
+          return 1000.0 + 0.8 * from_floor;
+        }) {}
 };
 
 class DeferredPipelineTest : public GlTest {};

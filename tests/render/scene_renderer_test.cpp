@@ -12,6 +12,7 @@
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
 #include "render/camera.hpp"
+#include "scene_test_support.hpp"
 #include "terrain/source_factory.hpp"
 #include "test_support.hpp"
 
@@ -19,6 +20,10 @@ namespace trailray::render {
 namespace {
 
 using test::GlTest;
+using test::keep_image;
+using test::luminance;
+using test::mean_luminance;
+using test::sun_from;
 
 bool is_sky(const std::array<std::uint8_t, 4>& p) {
   const auto near = [](std::uint8_t v, float c) {
@@ -27,52 +32,14 @@ bool is_sky(const std::array<std::uint8_t, 4>& p) {
   return near(p[0], kSkyColorSrgb.r) && near(p[1], kSkyColorSrgb.g) && near(p[2], kSkyColorSrgb.b);
 }
 
-double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
-
-// Mean luminance of the pixels within `radius` of (x, y).
-double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
-  double sum = 0.0;
-  int n = 0;
-  for (int j = -radius; j <= radius; ++j)
-    for (int i = -radius; i <= radius; ++i) {
-      const long px = std::lround(x) + i, py = std::lround(y) + j;
-      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-      sum += luminance(image.pixel(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py)));
-      ++n;
-    }
-  return n ? sum / n : 0.0;
-}
-
 // Tiles of a north-south ridge at kRidgeLon: 1000 m flat valleys, rising to 1800 m over 2 km on
 // either side, computed for any tile (65 x 65 pixel-is-point samples).
 constexpr double kRidgeLat = 46.5, kRidgeLon = 10.0;
-class RidgeSource : public terrain::HeightSource {
- public:
-  RidgeSource() {
-    info_.name = "ridge";
-    info_.max_zoom = 14;
-  }
-  const terrain::SourceInfo& info() const override { return info_; }
-  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
-    terrain::TileResult<terrain::HeightTile> r;
-    r.status = terrain::TileStatus::ok;
-    terrain::HeightTile& t = r.tile;
-    t.id = id;
-    t.width = t.height = 65;
-    t.layout = terrain::SampleLayout::pixel_is_point;
-    const double metres_per_deg = 111320.0 * std::cos(kRidgeLat * M_PI / 180.0);
-    for (std::uint32_t row = 0; row < 65; ++row)
-      for (std::uint32_t col = 0; col < 65; ++col) {
-        const auto ll = geo::latlon_from_tile_pixel(id, col, row, 64);
-        const double east_m = (ll->lon - kRidgeLon) * metres_per_deg;
-        t.heights.push_back(static_cast<float>(1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_m) / 2000.0)));
-      }
-    terrain::update_height_range(t);
-    return r;
-  }
-
- private:
-  terrain::SourceInfo info_;
+struct RidgeSource : test::EastProfileSource {
+  RidgeSource()
+      : EastProfileSource("ridge", kRidgeLat, kRidgeLon, [](double east_m) {
+          return 1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_m) / 2000.0);
+        }) {}
 };
 
 // Imagery up to zoom 8 only (coarser than the terrain drawn): red west of kRidgeLon, blue east.
@@ -99,18 +66,6 @@ class HalvesImagery : public terrain::ImagerySource {
  private:
   terrain::SourceInfo info_;
 };
-
-glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
-  const EnuAxes enu = enu_axes_at(lat, lon);
-  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
-  return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
-}
-
-// With TRAILRAY_TEST_IMAGE_DIR set, each picture is also written there, to look at.
-void keep_image(const RgbaImage& image, const std::string& name) {
-  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
-    write_srgb_png(std::filesystem::path(dir) / name, image);
-}
 
 class SceneRendererTest : public GlTest {};
 

@@ -14,37 +14,15 @@
 #include "gl_test_support.hpp"
 #include "render/camera.hpp"
 #include "render/scene_renderer.hpp"
+#include "scene_test_support.hpp"
 
 namespace trailray::render {
 namespace {
 
 using test::GlTest;
-
-double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
-
-double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
-  double sum = 0.0;
-  int n = 0;
-  for (int j = -radius; j <= radius; ++j)
-    for (int i = -radius; i <= radius; ++i) {
-      const long px = std::lround(x) + i, py = std::lround(y) + j;
-      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-      sum += luminance(image.pixel(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py)));
-      ++n;
-    }
-  return n ? sum / n : 0.0;
-}
-
-void keep_image(const RgbaImage& image, const std::string& name) {
-  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
-    write_srgb_png(std::filesystem::path(dir) / name, image);
-}
-
-glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
-  const EnuAxes enu = enu_axes_at(lat, lon);
-  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
-  return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
-}
+using test::keep_image;
+using test::mean_luminance;
+using test::sun_from;
 
 // A north-south ridge at kLon: flat valleys at 1000 m, the crest 800 m higher, slopes 2 km wide
 // on either side (22 degrees). A sun 12 degrees up in the west throws the crest's shadow
@@ -53,31 +31,11 @@ constexpr double kLat = 46.5, kLon = 10.0;
 constexpr double kSunElevationDeg = 12.0;
 double degrees_per_km() { return 1.0 / (111.320 * std::cos(kLat * M_PI / 180.0)); }
 
-class RidgeSource : public terrain::HeightSource {
- public:
-  RidgeSource() {
-    info_.name = "ridge";
-    info_.max_zoom = 14;
-  }
-  const terrain::SourceInfo& info() const override { return info_; }
-  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
-    terrain::TileResult<terrain::HeightTile> r;
-    r.status = terrain::TileStatus::ok;
-    terrain::HeightTile& t = r.tile;
-    t.id = id;
-    t.width = t.height = 65;
-    t.layout = terrain::SampleLayout::pixel_is_point;
-    for (std::uint32_t row = 0; row < 65; ++row)
-      for (std::uint32_t col = 0; col < 65; ++col) {
-        const double east_km = (geo::latlon_from_tile_pixel(id, col, row, 64)->lon - kLon) / degrees_per_km();
-        t.heights.push_back(static_cast<float>(1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_km) / 2.0)));
-      }
-    terrain::update_height_range(t);
-    return r;
-  }
-
- private:
-  terrain::SourceInfo info_;
+struct RidgeSource : test::EastProfileSource {
+  RidgeSource()
+      : EastProfileSource("ridge", kLat, kLon, [](double east_m) {
+          return 1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_m / 1000.0) / 2.0);
+        }) {}
 };
 
 class SceneShadowsTest : public GlTest {

@@ -1,0 +1,86 @@
+#pragma once
+// What the scene tests (scene_renderer, scene_shadows, deferred_pipeline) share: pixel
+// luminance, a sun placed by azimuth and elevation, saving pictures for a human to look at, and
+// synthetic terrain that varies only from west to east.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+
+#include "geo/tile_id.hpp"
+#include "render/camera.hpp"
+#include "render/framebuffer_readback.hpp"
+#include "render/scene_renderer.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::render::test {
+
+inline double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+// Mean luminance of the pixels within `radius` of (x, y).
+inline double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
+  double sum = 0.0;
+  int n = 0;
+  for (int j = -radius; j <= radius; ++j)
+    for (int i = -radius; i <= radius; ++i) {
+      const long px = std::lround(x) + i, py = std::lround(y) + j;
+      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+      sum += luminance(image.pixel(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py)));
+      ++n;
+    }
+  return n ? sum / n : 0.0;
+}
+
+// Writes the picture to $TRAILRAY_TEST_IMAGE_DIR/name when that is set.
+inline void keep_image(const RgbaImage& image, const std::string& name) {
+  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
+    write_srgb_png(std::filesystem::path(dir) / name, image);
+}
+
+// The unit vector towards a sun at `azimuth_deg` (clockwise from north) and `elevation_deg`
+// above the horizon of (lat, lon), in ECEF.
+inline glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
+  const EnuAxes enu = enu_axes_at(lat, lon);
+  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
+  return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
+}
+
+// Terrain whose height depends only on the distance east of a meridian: height_m(east_m), with
+// east_m measured at the latitude `lat` (65 x 65 pixel-is-point tiles up to zoom 14, any tile).
+class EastProfileSource : public terrain::HeightSource {
+ public:
+  EastProfileSource(std::string name, double lat, double lon, std::function<double(double east_m)> height_m)
+      : lon_(lon), metres_per_degree_(111320.0 * std::cos(lat * M_PI / 180.0)), height_m_(std::move(height_m)) {
+    info_.name = std::move(name);
+    info_.max_zoom = 14;
+  }
+  const terrain::SourceInfo& info() const override { return info_; }
+  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
+    terrain::TileResult<terrain::HeightTile> r;
+    r.status = terrain::TileStatus::ok;
+    terrain::HeightTile& t = r.tile;
+    t.id = id;
+    t.width = t.height = 65;
+    t.layout = terrain::SampleLayout::pixel_is_point;
+    for (std::uint32_t row = 0; row < 65; ++row)
+      for (std::uint32_t col = 0; col < 65; ++col) {
+        const double east_m = (geo::latlon_from_tile_pixel(id, col, row, 64)->lon - lon_) * metres_per_degree_;
+        t.heights.push_back(static_cast<float>(height_m_(east_m)));
+      }
+    terrain::update_height_range(t);
+    return r;
+  }
+
+ private:
+  terrain::SourceInfo info_;
+  double lon_, metres_per_degree_;
+  std::function<double(double)> height_m_;
+};
+
+}  // namespace trailray::render::test
