@@ -1,6 +1,27 @@
 #include "app/terrain_options.hpp"
 
+#include <cctype>
+
 namespace trailray::app {
+namespace {
+
+// The check accepts any case ("TMS"); the value keeps the user's spelling, so it is lowered
+// before parsing (scheme_of).
+void add_scheme_option(CLI::App& cmd, const std::string& name, std::string& value, const std::string& what) {
+  cmd.add_option(name, value,
+                 "Row order of " + what +
+                     ": xyz (from the north) or tms (from the south); default: its metadata, "
+                     "else xyz")
+      ->check(CLI::IsMember({"xyz", "tms"}, CLI::ignore_case))
+      ->type_name("xyz|tms");
+}
+
+std::optional<terrain::TileScheme> scheme_of(std::string value) {
+  for (char& c : value) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return terrain::parse_tile_scheme(value);
+}
+
+}  // namespace
 
 void add_terrain_options(CLI::App& cmd, TerrainOptions& o) {
   cmd.add_option("--terrain", o.terrain,
@@ -13,11 +34,7 @@ void add_terrain_options(CLI::App& cmd, TerrainOptions& o) {
                  "else terrarium)")
       ->check(CLI::IsMember({"terrarium", "mapbox", "alpinemaps", "float"}, CLI::ignore_case))
       ->type_name("terrarium|mapbox|alpinemaps|float");
-  cmd.add_option("--terrain-scheme", o.terrain_scheme,
-                 "Row order of a tile folder: xyz (from the north) or tms (from the south); default: its metadata, "
-                 "else xyz")
-      ->check(CLI::IsMember({"xyz", "tms"}, CLI::ignore_case))
-      ->type_name("xyz|tms");
+  add_scheme_option(cmd, "--terrain-scheme", o.terrain_scheme, "a tile folder");
   cmd.add_option("--terrain-zoom", o.terrain_zoom,
                  "The finest tile level to use (default: the source's finest; fewer downloads when lower)")
       ->check(CLI::Range(0, 24))
@@ -34,11 +51,7 @@ void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
                  "http(s) URL template, or none: a tint by height (default: the config file's, else EOX Sentinel-2 "
                  "cloudless)")
       ->type_name("SRC");
-  cmd.add_option("--imagery-scheme", o.imagery_scheme,
-                 "Row order of an imagery tile folder: xyz (from the north) or tms (from the south); default: its "
-                 "metadata, else xyz")
-      ->check(CLI::IsMember({"xyz", "tms"}, CLI::ignore_case))
-      ->type_name("xyz|tms");
+  add_scheme_option(cmd, "--imagery-scheme", o.imagery_scheme, "an imagery tile folder");
 }
 
 terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& o) {
@@ -53,13 +66,9 @@ terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& o) {
     s.source = o.imagery;
     c.imagery = s;
   }
-  if (!o.imagery_scheme.empty())
-    c.imagery.scheme = o.imagery_scheme == "tms" || o.imagery_scheme == "TMS" ? terrain::TileScheme::tms
-                                                                              : terrain::TileScheme::xyz;
+  if (!o.imagery_scheme.empty()) c.imagery.scheme = scheme_of(o.imagery_scheme);
   if (!o.terrain_encoding.empty()) c.terrain.encoding = terrain::parse_height_encoding(o.terrain_encoding);
-  if (!o.terrain_scheme.empty())
-    c.terrain.scheme = o.terrain_scheme == "tms" || o.terrain_scheme == "TMS" ? terrain::TileScheme::tms
-                                                                                : terrain::TileScheme::xyz;
+  if (!o.terrain_scheme.empty()) c.terrain.scheme = scheme_of(o.terrain_scheme);
   if (o.offline) c.network.offline = true;
   return c;
 }

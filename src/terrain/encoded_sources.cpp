@@ -114,14 +114,8 @@ void TileMetadata::set(std::string_view key, std::string_view value, const std::
     encoding = parse_height_encoding(value);
     if (!encoding) bad_value(where, key, value, "one of terrarium, mapbox, alpinemaps, float");
   } else if (key == "scheme") {
-    const std::string s = lower(trimmed(value));
-    if (s == "xyz") {
-      scheme = TileScheme::xyz;
-    } else if (s == "tms") {
-      scheme = TileScheme::tms;
-    } else {
-      bad_value(where, key, value, "xyz or tms");
-    }
+    scheme = parse_tile_scheme(lower(trimmed(value)));
+    if (!scheme) bad_value(where, key, value, "xyz or tms");
   } else if (key == "format") {
     format = lower(trimmed(value));
     if (format == "jpeg") format = "jpg";

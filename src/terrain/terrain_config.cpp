@@ -1,10 +1,10 @@
 #include "terrain/terrain_config.hpp"
 
-#include <cstdlib>
-#include <set>
-#include <fstream>
-#include <sstream>
 #include <toml++/toml.h>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
 
 namespace trailray::terrain {
 namespace {
@@ -59,13 +59,8 @@ void read_source(const std::filesystem::path& file, const toml::table& t, Source
     if (!s.encoding) fail(file, *n, "unknown encoding `" + name + "` (terrarium, mapbox, alpinemaps, float)");
   }
   if (auto* n = t.get("scheme")) {
-    const std::string name = get_string(file, *n, "scheme");
-    if (name == "xyz")
-      s.scheme = TileScheme::xyz;
-    else if (name == "tms")
-      s.scheme = TileScheme::tms;
-    else
-      fail(file, *n, "`scheme` must be \"xyz\" or \"tms\"");
+    s.scheme = parse_tile_scheme(get_string(file, *n, "scheme"));
+    if (!s.scheme) fail(file, *n, "`scheme` must be \"xyz\" or \"tms\"");
   }
   if (auto* n = t.get("min_zoom")) s.min_zoom = get_int(file, *n, "min_zoom", 0, geo::kMaxTileZoom);
   if (auto* n = t.get("max_zoom")) s.max_zoom = get_int(file, *n, "max_zoom", 0, geo::kMaxTileZoom);
@@ -73,9 +68,11 @@ void read_source(const std::filesystem::path& file, const toml::table& t, Source
   if (auto* n = t.get("attribution")) s.attribution = get_string(file, *n, "attribution");
   if (auto* n = t.get("headers")) {
     const toml::table* h = n->as_table();
-    if (!h) fail(file, *n, "`headers` must be a table of strings, e.g. headers = { Authorization = \"Bearer ${TOKEN}\" }");
+    if (!h)
+      fail(file, *n, "`headers` must be a table of strings, e.g. headers = { Authorization = \"Bearer ${TOKEN}\" }");
     s.headers.clear();
-    for (const auto& [key, value] : *h) s.headers.emplace_back(std::string(key.str()), get_string(file, value, "headers." + std::string(key.str())));
+    for (const auto& [key, value] : *h)
+      s.headers.emplace_back(std::string(key.str()), get_string(file, value, "headers." + std::string(key.str())));
   }
 }
 
@@ -99,7 +96,8 @@ TerrainConfig default_terrain_config() {
 
 std::filesystem::path default_config_path() {
   if (const char* p = std::getenv("TRAILRAY_CONFIG"); p && *p) return p;
-  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x == '/') return std::filesystem::path(x) / "trailray/config.toml";
+  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x == '/')
+    return std::filesystem::path(x) / "trailray/config.toml";
   if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".config/trailray/config.toml";
   return {};
 }
@@ -153,7 +151,8 @@ TerrainConfig parse_terrain_config(std::string_view text, const std::filesystem:
       if (!n->is_boolean()) fail(file, *n, "`offline` must be true or false");
       c.network.offline = n->value<bool>().value_or(false);
     }
-    if (auto* n = t->get("connect_timeout_s")) c.network.connect_timeout_s = get_number(file, *n, "connect_timeout_s", 0.1, 3600);
+    if (auto* n = t->get("connect_timeout_s"))
+      c.network.connect_timeout_s = get_number(file, *n, "connect_timeout_s", 0.1, 3600);
     if (auto* n = t->get("timeout_s")) c.network.timeout_s = get_number(file, *n, "timeout_s", 0.1, 3600);
     if (auto* n = t->get("retries")) c.network.retries = get_int(file, *n, "retries", 0, 20);
     if (auto* n = t->get("max_parallel")) c.network.max_parallel = get_int(file, *n, "max_parallel", 1, 64);

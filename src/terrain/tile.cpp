@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "terrain/tile_source.hpp"
+
 namespace trailray::terrain {
 
 void update_height_range(HeightTile& tile) {
@@ -15,12 +17,22 @@ void update_height_range(HeightTile& tile) {
   tile.max_m = lo <= hi ? hi : kNoHeight;
 }
 
+std::optional<TileScheme> parse_tile_scheme(std::string_view name) {
+  if (name == "xyz") return TileScheme::xyz;
+  if (name == "tms") return TileScheme::tms;
+  return std::nullopt;
+}
+
 std::string_view to_string(TileStatus status) {
   switch (status) {
-    case TileStatus::ok: return "ok";
-    case TileStatus::no_data: return "no data";
-    case TileStatus::failed: return "failed";
-    case TileStatus::cancelled: return "cancelled";
+    case TileStatus::ok:
+      return "ok";
+    case TileStatus::no_data:
+      return "no data";
+    case TileStatus::failed:
+      return "failed";
+    case TileStatus::cancelled:
+      return "cancelled";
   }
   return "?";
 }

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <stop_token>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geo/bounds.hpp"
@@ -31,10 +32,13 @@ class SourceError : public std::runtime_error {
 // Row numbering of a tile pyramid on disk or on a server.
 enum class TileScheme { xyz, tms };
 
+// "xyz" or "tms" exactly (callers that accept other spellings normalise first); nullopt else.
+std::optional<TileScheme> parse_tile_scheme(std::string_view name);
+
 struct SourceInfo {
   std::string name;  // the path or URL template, for messages
   int min_zoom = 0;
-  int max_zoom = 15;                      // the finest level the source has
+  int max_zoom = 15;                        // the finest level the source has
   std::optional<geo::LatLonBounds> bounds;  // where it has data, when known
   std::optional<HeightEncoding> encoding;   // from the source's metadata, when it says
   std::string format;                       // "png", "jpg", "webp", "tif", ... when known
