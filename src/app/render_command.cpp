@@ -13,6 +13,8 @@
 
 #include "app/terrain_options.hpp"
 #include "app/track_options.hpp"
+#include "app/track_scene.hpp"
+#include "app/track_style_options.hpp"
 #include "render/camera.hpp"
 #include "render/frame_profiler.hpp"
 #include "render/framebuffer_readback.hpp"
@@ -48,6 +50,8 @@ struct RenderArgs {
   bool profile = false;
   int frames = 1;
   track::ReadOptions read;
+  track::AnalysisOptions analysis;
+  TrackStyleArgs style;
   TerrainOptions terrain;
 };
 
@@ -55,6 +59,7 @@ void warn(const std::string& message) { fmt::print(stderr, "trailray: warning: {
 
 // Every recorded point of the tracks (track and route points), and the first timestamp.
 struct TrackPoints {
+  std::vector<LoadedTrackFile> files;
   std::vector<render::GeoPosition> points;
   std::optional<double> first_time_s;
   double first_lon_deg = 0.0;
@@ -80,6 +85,7 @@ TrackPoints load_tracks(const RenderArgs& a) {
       for (const auto& p : r.points) add(p);
     if (read.file.tracks.empty() && read.file.routes.empty())
       throw std::runtime_error(path + ": has no track or route points to frame");
+    out.files.push_back({path, std::move(read.file)});
   }
   return out;
 }
@@ -147,6 +153,7 @@ int run_render(const RenderArgs& a) {
     if (a.pitch_deg) look_at->pitch_deg = *a.pitch_deg;
   }
 
+  const TrackStyle style = parse_track_style(a.style);
   const TrackPoints tracks = load_tracks(a);
   const double unix_time = sun_time(a, tracks);
 
@@ -185,6 +192,19 @@ int run_render(const RenderArgs& a) {
     for (const std::string& line : gl.describe()) fmt::print(stderr, "trailray: {}\n", line);
   render::SceneRenderer renderer({heights.get(), imagery.get()});
   render::SceneRenderOptions options;
+  // The tracks: cleaned, coloured, on the GPU (their buffers live as long as the renderer's use).
+  const TrackScene track_scene = build_track_scene(
+      tracks.files, style, {heights.get(), std::isnan(neutral) ? 0.0 : neutral, a.analysis}, warn);
+  std::vector<render::TrackBuffer> track_buffers;
+  track_buffers.reserve(track_scene.tracks.size());
+  for (const SceneTrack& t : track_scene.tracks) track_buffers.emplace_back(t.geometry);
+  for (std::size_t i = 0; i < track_buffers.size(); ++i)
+    options.tracks.push_back({&track_buffers[i], track_scene.tracks[i].color_srgb, track_scene.range.has_value()});
+  options.track_settings = style.settings;
+  if (track_scene.range) {
+    options.track_settings.value_min = static_cast<float>(track_scene.range->min);
+    options.track_settings.value_max = static_cast<float>(track_scene.range->max);
+  }
   options.sun_direction_ecef = render::sun_direction_ecef(unix_time);
   options.neutral_ground_height_m = neutral;
   options.timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000.0));
@@ -263,7 +283,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
       "on the track's first day, or now without tracks). Where no source covers the view a neutral ground\n"
       "is drawn at the tracks' lowest point.\n"
       "Exit status: 0 written, 1 a file, source or GL failed, 2 a usage error.");
-  cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to frame (drawn from issue 5 on)")->type_name("FILE");
+  cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to draw (the view frames them)")->type_name("FILE");
   cmd->add_option("-o,--output", args->output, "The PNG to write (atomically)")->required()->type_name("OUT.png");
   cmd->add_option("--size", args->size, "Image size in pixels (default 1920x1080)")->type_name("WxH");
   cmd->add_option("--camera", args->camera, "Camera position and orientation (degrees, metres)")
@@ -295,7 +315,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--frames", args->frames, "With --profile: frames to render and average (default 1)")->type_name("N");
   add_terrain_options(*cmd, args->terrain);
   add_imagery_option(*cmd, args->terrain);
+  add_track_style_options(*cmd, args->style);
   add_read_options(*cmd, args->read);
+  add_cleaning_options(*cmd, args->analysis);
   cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
 }
 

@@ -28,9 +28,13 @@ GBuffer::GBuffer(int width, int height, DistanceEncoding encoding)
                                                                                    : "G-buffer (packed distance)");
 }
 
-void GBuffer::bind_and_clear() const {
+void GBuffer::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, width_, height_);
+}
+
+void GBuffer::bind_and_clear() const {
+  bind();
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   const std::array<float, 4> zero{0.0f, 0.0f, 0.0f, 0.0f};

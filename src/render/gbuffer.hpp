@@ -30,6 +30,9 @@ class GBuffer {
   // Binds it for drawing with all three colour attachments, sets the viewport, and clears
   // everything to 0 (distance 0: the sky) and depth to far.
   void bind_and_clear() const;
+  // Binds it for drawing with all three attachments and sets the viewport; keeps the contents
+  // (the track pass draws over the terrain).
+  void bind() const;
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -1,5 +1,7 @@
 #include "render/scene_renderer.hpp"
 
+#include <GeographicLib/Geocentric.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -236,12 +238,24 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
         lowest = std::min(lowest, t.tile->min_m);
         highest = std::max(highest, t.tile->max_m);
       }
-    shadow_settings.caster_height_span_m = std::max(0.0, static_cast<double>(highest) - lowest);
+    // Tracks (a flight kilometres above the ground) cast shadows too.
+    double track_top = highest;
+    if (options.track_settings.cast_shadows)
+      for (const TrackDraw& draw : options.tracks)
+        if (draw.buffer != nullptr && draw.buffer->point_count() > 0) {
+          const glm::dvec3 c = draw.buffer->bounding_centre_ecef();
+          double lat = 0.0, lon = 0.0, centre_height = 0.0;
+          GeographicLib::Geocentric::WGS84().Reverse(c.x, c.y, c.z, lat, lon, centre_height);
+          track_top = std::max(track_top, centre_height + draw.buffer->bounding_radius_m());
+        }
+    shadow_settings.caster_height_span_m = std::max(0.0, track_top - lowest);
     cascades.emplace(camera, options.sun_direction_ecef, shadow_settings);
     if (!shadow_maps_ || shadow_maps_->map_size_px() != options.shadow_map_size_px)
       shadow_maps_.emplace(options.shadow_map_size_px);
   }
 
+  // The tracks' block origins relative to this camera (the shadow and track passes use them).
+  TrackPass::prepare(options.tracks, camera);
   FrameProfiler* profiler = options.profiler;
   if (profiler != nullptr) profiler->begin_frame();
   if (cascades) {
@@ -262,6 +276,12 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
           glDrawElements(GL_TRIANGLES, item.mesh->index_count, GL_UNSIGNED_INT, nullptr);
         }
         glBindVertexArray(0);
+        if (options.track_settings.cast_shadows && !options.tracks.empty()) {
+          const std::array<float, 16> relative = light.view_projection_relative_to(camera.position());
+          track_pass_.draw_shadow_casters(relative, options.sun_direction_ecef,
+                                          2.0 * light.radius_m / options.shadow_map_size_px, camera, options.tracks,
+                                          options.track_settings);
+        }
         ++cascade;
       });
     });
@@ -269,6 +289,15 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
   }
   const GBuffer gbuffer(width, height, distance_encoding_);
   timed(profiler, "tiles", [&] { terrain_pass_.draw(gbuffer, camera, items, options.snow); });
+  std::optional<TrackOverlayTarget> track_overlay;
+  if (!options.tracks.empty()) {
+    timed(profiler, "tracks", [&] {
+      // The overlay reads the terrain's distances, so it goes before the tracks enter the G-buffer.
+      track_overlay.emplace(width, height);
+      track_pass_.draw_overlay(gbuffer, *track_overlay, camera, lighting, options.tracks, options.track_settings);
+      track_pass_.draw_visible(gbuffer, camera, options.tracks, options.track_settings);
+    });
+  }
   const Texture* ambient_occlusion = nullptr;
   if (options.ssao) timed(profiler, "ssao", [&] { ambient_occlusion = &ssao_pass_.run(gbuffer, camera); });
   FrameTarget target(width, height);
@@ -279,6 +308,7 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
     const ComposeShadows shadows{cascades ? &*shadow_maps_ : nullptr, cascades ? &*cascades : nullptr};
     compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
   });
+  if (track_overlay) timed(profiler, "overlays", [&] { track_pass_.blend_overlay(*track_overlay); });
   timed(profiler, "readback", [&] { scene.image = read_rgba8(0, 0, target.width(), target.height()); });
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (profiler != nullptr) profiler->end_frame();

@@ -29,6 +29,7 @@
 #include "render/ssao_pass.hpp"
 #include "render/terrain_mesh.hpp"
 #include "render/terrain_pass.hpp"
+#include "render/track_pass.hpp"
 #include "terrain/tile_loader.hpp"
 #include "terrain/tile_source.hpp"
 
@@ -57,6 +58,10 @@ struct SceneRenderOptions {
   // When set, the frame's passes (shadows, tiles, ssao, compose, readback) are timed as one
   // profiler frame, begun after the tiles are loaded.
   FrameProfiler* profiler = nullptr;
+  // The tracks (their buffers outlive the render) and how they are drawn: ray-traced capsules
+  // in the G-buffer, ghosts where the terrain hides them, shadows (track_pass.hpp).
+  std::vector<TrackDraw> tracks;
+  TrackSceneSettings track_settings;
   // Called about every 100 ms while tiles load (on the calling thread).
   std::function<void(const terrain::LoadProgress&)> on_progress;
 };
@@ -109,6 +114,7 @@ class SceneRenderer {
   TerrainPass terrain_pass_;
   SsaoPass ssao_pass_;
   ComposePass compose_pass_;
+  TrackPass track_pass_;
   std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
   TerrainMeshCache meshes_;
   std::unordered_map<terrain::TileId, Texture> imagery_textures_;

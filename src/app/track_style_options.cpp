@@ -1,0 +1,108 @@
+#include "app/track_style_options.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <charconv>
+#include <cmath>
+
+namespace trailray::app {
+namespace {
+
+bool parse_on_off(const std::string& text, const char* option) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw CLI::ValidationError(option, fmt::format("'{}' is neither on nor off", text));
+}
+
+}  // namespace
+
+void add_track_style_options(CLI::App& command, TrackStyleArgs& args) {
+  const std::string metrics = fmt::format("{}", fmt::join(track::color_metric_names(), "|"));
+  command
+      .add_option("--width", args.width,
+                  "Tube diameter: metres (perspective, e.g. 8m) or pixels (constant on screen, e.g. 6px); "
+                  "never under 1.5 px on screen (default 5px)")
+      ->type_name("W{m|px}");
+  command
+      .add_option("--color-by", args.color_by,
+                  "Colour tracks by a per-point metric: speed km/h, vspeed m/s, slope %, altitude m, agl m "
+                  "(height above the terrain), hr bpm, cadence rpm, power W, time (elapsed); default solid")
+      ->type_name(metrics);
+  command
+      .add_option("--colormap", args.colormap,
+                  "Colormap for --color-by (default turbo; diverging for vspeed: sink blue, zero white, climb red)")
+      ->type_name("turbo|viridis|magma|cividis|diverging");
+  command
+      .add_option("--range", args.range,
+                  "Colour scale range in the metric's unit (default: 2nd to 98th percentile of the values)")
+      ->type_name("MIN:MAX");
+  command
+      .add_option("--color", args.colors,
+                  "Solid colour: one for every track, or one per track in order (default: a qualitative palette)")
+      ->type_name("'#rrggbb'");
+  command.add_option("--legend", args.legend, "Legend (colour bar, or key of track names) in the image (default on)")
+      ->type_name("on|off");
+  command
+      .add_option("--occlusion", args.occlusion,
+                  "Draw the parts of tracks hidden by terrain translucent (on, default) or not at all (off)")
+      ->type_name("on|off");
+  command.add_option("--occluded-alpha", args.occluded_alpha, "Opacity of hidden track parts, 0..1 (default 0.45)")
+      ->type_name("A");
+  command
+      .add_option("--occlusion-fade", args.occlusion_fade,
+                  "Hidden parts keep their opacity to NEAR metres behind the terrain, then fade out by FAR "
+                  "(default 100:1000)")
+      ->type_name("NEAR:FAR");
+  command.add_flag("--curtain", args.curtain,
+                   "A translucent wall from the track down to the terrain, coloured like the track (for flights)");
+}
+
+TrackStyle parse_track_style(const TrackStyleArgs& args) {
+  TrackStyle style;
+  auto width = render::parse_track_width(args.width);
+  if (!width.ok()) throw CLI::ValidationError(width.error);
+  style.settings.width = *width.value;
+
+  const auto metric = track::parse_color_metric(args.color_by);
+  if (!metric)
+    throw CLI::ValidationError("--color-by", fmt::format("'{}' is not one of {}", args.color_by,
+                                                         fmt::join(track::color_metric_names(), ", ")));
+  style.metric = *metric;
+  style.settings.colormap =
+      track::color_metric_is_signed(*metric) ? render::Colormap::diverging : render::Colormap::turbo;
+  if (!args.colormap.empty()) {
+    const auto map = render::parse_colormap(args.colormap);
+    if (!map)
+      throw CLI::ValidationError(
+          "--colormap", fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging", args.colormap));
+    style.settings.colormap = *map;
+  }
+  if (!args.range.empty()) {
+    style.range = track::parse_value_range(args.range);
+    if (!style.range)
+      throw CLI::ValidationError("--range",
+                                 fmt::format("'{}' is not MIN:MAX with finite numbers and MIN < MAX, e.g. 0:30", args.range));
+  }
+  for (const std::string& text : args.colors) {
+    const auto color = render::parse_hex_color(text);
+    if (!color) throw CLI::ValidationError("--color", fmt::format("'{}' is not a colour like '#e6194b' or '#f80'", text));
+    style.colors.push_back(*color);
+  }
+  style.legend = parse_on_off(args.legend, "--legend");
+  style.settings.occlusion.enabled = parse_on_off(args.occlusion, "--occlusion");
+  if (!(args.occluded_alpha >= 0.0 && args.occluded_alpha <= 1.0))
+    throw CLI::ValidationError("--occluded-alpha", fmt::format("'{}' is not an opacity in 0..1", args.occluded_alpha));
+  style.settings.occlusion.alpha = static_cast<float>(args.occluded_alpha);
+  const auto fade = track::parse_value_range(args.occlusion_fade);
+  if (!fade || fade->min < 0.0)
+    throw CLI::ValidationError("--occlusion-fade",
+                               fmt::format("'{}' is not NEAR:FAR in metres with 0 <= NEAR < FAR, e.g. 100:1000",
+                                           args.occlusion_fade));
+  style.settings.occlusion.fade_near_m = static_cast<float>(fade->min);
+  style.settings.occlusion.fade_far_m = static_cast<float>(fade->max);
+  style.settings.curtain = args.curtain;
+  return style;
+}
+
+}  // namespace trailray::app

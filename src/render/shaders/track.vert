@@ -1,0 +1,91 @@
+#version 300 es
+// One camera-facing quad per segment, from gl_VertexID alone (no vertex buffer): vertex 6k..6k+5
+// belong to the segment from point u_first + k to the next. The quad is the tight bounding quad
+// of thesis §3.2.2 (Groß and Gumhold), built per end in the plane facing the eye, with three
+// corrections: it is widened to the capsule's true silhouette when the eye is near (a sphere of
+// radius r seen from distance D spans r D / sqrt(D^2 - r^2) in the plane through its centre),
+// both ends get the larger of the two ends' angular size (so a segment seen end-on, a disc,
+// stays covered), and it has a margin for the anti-aliased fringe. u_orthographic: the shadow
+// pass, where every ray runs along -u_towards_light.
+precision highp float;
+precision highp int;
+
+#include "track_common.glsl"
+
+uniform mat4 u_view_projection;  // camera-relative ECEF -> clip
+uniform bool u_orthographic;
+uniform vec3 u_towards_light;    // unit, ECEF (orthographic only)
+uniform float u_margin_px;       // the quad's margin for the fringe, in pixels
+uniform float u_texel_m;         // orthographic: the size of a shadow map texel
+
+flat out vec3 v_x0;  // the previous point (== v_x1 at a segment start)
+flat out vec3 v_x1;
+flat out vec3 v_x2;
+flat out vec3 v_x3;  // the next point after v_x2 (== v_x2 at a segment end)
+flat out vec3 v_radii;   // previous capsule's, this one's, next one's
+flat out vec2 v_values;  // at v_x1 and v_x2
+flat out int v_neighbours;  // bit 0: there is a previous capsule, bit 1: a next one
+out vec3 v_position;     // the quad's point, camera-relative ECEF
+
+void main() {
+  int segment = gl_VertexID / 6;
+  int corner = gl_VertexID - segment * 6;
+  int i1 = u_first + segment;
+  int i2 = min(i1 + 1, u_last);
+  bool has_previous = i1 > u_first;
+  bool has_next = i2 + 1 <= u_last;
+  vec3 x1 = track_point(i1);
+  vec3 x2 = track_point(i2);
+  vec3 x0 = has_previous ? track_point(i1 - 1) : x1;
+  vec3 x3 = has_next ? track_point(i2 + 1) : x2;
+  float radius = tube_radius(x1, x2);
+  v_x0 = x0;
+  v_x1 = x1;
+  v_x2 = x2;
+  v_x3 = x3;
+  v_radii = vec3(has_previous ? tube_radius(x0, x1) : radius, radius, has_next ? tube_radius(x2, x3) : radius);
+  v_values = vec2(track_value(i1), track_value(i2));
+  v_neighbours = (has_previous ? 1 : 0) + (has_next ? 2 : 0);
+
+  // Corners: (end, side) = (0,-1) (0,+1) (1,-1) | (1,-1) (0,+1) (1,+1).
+  int end = (corner == 2 || corner == 3 || corner == 5) ? 1 : 0;
+  float side = (corner == 1 || corner == 4 || corner == 5) ? 1.0 : -1.0;
+  vec3 here = end == 0 ? x1 : x2;
+  vec3 there = end == 0 ? x2 : x1;
+  vec3 to_eye;
+  float reach;
+  if (u_orthographic) {
+    to_eye = u_towards_light;
+    reach = radius + u_margin_px * u_texel_m;
+  } else {
+    float eye_distance = length(closest_on_segment(vec3(0.0), x1, x2));
+    if (eye_distance <= radius * 1.0001) {
+      // The camera is inside this capsule: it would cover the whole view; leave it out.
+      gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+      v_position = here;
+      return;
+    }
+    float silhouette = radius * eye_distance / sqrt(eye_distance * eye_distance - radius * radius);
+    float d_here = max(length(here), 1.0e-6);
+    float d_there = max(length(there), 1.0e-6);
+    to_eye = -here / d_here;
+    reach = silhouette * max(1.0, d_here / d_there) + u_margin_px * u_pixel_angle * d_here;
+  }
+  vec3 axis = x2 - x1;
+  vec3 across_view = axis - to_eye * dot(axis, to_eye);
+  float across_length = length(across_view);
+  vec3 along, sideways;
+  if (across_length > 1.0e-4 * length(axis) && across_length > 0.0) {
+    along = across_view / across_length;
+    sideways = normalize(cross(along, to_eye));
+  } else {
+    // Seen end-on (or a repeated point): any square around the view line.
+    vec3 helper = abs(to_eye.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+    sideways = normalize(cross(helper, to_eye));
+    along = cross(to_eye, sideways);
+  }
+  float outward = end == 0 ? -1.0 : 1.0;
+  vec3 position = here + along * (outward * reach) + sideways * (side * reach);
+  v_position = position;
+  gl_Position = u_view_projection * vec4(position, 1.0);
+}

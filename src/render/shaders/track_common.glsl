@@ -1,0 +1,57 @@
+// Shared by the track pass's shaders (track_pass.hpp): fetching points from the track textures
+// (track_buffer.hpp), the tube's radius, and the capsule geometry. Positions are camera-relative
+// ECEF metres: the camera (the eye of the perspective passes) is at the origin.
+
+uniform highp sampler2D u_points;  // xyz: offset from the block origin, w: value
+uniform highp sampler2D u_blocks;  // xyz: block origin minus the camera
+uniform int u_first;               // the segment's first and last point index
+uniform int u_last;
+uniform float u_width_value;     // the tube's diameter: metres, or pixels when u_width_in_pixels
+uniform bool u_width_in_pixels;
+uniform float u_min_width_px;    // a tube is never thinner on screen than this
+uniform float u_pixel_angle;     // the camera's pixel size per metre of distance
+
+const int kBlockPoints = 256;
+const float kMissingValueBelow = -1.0e38;  // track_buffer.cpp stores -3e38 for "no value"
+
+vec4 fetch_texel(highp sampler2D texture_2d, int index) {
+  int width = textureSize(texture_2d, 0).x;
+  return texelFetch(texture_2d, ivec2(index % width, index / width), 0);
+}
+
+vec3 track_point(int index) {
+  return fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, index / kBlockPoints).xyz;
+}
+
+float track_value(int index) { return fetch_texel(u_points, index).w; }
+
+// The point of segment a-b closest to p.
+vec3 closest_on_segment(vec3 p, vec3 a, vec3 b) {
+  vec3 ab = b - a;
+  float length2 = dot(ab, ab);
+  float s = length2 > 0.0 ? clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return a + ab * s;
+}
+
+// The radius of the capsule a-b: from the width, never under the minimum on-screen width at the
+// segment's distance from the camera (so a distant track never breaks into dots).
+float tube_radius(vec3 a, vec3 b) {
+  float pixel_m = u_pixel_angle * length(closest_on_segment(vec3(0.0), a, b));
+  float diameter = u_width_in_pixels ? u_width_value * pixel_m : u_width_value;
+  return 0.5 * max(diameter, u_min_width_px * pixel_m);
+}
+
+// The plane through a joint that splits the overlap of the capsules before and after it (thesis
+// eq. 3.7: normal along the chord from the next point to the previous one). An exact reversal
+// (before == after) has no chord: any plane through the joint containing the segment will do,
+// as the two capsules coincide. Both segments at a joint call this with the same three points.
+vec3 joint_normal(vec3 before, vec3 joint, vec3 after) {
+  vec3 chord = before - after;
+  float chord_length = length(chord);
+  float scale = length(before - joint) + length(after - joint);
+  if (chord_length > 1.0e-5 * scale && chord_length > 0.0) return chord / chord_length;
+  vec3 axis = joint - before;
+  if (dot(axis, axis) == 0.0) axis = vec3(1.0, 0.0, 0.0);
+  vec3 helper = abs(normalize(axis).x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  return normalize(cross(axis, helper));
+}

@@ -1,0 +1,36 @@
+#version 300 es
+// The curtain (`--curtain`): per segment a vertical wall from the track down to the ground, as
+// Google Earth's "extrude" draws it: two triangles between the segment's points and the points
+// below them. The drop (height above the ground) comes from the track's drop texture; "down" is
+// the ellipsoid's normal at each point.
+precision highp float;
+precision highp int;
+
+#include "track_common.glsl"
+
+uniform highp sampler2D u_drops;  // R32F: metres from each point down to the ground
+uniform mat4 u_view_projection;
+uniform vec3 u_eye_ecef;          // the camera's position (only for the direction of "down")
+
+out vec3 v_position;
+out float v_value;
+out float v_height_fraction;  // 1 at the track, 0 at the ground
+
+const vec3 kInverseAxes2 = vec3(1.0 / (6378137.0 * 6378137.0), 1.0 / (6378137.0 * 6378137.0),
+                                1.0 / (6356752.314245 * 6356752.314245));
+
+void main() {
+  int segment = gl_VertexID / 6;
+  int corner = gl_VertexID - segment * 6;
+  int index = u_first + segment + ((corner == 2 || corner == 3 || corner == 5) ? 1 : 0);
+  index = min(index, u_last);
+  bool top = corner == 1 || corner == 4 || corner == 5;
+  vec3 point = track_point(index);
+  float drop = fetch_texel(u_drops, index).r;
+  vec3 down = -normalize((u_eye_ecef + point) * kInverseAxes2);
+  vec3 position = top ? point : point + down * drop;
+  v_position = position;
+  v_value = track_value(index);
+  v_height_fraction = top ? 1.0 : 0.0;
+  gl_Position = u_view_projection * vec4(position, 1.0);
+}

@@ -1,0 +1,98 @@
+#version 300 es
+// The track overlay (track_pass.hpp): what the G-buffer cannot hold, drawn into its own
+// premultiplied target with its own depth and no blending, so each pixel keeps only the nearest
+// track surface and is blended over the frame exactly once:
+//   - hits the terrain hides: a translucent "ghost", constant alpha down to u_fade.x metres
+//     behind the terrain, fading to 0 at u_fade.y (thesis §3.2.4);
+//   - visible hits: transparent, but with their depth, so nothing behind them shows through;
+//   - the anti-aliased fringe just outside a tube's silhouette (pushed back by the radius, so a
+//     neighbouring tube's surface always wins over it).
+// Ghosts and fringes are lit here by the sun and the sky (no shadows: they are not surfaces of
+// the scene), and written sRGB-encoded like the composed frame.
+precision highp float;
+precision highp int;
+
+#include "gbuffer.glsl"
+#include "srgb.glsl"
+#include "track_common.glsl"
+#include "track_trace.glsl"
+
+uniform highp sampler2D u_terrain_distance;  // the G-buffer's distance before the tracks
+uniform bool u_packed_distance;
+uniform bool u_show_occluded;
+uniform float u_occluded_alpha;
+uniform vec2 u_fade;           // metres behind the terrain: constant alpha until x, 0 at y
+uniform float u_depth_step_k;  // depth-buffer resolution at distance d: d * d * k metres
+uniform vec3 u_sun;            // unit, towards the sun, ECEF
+uniform vec3 u_up;             // unit, local vertical at the camera, ECEF
+uniform vec3 u_sun_radiance;
+uniform vec3 u_sky_radiance;
+
+out vec4 overlay;
+
+vec3 lit(vec3 albedo, vec3 normal) {
+  float sun = max(dot(normal, u_sun), 0.0);
+  float sky = 0.5 + 0.5 * dot(normal, u_up);
+  return linear_to_srgb(albedo * (u_sun_radiance * sun + u_sky_radiance * sky));
+}
+
+// The alpha of a track point `t` metres along the ray where the terrain is `terrain` metres
+// away (0: sky); 1 where nothing hides it.
+float visibility_alpha(float t, float terrain) {
+  // Lean towards "hidden": where the two passes' depth tests disagree by a depth step, a faint
+  // ghost over the opaque tube shows nothing, a hole would.
+  if (terrain <= 0.0 || t < terrain - (0.07 + t * t * u_depth_step_k)) return 1.0;
+  if (!u_show_occluded) return 0.0;
+  float behind = max(t - terrain, 0.0);
+  float fade = u_fade.y > u_fade.x ? clamp((behind - u_fade.x) / (u_fade.y - u_fade.x), 0.0, 1.0)
+                                   : (behind > u_fade.x ? 1.0 : 0.0);
+  return u_occluded_alpha * (1.0 - fade);
+}
+
+void main() {
+  vec3 direction = normalize(v_position);
+  CapsuleHit hit = trace_capsule(vec3(0.0), direction, true);
+  if (hit.clipped) discard;
+  float terrain = read_distance(u_terrain_distance, ivec2(gl_FragCoord.xy), u_packed_distance);
+  if (hit.hit) {
+    float alpha = visibility_alpha(hit.t, terrain);
+    gl_FragDepth = window_depth(hit.position);
+    if (alpha >= 1.0) {
+      overlay = vec4(0.0);  // in the G-buffer already: only its depth matters here
+      return;
+    }
+    if (alpha <= 0.0) discard;
+    overlay = vec4(lit(track_albedo(hit.position), hit.normal) * alpha, alpha);
+    return;
+  }
+  // The fringe: how far the ray passes outside the tube, in pixels at that distance.
+  vec3 axis = v_x2 - v_x1;
+  float shift = dot(0.5 * (v_x1 + v_x2), direction);
+  vec3 o = direction * shift;  // the ray's point nearest the segment's middle
+  // Closest approach of the ray (o + t d) and the segment: minimise over the segment parameter.
+  float length2 = dot(axis, axis);
+  float s = 0.0;
+  if (length2 > 0.0) {
+    vec3 axis_across = axis - direction * dot(axis, direction);
+    float across2 = dot(axis_across, axis_across);
+    s = across2 > 1.0e-12 * length2 ? clamp(dot(o - v_x1, axis_across) / across2, 0.0, 1.0) : 0.0;
+  }
+  vec3 on_axis = v_x1 + axis * s;
+  float t_local = dot(on_axis - o, direction);
+  vec3 on_ray = o + direction * t_local;
+  float t = shift + t_local;
+  if (t <= 0.0) discard;
+  vec3 outward = on_ray - on_axis;
+  float miss = length(outward);
+  float radius = v_radii.y;
+  float pixel_m = u_pixel_angle * t;
+  float coverage = clamp(0.5 - (miss - radius) / pixel_m, 0.0, 0.5);
+  if (coverage <= 0.0 || miss <= 0.0) discard;
+  vec3 normal = outward / miss;
+  vec3 edge = on_axis + normal * radius;
+  if (clipped_by_joints(edge)) discard;
+  float alpha = coverage * visibility_alpha(t, terrain);
+  if (alpha <= 0.0) discard;
+  gl_FragDepth = window_depth(edge + direction * radius);
+  overlay = vec4(lit(track_albedo(edge), normal) * alpha, alpha);
+}

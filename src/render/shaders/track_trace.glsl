@@ -1,0 +1,140 @@
+// The fragment half of the capsule technique (track_pass.hpp): the ray-capsule intersection
+// with the exact normal, the joint clipping, the colour of a hit. Needs track_common.glsl.
+
+flat in vec3 v_x0;
+flat in vec3 v_x1;
+flat in vec3 v_x2;
+flat in vec3 v_x3;
+flat in vec3 v_radii;
+flat in vec2 v_values;
+flat in int v_neighbours;
+in vec3 v_position;
+
+uniform mat4 u_view_projection;
+
+// The nearest entry of the line o + t d (d unit, t of either sign) into the capsule a-b of
+// radius r (after Inigo Quilez's capsule intersection: the cylinder body, else the nearer of the
+// end spheres, which lie inside the infinite cylinder). The caller puts o near the capsule, so
+// that no term is large and the float arithmetic keeps its precision at any distance.
+bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t) {
+  t = 0.0;
+  vec3 ba = b - a;
+  vec3 oa = o - a;
+  float baba = dot(ba, ba);
+  float bard = dot(ba, d);
+  float baoa = dot(ba, oa);
+  float k2 = baba - bard * bard;
+  if (baba > 0.0 && k2 > 1.0e-6 * baba) {
+    float k1 = baba * dot(d, oa) - baoa * bard;
+    float k0 = baba * dot(oa, oa) - baoa * baoa - r * r * baba;
+    float h = k1 * k1 - k2 * k0;
+    if (h < 0.0) return false;  // misses the infinite cylinder, so the spheres too
+    t = (-k1 - sqrt(h)) / k2;
+    float y = baoa + t * bard;
+    if (y > 0.0 && y < baba) return true;
+  }
+  // The end spheres (also the whole capsule seen exactly end-on, or a zero-length segment).
+  bool hit = false;
+  float best = 0.0;
+  for (int end = 0; end < 2; ++end) {
+    vec3 oc = o - (end == 0 ? a : b);
+    float half_b = dot(oc, d);
+    float h = half_b * half_b - (dot(oc, oc) - r * r);
+    if (h < 0.0) continue;
+    float entry = -half_b - sqrt(h);
+    if (!hit || entry < best) best = entry;
+    hit = true;
+  }
+  t = best;
+  return hit;
+}
+
+// Whether p (on this capsule's surface) lies inside the capsule a-b, with a hair of tolerance so
+// that a point on both surfaces counts as inside: the joint planes then give it to exactly one.
+bool inside_capsule(vec3 p, vec3 a, vec3 b, float r) {
+  return length(p - closest_on_segment(p, a, b)) < r * (1.0 + 1.0e-4) + 1.0e-4;
+}
+
+// The joints (thesis §3.2.3): a hit beyond the plane through a joint is dropped when the
+// neighbouring capsule holds it; that capsule draws the surface there. Clipping only what the
+// neighbour covers leaves no hole at any turn, and the first entry of a ray into the union of
+// the two capsules is never inside either, so exactly one of them draws it.
+bool clipped_by_joints(vec3 p) {
+  if ((v_neighbours & 1) != 0) {
+    vec3 n = joint_normal(v_x0, v_x1, v_x2);
+    if (dot(p - v_x1, n) >= 0.0 && inside_capsule(p, v_x0, v_x1, v_radii.x)) return true;
+  }
+  if ((v_neighbours & 2) != 0) {
+    vec3 n = joint_normal(v_x1, v_x2, v_x3);
+    if (dot(p - v_x2, n) < 0.0 && inside_capsule(p, v_x2, v_x3, v_radii.z)) return true;
+  }
+  return false;
+}
+
+struct CapsuleHit {
+  bool hit;
+  bool clipped;    // the ray hits this capsule where its neighbour draws the surface
+  float t;         // along the ray
+  vec3 position;   // camera-relative ECEF
+  vec3 normal;     // unit, ECEF
+};
+
+// The ray from `origin` along unit `direction` against this fragment's capsule, with the joints
+// clipped. `in_front_only`: hits behind the origin (t <= 0) do not count.
+CapsuleHit trace_capsule(vec3 origin, vec3 direction, bool in_front_only) {
+  CapsuleHit result;
+  result.hit = false;
+  result.clipped = false;
+  result.t = 0.0;
+  result.position = vec3(0.0);
+  result.normal = vec3(0.0, 0.0, 1.0);
+  float shift = dot(0.5 * (v_x1 + v_x2) - origin, direction);
+  vec3 near_origin = origin + direction * shift;
+  float t;
+  if (!capsule_entry(near_origin, direction, v_x1, v_x2, v_radii.y, t)) return result;
+  if (in_front_only && shift + t <= 0.0) return result;
+  vec3 p = near_origin + direction * t;
+  if (clipped_by_joints(p)) {
+    result.clipped = true;
+    return result;
+  }
+  result.hit = true;
+  result.t = shift + t;
+  result.position = p;
+  result.normal = normalize(p - closest_on_segment(p, v_x1, v_x2));
+  return result;
+}
+
+// Window depth of a camera-relative point (for gl_FragDepth), clamped to the depth range.
+float window_depth(vec3 p) {
+  vec4 clip = u_view_projection * vec4(p, 1.0);
+  return clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+}
+
+// --- colour ---
+uniform bool u_by_value;
+uniform vec3 u_color;          // linear: the solid colour
+uniform vec3 u_missing_color;  // linear: a point without a value
+uniform highp sampler2D u_colormap;  // 256x1 sRGB texture: sampled as linear
+uniform vec2 u_value_range;    // min, max of the colour scale
+
+// The value at a point of the segment: interpolated between the ends; where one end has no
+// value, the nearer end decides.
+vec3 track_albedo(vec3 p) {
+  if (!u_by_value) return u_color;
+  vec3 ab = v_x2 - v_x1;
+  float length2 = dot(ab, ab);
+  float s = length2 > 0.0 ? clamp(dot(p - v_x1, ab) / length2, 0.0, 1.0) : 0.0;
+  bool missing_a = v_values.x < kMissingValueBelow;
+  bool missing_b = v_values.y < kMissingValueBelow;
+  float value;
+  if (!missing_a && !missing_b)
+    value = mix(v_values.x, v_values.y, s);
+  else if (missing_a != missing_b && (missing_a ? s >= 0.5 : s < 0.5))
+    value = missing_a ? v_values.y : v_values.x;
+  else
+    return u_missing_color;
+  float span = u_value_range.y - u_value_range.x;
+  float position = span > 0.0 ? clamp((value - u_value_range.x) / span, 0.0, 1.0) : 0.5;
+  return texture(u_colormap, vec2((position * 255.0 + 0.5) / 256.0, 0.5)).rgb;
+}

@@ -1,0 +1,306 @@
+#include "render/track_pass.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "render/render_error.hpp"
+
+namespace trailray::render {
+namespace {
+
+// Texture units of the track programs.
+constexpr GLuint kPointsUnit = 0, kBlocksUnit = 1, kColormapUnit = 2, kTerrainDistanceUnit = 3, kDropsUnit = 4;
+// The quad's margin for the anti-aliased fringe (pixels), and the shadow quad's (texels).
+constexpr float kFringeMarginPx = 1.5f;
+constexpr float kShadowMarginTexels = 1.0f;
+
+void check_gl(const char* what) {
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) throw RenderError(std::string(what) + " failed (GL error " + std::to_string(error) + ")");
+}
+
+glm::vec3 srgb_to_linear(const glm::vec3& c) {
+  const auto one = [](float v) {
+    v = std::clamp(v, 0.0f, 1.0f);
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+  };
+  return {one(c.r), one(c.g), one(c.b)};
+}
+
+void set_vec3(const ShaderProgram& program, std::string_view name, const glm::vec3& v) {
+  program.set_vec3(name, v.x, v.y, v.z);
+}
+
+std::array<float, 9> to_float_mat3(const glm::dmat3& m) {
+  std::array<float, 9> out{};
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) out[static_cast<std::size_t>(c * 3 + r)] = static_cast<float>(m[c][r]);
+  return out;
+}
+
+// The camera's pixel size per metre of distance (at the image centre).
+float pixel_angle(const Camera& camera) {
+  const Lens& lens = camera.lens();
+  return static_cast<float>(2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px);
+}
+
+// Uniforms every capsule program shares: width and the camera's pixel size.
+void set_width_uniforms(const ShaderProgram& program, const Camera& camera, const TrackSceneSettings& settings) {
+  program.set_int("u_points", static_cast<int>(kPointsUnit));
+  program.set_int("u_blocks", static_cast<int>(kBlocksUnit));
+  program.set_float("u_width_value", static_cast<float>(settings.width.value));
+  program.set_int("u_width_in_pixels", settings.width.unit == TrackWidth::Unit::pixels ? 1 : 0);
+  program.set_float("u_min_width_px", static_cast<float>(settings.min_width_px));
+  program.set_float("u_pixel_angle", pixel_angle(camera));
+}
+
+void set_color_uniforms(const ShaderProgram& program, const TrackDraw& draw, const TrackSceneSettings& settings) {
+  program.set_int("u_by_value", draw.by_value && draw.buffer->has_values() ? 1 : 0);
+  set_vec3(program, "u_color", srgb_to_linear(draw.color_srgb));
+  set_vec3(program, "u_missing_color", srgb_to_linear(kMissingValueColorSrgb));
+  program.set_vec2("u_value_range", settings.value_min, settings.value_max);
+}
+
+void bind_texture(GLuint unit, const Texture& texture) {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, texture.id());
+}
+
+// Draws every segment of the track with `vertices_per_segment` vertices per pair of points
+// (a segment of one point is drawn as a sphere: a zero-length capsule).
+void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
+  bind_texture(kPointsUnit, buffer.points());
+  bind_texture(kBlocksUnit, buffer.blocks());
+  for (const TrackBuffer::Range& range : buffer.segments()) {
+    if (range.count <= 0) continue;
+    program.set_int("u_first", range.first);
+    program.set_int("u_last", range.first + range.count - 1);
+    const GLsizei capsules = std::max(range.count - 1, 1);
+    glDrawArrays(GL_TRIANGLES, 0, capsules * 6);
+  }
+}
+
+bool drawable(const TrackDraw& draw) { return draw.buffer != nullptr && draw.buffer->point_count() > 0; }
+
+}  // namespace
+
+Result<TrackWidth> parse_track_width(std::string_view text) {
+  const auto fail = [&] {
+    return Result<TrackWidth>{std::nullopt, fmt::format("--width: '{}' is not a width: a positive number of metres "
+                                                        "or pixels, e.g. 8m or 6px",
+                                                        text)};
+  };
+  std::string_view rest = text;
+  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), value);
+  if (ec != std::errc() || end == rest.data()) return fail();
+  std::string_view unit(end, static_cast<std::size_t>(rest.data() + rest.size() - end));
+  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  while (!unit.empty() && unit.back() == ' ') unit.remove_suffix(1);
+  TrackWidth width;
+  width.value = value;
+  if (unit == "m")
+    width.unit = TrackWidth::Unit::metres;
+  else if (unit == "px")
+    width.unit = TrackWidth::Unit::pixels;
+  else
+    return fail();
+  if (!std::isfinite(value) || !(value > 0.0) || value > 1.0e6) return fail();
+  return {width, {}};
+}
+
+TrackOverlayTarget::TrackOverlayTarget(int width, int height)
+    : width_(width),
+      height_(height),
+      color_(make_texture_2d(GL_RGBA8, width, height)),
+      depth_(make_renderbuffer(GL_DEPTH_COMPONENT24, width, height)),
+      framebuffer_(Framebuffer::create()) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  check_framebuffer_complete(GL_FRAMEBUFFER, "track overlay");
+}
+
+void TrackOverlayTarget::bind_and_clear() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, width_, height_);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClearDepthf(1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+TrackPass::TrackPass()
+    : visible_(ShaderProgram::from_embedded("track.vert", "track_visible.frag")),
+      overlay_(ShaderProgram::from_embedded("track.vert", "track_overlay.frag")),
+      shadow_(ShaderProgram::from_embedded("track.vert", "track_shadow.frag")),
+      curtain_(ShaderProgram::from_embedded("track_curtain.vert", "track_curtain.frag")),
+      blend_(ShaderProgram::from_embedded("fullscreen_triangle.vert", "overlay_blend.frag")),
+      empty_(VertexArray::create()) {}
+
+void TrackPass::bind_colormap(Colormap map, GLuint unit) const {
+  if (!colormap_ || colormap_loaded_ != map) {
+    const ColormapTable& table = colormap_table(map);
+    std::vector<std::uint8_t> rgba;
+    rgba.reserve(kColormapSize * 4);
+    for (const glm::u8vec3& c : table) rgba.insert(rgba.end(), {c.r, c.g, c.b, 255});
+    Texture texture = make_texture_2d(GL_SRGB8_ALPHA8, static_cast<int>(kColormapSize), 1);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, static_cast<GLsizei>(kColormapSize), 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                    rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    colormap_ = std::move(texture);
+    colormap_loaded_ = map;
+  }
+  bind_texture(unit, colormap_);
+}
+
+void TrackPass::prepare(std::span<const TrackDraw> tracks, const Camera& camera) {
+  for (const TrackDraw& draw : tracks)
+    if (draw.buffer != nullptr) const_cast<TrackBuffer*>(draw.buffer)->set_eye(to_dvec3(camera.position()));
+}
+
+void TrackPass::draw_visible(const GBuffer& gbuffer, const Camera& camera, std::span<const TrackDraw> tracks,
+                             const TrackSceneSettings& settings) const {
+  gbuffer.bind();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  visible_.use();
+  const std::array<float, 16> view_projection = camera.view_projection_relative_to(camera.position());
+  visible_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
+  const std::array<float, 9> rotation = to_float_mat3(camera.view_rotation());
+  visible_.set_mat3("u_view_rotation", std::span<const float, 9>(rotation));
+  visible_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  visible_.set_int("u_orthographic", 0);
+  visible_.set_float("u_margin_px", 0.0f);
+  visible_.set_int("u_colormap", static_cast<int>(kColormapUnit));
+  set_width_uniforms(visible_, camera, settings);
+  bind_colormap(settings.colormap, kColormapUnit);
+  glBindVertexArray(empty_.id());
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw)) continue;
+    set_color_uniforms(visible_, draw, settings);
+    draw_segments(visible_, *draw.buffer);
+  }
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glActiveTexture(GL_TEXTURE0);
+  check_gl("drawing the tracks into the G-buffer");
+}
+
+void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const Camera& camera,
+                             const SceneLighting& lighting, std::span<const TrackDraw> tracks,
+                             const TrackSceneSettings& settings) const {
+  target.bind_and_clear();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  const std::array<float, 16> view_projection = camera.view_projection_relative_to(camera.position());
+  const GeoPosition& at = camera.geodetic();
+  const glm::vec3 up(enu_axes_at(at.lat_deg, at.lon_deg).up);
+  const glm::vec3 sun(glm::normalize(lighting.sun_direction_ecef));
+  bind_texture(kTerrainDistanceUnit, gbuffer.distance());
+  bind_colormap(settings.colormap, kColormapUnit);
+  glBindVertexArray(empty_.id());
+
+  // Curtains first, blended, so that a tube in front of a wall replaces it and one behind is
+  // hidden by its depth.
+  if (settings.curtain) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    curtain_.use();
+    curtain_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
+    curtain_.set_int("u_points", static_cast<int>(kPointsUnit));
+    curtain_.set_int("u_blocks", static_cast<int>(kBlocksUnit));
+    curtain_.set_int("u_drops", static_cast<int>(kDropsUnit));
+    curtain_.set_int("u_colormap", static_cast<int>(kColormapUnit));
+    curtain_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+    curtain_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+    curtain_.set_float("u_curtain_alpha", settings.curtain_alpha);
+    const glm::vec3 eye(to_dvec3(camera.position()));
+    set_vec3(curtain_, "u_eye_ecef", eye);
+    set_vec3(curtain_, "u_sun_radiance", lighting.sun_radiance);
+    set_vec3(curtain_, "u_sky_radiance", lighting.sky_radiance);
+    for (const TrackDraw& draw : tracks) {
+      if (!drawable(draw) || !draw.buffer->has_drops()) continue;
+      set_color_uniforms(curtain_, draw, settings);
+      bind_texture(kDropsUnit, draw.buffer->drops());
+      draw_segments(curtain_, *draw.buffer);
+    }
+    glDisable(GL_BLEND);
+  }
+
+  overlay_.use();
+  overlay_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
+  overlay_.set_int("u_orthographic", 0);
+  overlay_.set_float("u_margin_px", kFringeMarginPx);
+  overlay_.set_int("u_colormap", static_cast<int>(kColormapUnit));
+  overlay_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+  overlay_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  overlay_.set_int("u_show_occluded", settings.occlusion.enabled ? 1 : 0);
+  overlay_.set_float("u_occluded_alpha", settings.occlusion.alpha);
+  overlay_.set_vec2("u_fade", settings.occlusion.fade_near_m, settings.occlusion.fade_far_m);
+  // A 24-bit depth buffer resolves about d^2 / (near * 2^24) metres at distance d (camera.hpp).
+  overlay_.set_float("u_depth_step_k",
+                     static_cast<float>(2.0 / (camera.depth_range().near_m * 16777216.0)));
+  set_vec3(overlay_, "u_sun", sun);
+  set_vec3(overlay_, "u_up", up);
+  set_vec3(overlay_, "u_sun_radiance", lighting.sun_radiance);
+  set_vec3(overlay_, "u_sky_radiance", lighting.sky_radiance);
+  set_width_uniforms(overlay_, camera, settings);
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw)) continue;
+    set_color_uniforms(overlay_, draw, settings);
+    draw_segments(overlay_, *draw.buffer);
+  }
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glActiveTexture(GL_TEXTURE0);
+  check_gl("drawing the track overlay");
+}
+
+void TrackPass::blend_overlay(const TrackOverlayTarget& target) const {
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  blend_.use();
+  blend_.set_int("u_overlay", 0);
+  bind_texture(0, target.color());
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  check_gl("blending the track overlay");
+}
+
+void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_projection,
+                                    const glm::dvec3& towards_sun_ecef, double texel_m, const Camera& camera,
+                                    std::span<const TrackDraw> tracks, const TrackSceneSettings& settings) const {
+  shadow_.use();
+  shadow_.set_mat4("u_view_projection", std::span<const float, 16>(light_view_projection));
+  shadow_.set_int("u_orthographic", 1);
+  const glm::vec3 towards(glm::normalize(towards_sun_ecef));
+  set_vec3(shadow_, "u_towards_light", towards);
+  shadow_.set_float("u_margin_px", kShadowMarginTexels);
+  shadow_.set_float("u_texel_m", static_cast<float>(texel_m));
+  set_width_uniforms(shadow_, camera, settings);
+  glBindVertexArray(empty_.id());
+  for (const TrackDraw& draw : tracks)
+    if (drawable(draw)) draw_segments(shadow_, *draw.buffer);
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
+  check_gl("drawing the tracks into the shadow maps");
+}
+
+}  // namespace trailray::render
