@@ -145,6 +145,9 @@ TrackPass::TrackPass()
       empty_(VertexArray::create()) {}
 
 void TrackPass::bind_colormap(Colormap map, GLuint unit) const {
+  // Making the texture binds it to the active unit: make that unit the colormap's own, so the
+  // textures already bound to other units stay.
+  glActiveTexture(GL_TEXTURE0 + unit);
   if (!colormap_ || colormap_loaded_ != map) {
     const ColormapTable& table = colormap_table(map);
     std::vector<std::uint8_t> rgba;
