@@ -13,6 +13,7 @@
 
 #include "app/terrain_options.hpp"
 #include "app/track_options.hpp"
+#include "app/track_legend.hpp"
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
 #include "render/camera.hpp"
@@ -252,6 +253,7 @@ int run_render(const RenderArgs& a) {
     fmt::print(stderr, "trailray: {} tiles drawn ({} with terrain, {} with imagery), {} selection rounds\n",
                r.tiles_drawn, r.tiles_with_data, r.imagery_tiles_used, r.selection_rounds);
   }
+  draw_scene_legend(scene.image, style, track_scene);
   render::write_srgb_png(a.output, scene.image);
   if (a.verbose) fmt::print(stderr, "trailray: wrote {} ({}x{})\n", a.output, scene.image.width, scene.image.height);
   return 0;

@@ -1,0 +1,42 @@
+#include "app/track_legend.hpp"
+
+#include <fmt/format.h>
+
+#include "render/text_raster.hpp"
+
+namespace trailray::app {
+
+std::optional<render::ColorLegend> color_legend_for(const TrackStyle& style, const TrackScene& scene) {
+  if (style.metric == track::ColorMetric::solid || !scene.range) return std::nullopt;
+  render::ColorLegend legend;
+  const std::string_view unit =
+      style.metric == track::ColorMetric::time ? std::string_view("h:mm") : track::color_metric_unit(style.metric);
+  legend.title = unit.empty() ? std::string(track::color_metric_label(style.metric))
+                              : fmt::format("{} ({})", track::color_metric_label(style.metric), unit);
+  legend.map = style.settings.colormap;
+  legend.min_label = track::format_color_value(style.metric, scene.range->min);
+  legend.max_label = track::format_color_value(style.metric, scene.range->max);
+  // A signed metric's zero (the diverging map's white) is worth a label of its own.
+  if (scene.range->min < 0.0 && scene.range->max > 0.0 && track::color_metric_is_signed(style.metric))
+    legend.ticks.push_back({-scene.range->min / (scene.range->max - scene.range->min), "0"});
+  return legend;
+}
+
+std::vector<render::TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackScene& scene) {
+  std::vector<render::TrackKeyEntry> key;
+  if (style.metric != track::ColorMetric::solid || scene.tracks.size() < 2) return key;
+  for (const SceneTrack& t : scene.tracks) key.push_back({t.name, t.color_srgb});
+  return key;
+}
+
+void draw_scene_legend(render::RgbaImage& image, const TrackStyle& style, const TrackScene& scene) {
+  if (!style.legend) return;
+  const auto legend = color_legend_for(style, scene);
+  const auto key = track_key_for(style, scene);
+  if (!legend && key.empty()) return;
+  render::TextRasterizer text;
+  if (legend) render::draw_color_legend(image, text, *legend);
+  if (!key.empty()) render::draw_track_key(image, text, key);
+}
+
+}  // namespace trailray::app

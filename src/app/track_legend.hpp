@@ -1,0 +1,26 @@
+#pragma once
+// What the legend says about a rendered track scene (issue 5): for a metric, a colour bar titled
+// with the metric's name and unit ("Speed (km/h)", "Elapsed time (h:mm)"), its range's ends as
+// the metric prints them, and a "0" tick for signed metrics; for several solid tracks, a key of
+// their names and colours. Drawing is render/legend.hpp's; this file only decides the content.
+
+#include <optional>
+#include <vector>
+
+#include "app/track_scene.hpp"
+#include "app/track_style_options.hpp"
+#include "render/framebuffer_readback.hpp"
+#include "render/legend.hpp"
+
+namespace trailray::app {
+
+// nullopt for solid colours or when no point had a value.
+std::optional<render::ColorLegend> color_legend_for(const TrackStyle& style, const TrackScene& scene);
+
+// The key of track names: only for several solid tracks (one track needs no key).
+std::vector<render::TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackScene& scene);
+
+// Draws the legend the scene calls for into `image` (nothing with --legend off).
+void draw_scene_legend(render::RgbaImage& image, const TrackStyle& style, const TrackScene& scene);
+
+}  // namespace trailray::app
