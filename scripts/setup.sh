@@ -30,6 +30,8 @@ packages=(
   libgl1-mesa-dri        # Mesa's drivers, llvmpipe among them: render tests and CI on the CPU
   glslang-tools          # glslangValidator: every shader is checked at build time, so an error fails the build
   libglm-dev             # GLSL-like vectors and matrices on the CPU (render/): camera, projections, sun direction
+  libfreetype-dev        # the legend's text, rasterized on the CPU into the picture (render/legend)
+  fonts-dejavu-core      # DejaVu Sans, embedded into the binary at build time for the legend
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
