@@ -19,9 +19,10 @@ if [ -f "$dem" ]; then
   echo
   build/src/app/trailray elevation --terrain "$dem" examples/paraglider_flight.igc | tee out/example-elevation.txt
   build/src/app/trailray elevation --terrain "$dem" --csv examples/paraglider_flight.igc > out/example-elevation.csv
-  # The terrain around the flight, framed automatically, lit by the sun of its day at noon.
-  build/src/app/trailray render --terrain "$dem" --imagery none --size 1280x720 -o out/example-render.png \
-    examples/paraglider_flight.igc
+  # The flight on the terrain, framed automatically, lit by the sun of its day at noon, coloured
+  # by vertical speed (sink blue, climb red) with a curtain down to the ground.
+  build/src/app/trailray render --terrain "$dem" --imagery none --size 1280x720 --color-by vspeed --curtain \
+    -o out/example-render.png examples/paraglider_flight.igc
 else
   echo "($dem absent: skipping the elevation example)"
 fi
