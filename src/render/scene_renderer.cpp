@@ -276,11 +276,20 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
           glDrawElements(GL_TRIANGLES, item.mesh->index_count, GL_UNSIGNED_INT, nullptr);
         }
         glBindVertexArray(0);
-        if (options.track_settings.cast_shadows && !options.tracks.empty()) {
-          const std::array<float, 16> relative = light.view_projection_relative_to(camera.position());
-          track_pass_.draw_shadow_casters(relative, options.sun_direction_ecef,
-                                          2.0 * light.radius_m / options.shadow_map_size_px, camera, options.tracks,
-                                          options.track_settings);
+        if (options.track_settings.cast_shadows) {
+          // Only the tracks that reach into this cascade (a flight far from the camera casts
+          // into the far cascades only).
+          std::vector<TrackDraw> casting;
+          for (const TrackDraw& draw : options.tracks)
+            if (draw.buffer != nullptr &&
+                light.may_hold(draw.buffer->bounding_centre_ecef(), draw.buffer->bounding_radius_m()))
+              casting.push_back(draw);
+          if (!casting.empty()) {
+            const std::array<float, 16> relative = light.view_projection_relative_to(camera.position());
+            track_pass_.draw_shadow_casters(relative, options.sun_direction_ecef,
+                                            2.0 * light.radius_m / options.shadow_map_size_px, camera, casting,
+                                            options.track_settings);
+          }
         }
         ++cascade;
       });
