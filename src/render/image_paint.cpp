@@ -7,7 +7,8 @@ namespace trailray::render {
 namespace {
 
 std::uint8_t mix(std::uint8_t over, std::uint8_t under, float alpha) {
-  return static_cast<std::uint8_t>(std::lround(static_cast<float>(over) * alpha + static_cast<float>(under) * (1.0f - alpha)));
+  return static_cast<std::uint8_t>(
+      std::lround(static_cast<float>(over) * alpha + static_cast<float>(under) * (1.0f - alpha)));
 }
 
 // The part of `rect` inside the image.

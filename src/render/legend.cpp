@@ -39,8 +39,8 @@ PanelMetrics panel_metrics(const RgbaImage& image, const LegendOptions& options)
 }
 
 // The panel's rectangle: content of the given size plus padding, in the bottom-left corner.
-PixelRect place_panel(const RgbaImage& image, const PanelMetrics& m, const LegendOptions& options,
-                      int content_width, int content_height) {
+PixelRect place_panel(const RgbaImage& image, const PanelMetrics& m, const LegendOptions& options, int content_width,
+                      int content_height) {
   const int width = content_width + 2 * m.padding, height = content_height + 2 * m.padding;
   return {m.margin, static_cast<int>(image.height) - m.margin - std::max(options.reserved_bottom, 0) - height, width,
           height};
@@ -103,8 +103,8 @@ LegendLayout draw_color_legend(RgbaImage& image, TextRasterizer& text, const Col
   const int content_height = (has_title ? title_extent.height() + title_gap : 0) + bar_height + 2 * frame +
                              tick_length + label_gap + min_extent.height();
   if (bar_width < labels_width || content_height + 2 * m.padding > m.usable_height) return {};
-  const std::string title = text.ellipsize(legend.title, std::numeric_limits<std::size_t>::max(), content_width, f,
-                                           FontWeight::bold);
+  const std::string title =
+      text.ellipsize(legend.title, std::numeric_limits<std::size_t>::max(), content_width, f, FontWeight::bold);
 
   LegendLayout layout;
   layout.drawn = true;
@@ -181,7 +181,8 @@ LegendLayout draw_track_key(RgbaImage& image, TextRasterizer& text, const std::v
   if (max_name_width < 2 * f || rows < 1) return {};
 
   LegendLayout layout;
-  const auto listed = entries.size() <= static_cast<std::size_t>(rows) ? entries.size() : static_cast<std::size_t>(rows - 1);
+  const auto listed =
+      entries.size() <= static_cast<std::size_t>(rows) ? entries.size() : static_cast<std::size_t>(rows - 1);
   layout.hidden_entries = entries.size() - listed;
   std::vector<std::string> names;
   int names_width = 0;
@@ -189,11 +190,10 @@ LegendLayout draw_track_key(RgbaImage& image, TextRasterizer& text, const std::v
     names.push_back(text.ellipsize(entries[i].name, kMaxTrackNameCodePoints, max_name_width, f));
     names_width = std::max(names_width, text.measure(names.back(), f).width);
   }
-  const std::string more =
-      layout.hidden_entries > 0
-          ? text.ellipsize("+" + std::to_string(layout.hidden_entries) + " more", kMaxTrackNameCodePoints,
-                           max_name_width + swatch_width + swatch_gap, f)
-          : std::string();
+  const std::string more = layout.hidden_entries > 0
+                               ? text.ellipsize("+" + std::to_string(layout.hidden_entries) + " more",
+                                                kMaxTrackNameCodePoints, max_name_width + swatch_width + swatch_gap, f)
+                               : std::string();
   const int more_width = text.measure(more, f).width;
   const int content_width = std::max(swatch_width + swatch_gap + names_width, more_width);
   const int row_count = static_cast<int>(listed) + (layout.hidden_entries > 0 ? 1 : 0);
@@ -214,12 +214,10 @@ LegendLayout draw_track_key(RgbaImage& image, TextRasterizer& text, const std::v
     const glm::vec3 requested = entries[row].color_srgb;
     const glm::vec3 safe = glm::any(glm::isnan(requested)) ? kMissingValueColorSrgb : requested;
     const glm::vec3 color = glm::round(glm::clamp(safe, 0.0f, 1.0f) * 255.0f);
-    const PixelRect swatch{left, baseline - scaled(f, 0.32f, 1) - swatch_thickness / 2, swatch_width,
-                           swatch_thickness};
+    const PixelRect swatch{left, baseline - scaled(f, 0.32f, 1) - swatch_thickness / 2, swatch_width, swatch_thickness};
     fill_rounded_rect(image, swatch, swatch_thickness / 2, glm::u8vec4(glm::u8vec3(color), 255));
     layout.swatches.push_back(swatch);
-    layout.text_boxes.push_back(
-        text.draw(image, names[row], left + swatch_width + swatch_gap, baseline, name_style));
+    layout.text_boxes.push_back(text.draw(image, names[row], left + swatch_width + swatch_gap, baseline, name_style));
   }
   return layout;
 }

@@ -31,8 +31,7 @@ using FaceHandle = std::unique_ptr<std::remove_pointer_t<FT_Face>, FaceDeleter>;
 FaceHandle load_face(FT_Library library, std::span<const unsigned char> bytes, const char* name) {
   FT_Face face = nullptr;
   // FreeType reads the embedded bytes in place: they live as long as the program.
-  const FT_Error error =
-      FT_New_Memory_Face(library, bytes.data(), static_cast<FT_Long>(bytes.size()), 0, &face);
+  const FT_Error error = FT_New_Memory_Face(library, bytes.data(), static_cast<FT_Long>(bytes.size()), 0, &face);
   if (error != 0)
     throw RenderError(std::string("FreeType cannot read the embedded font ") + name + " (error " +
                       std::to_string(error) + ")");
@@ -148,11 +147,10 @@ bool TextRasterizer::has_glyph(char32_t code_point, FontWeight weight) const {
   return FT_Get_Char_Index(fonts_->face(weight), code_point) != 0;
 }
 
-std::string TextRasterizer::ellipsize(std::string_view text, std::size_t max_code_points, int max_width,
-                                      int pixel_size, FontWeight weight) {
+std::string TextRasterizer::ellipsize(std::string_view text, std::size_t max_code_points, int max_width, int pixel_size,
+                                      FontWeight weight) {
   std::u32string kept = decode_utf8(text);
-  if (kept.size() <= max_code_points && measure(text, pixel_size, weight).width <= max_width)
-    return encode_utf8(kept);
+  if (kept.size() <= max_code_points && measure(text, pixel_size, weight).width <= max_width) return encode_utf8(kept);
   const std::u32string ellipsis = U"\u2026";
   kept.resize(max_code_points > 0 ? std::min(kept.size(), max_code_points - 1) : 0);
   for (;;) {

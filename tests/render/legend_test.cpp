@@ -68,7 +68,8 @@ std::vector<TrackKeyEntry> tracks(std::size_t count) {
 
 // Writes the picture to $TRAILRAY_TEST_IMAGE_DIR/name when that is set, to look at.
 void keep_image(const RgbaImage& image, const std::string& name) {
-  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR")) write_srgb_png(std::filesystem::path(dir) / name, image);
+  if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
+    write_srgb_png(std::filesystem::path(dir) / name, image);
 }
 
 TEST(LegendFontPx, ScalesWithTheImageHeightWithinLimits) {
@@ -84,7 +85,7 @@ TEST(FormatLegendValue, DecimalsFollowTheRangeAndMinusIsTypographic) {
   EXPECT_EQ(format_legend_value(1234.4, 800.0), "1234");
   EXPECT_EQ(format_legend_value(2.84, 6.0), "2.8");
   EXPECT_EQ(format_legend_value(-3.25, 6.0), "\u22123.2");  // printf rounds half to even here
-  EXPECT_EQ(format_legend_value(-0.04, 6.0), "0.0");         // no "-0.0"
+  EXPECT_EQ(format_legend_value(-0.04, 6.0), "0.0");        // no "-0.0"
   EXPECT_EQ(format_legend_value(0.123, 0.5), "0.12");
   EXPECT_EQ(format_legend_value(12.0, 0.0), "12");  // an empty range: decimals from the value
   EXPECT_EQ(format_legend_value(std::nan(""), 1.0), "n/a");
@@ -182,8 +183,11 @@ TEST(ColorLegend, DifferentLabelsDrawDifferentPixels) {
 TEST(ColorLegend, InnerTicksAreLabelledWhereTheyFit) {
   TextRasterizer text;
   RgbaImage image = filled(1280, 720, kMidGrey);
-  const ColorLegend legend{"Vertical speed (m/s)", Colormap::diverging, format_legend_value(-3.0, 6.0),
-                           format_legend_value(3.0, 6.0), {{0.5, "0"}, {0.02, "crowded"}, {1.5, "outside"}}};
+  const ColorLegend legend{"Vertical speed (m/s)",
+                           Colormap::diverging,
+                           format_legend_value(-3.0, 6.0),
+                           format_legend_value(3.0, 6.0),
+                           {{0.5, "0"}, {0.02, "crowded"}, {1.5, "outside"}}};
   const LegendLayout layout = draw_color_legend(image, text, legend);
   ASSERT_TRUE(layout.drawn);
   ASSERT_EQ(layout.text_boxes.size(), 4u);  // title, ends, and only the tick at 0.5
@@ -298,8 +302,8 @@ TEST(Legends, StackWhenOneReservesTheBottom) {
 
 TEST(Legends, StayInsideTheImageForManySizesAndVanishWhenTheyCannotFit) {
   TextRasterizer text;
-  const std::vector<glm::uvec2> sizes{{0, 0},     {1, 1},      {32, 32},    {64, 48},    {100, 100},
-                                      {160, 90},  {200, 40},   {320, 180},  {640, 360},  {1280, 720},
+  const std::vector<glm::uvec2> sizes{{0, 0},       {1, 1},       {32, 32},    {64, 48},    {100, 100},
+                                      {160, 90},    {200, 40},    {320, 180},  {640, 360},  {1280, 720},
                                       {1920, 1080}, {3840, 2160}, {2000, 100}, {100, 2000}, {4000, 30}};
   for (const glm::uvec2 size : sizes) {
     SCOPED_TRACE(std::to_string(size.x) + "x" + std::to_string(size.y));
@@ -340,10 +344,12 @@ TEST(Legends, ExamplePictures) {
     for (std::uint32_t y = 0; y < size.y; ++y)
       for (std::uint32_t x = 0; x < size.x / 8; ++x)
         std::copy_n(&kSnow.r, 4, &image.rgba[(std::size_t{y} * size.x + x) * 4]);
-    const LegendLayout bar = draw_color_legend(
-        image, text,
-        {"Vertical speed (m/s)", Colormap::diverging, format_legend_value(-3.2, 6.0), format_legend_value(2.8, 6.0),
-         {{3.2 / 6.0, "0"}}});
+    const LegendLayout bar = draw_color_legend(image, text,
+                                               {"Vertical speed (m/s)",
+                                                Colormap::diverging,
+                                                format_legend_value(-3.2, 6.0),
+                                                format_legend_value(2.8, 6.0),
+                                                {{3.2 / 6.0, "0"}}});
     ASSERT_TRUE(bar.drawn);
     std::vector<TrackKeyEntry> entries{{"Zürich – Uetliberg", palette_color(0)},
                                        {"Škofja Loka loop", palette_color(1)},

@@ -42,12 +42,12 @@ TEST(DecodeUtf8, DecodesAsciiAndMultiByteSequences) {
 }
 
 TEST(DecodeUtf8, MalformedSequencesBecomeReplacementCharacters) {
-  EXPECT_EQ(decode_utf8("a\x80z"), U"a\uFFFDz");           // stray continuation byte
-  EXPECT_EQ(decode_utf8("a\xE2\x82z"), U"a\uFFFDz");       // truncated, resumes at 'z'
-  EXPECT_EQ(decode_utf8("\xC0\xAF"), U"\uFFFD\uFFFD");     // overlong lead, then a stray byte
-  EXPECT_EQ(decode_utf8("\xE0\x80\xAF"), U"\uFFFD");       // overlong 3-byte '/'
-  EXPECT_EQ(decode_utf8("\xED\xA0\x80"), U"\uFFFD");       // a UTF-16 surrogate
-  EXPECT_EQ(decode_utf8("\xF4\x90\x80\x80"), U"\uFFFD");   // above U+10FFFF
+  EXPECT_EQ(decode_utf8("a\x80z"), U"a\uFFFDz");          // stray continuation byte
+  EXPECT_EQ(decode_utf8("a\xE2\x82z"), U"a\uFFFDz");      // truncated, resumes at 'z'
+  EXPECT_EQ(decode_utf8("\xC0\xAF"), U"\uFFFD\uFFFD");    // overlong lead, then a stray byte
+  EXPECT_EQ(decode_utf8("\xE0\x80\xAF"), U"\uFFFD");      // overlong 3-byte '/'
+  EXPECT_EQ(decode_utf8("\xED\xA0\x80"), U"\uFFFD");      // a UTF-16 surrogate
+  EXPECT_EQ(decode_utf8("\xF4\x90\x80\x80"), U"\uFFFD");  // above U+10FFFF
   EXPECT_EQ(decode_utf8("\xFF"), U"\uFFFD");
 }
 
@@ -83,7 +83,8 @@ TEST(TextRasterizer, MeasureGrowsWithTextAndSize) {
 TEST(TextRasterizer, DrawsInkInsideTheReturnedBox) {
   TextRasterizer text;
   RgbaImage image = black(300, 80);
-  const PixelRect box = text.draw(image, "Hello, Zürich (gjy)", 10, 50, {24, FontWeight::regular, {255, 255, 255, 255}});
+  const PixelRect box =
+      text.draw(image, "Hello, Zürich (gjy)", 10, 50, {24, FontWeight::regular, {255, 255, 255, 255}});
   EXPECT_EQ(box.x, 10);
   EXPECT_EQ(box.width, text.measure("Hello, Zürich (gjy)", 24).width);
   EXPECT_LT(box.y, 50);
@@ -147,7 +148,8 @@ TEST(TextRasterizer, ClipsToTheImageExactly) {
     text.draw(large, "Škofja Loka", at.x + pad, at.y + pad, style);
     for (std::uint32_t y = 0; y < small.height; ++y)
       for (std::uint32_t x = 0; x < small.width; ++x)
-        ASSERT_EQ(small.pixel(x, y), large.pixel(x + pad, y + pad)) << at.x << "," << at.y << " pixel " << x << "," << y;
+        ASSERT_EQ(small.pixel(x, y), large.pixel(x + pad, y + pad))
+            << at.x << "," << at.y << " pixel " << x << "," << y;
   }
   RgbaImage tiny = black(1, 1), empty = black(0, 0);
   text.draw(tiny, "Wide text", -3, 10, style);
@@ -211,7 +213,7 @@ TEST(ImagePaint, BlendsOverAndClips) {
 TEST(ImagePaint, RoundedRectangleLeavesCornersOpen) {
   RgbaImage image = black(40, 30);
   fill_rounded_rect(image, {5, 5, 30, 20}, 8, {255, 255, 255, 255});
-  EXPECT_EQ(image.pixel(5, 5)[0], 0);     // the corner itself stays outside the arc
+  EXPECT_EQ(image.pixel(5, 5)[0], 0);  // the corner itself stays outside the arc
   EXPECT_EQ(image.pixel(34, 24)[0], 0);
   EXPECT_EQ(image.pixel(20, 15)[0], 255);  // the middle is filled
   EXPECT_EQ(image.pixel(5, 15)[0], 255);   // so is the middle of an edge
