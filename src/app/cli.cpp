@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "app/bench_command.hpp"
 #include "app/elevation_command.hpp"
 #include "app/render_command.hpp"
 #include "app/stats_command.hpp"
@@ -19,6 +20,7 @@ int run_cli(int argc, char** argv) {
   add_stats_command(app, exit_code);
   add_elevation_command(app, exit_code);
   add_render_command(app, exit_code);
+  add_bench_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,43 @@
+#pragma once
+// What `trailray bench tracks` draws: seeded random walks of a requested size (reproducible run
+// to run, so figures from two machines compare), and the real tracks of a data folder (the .gpx
+// and .igc files of ../shared/data), read and cleaned as `trailray render` would.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "render/track_buffer.hpp"
+
+namespace trailray::app {
+
+struct BenchDataset {
+  std::string name;  // "walk-100000", or the file's name
+  std::string kind;  // "random_walk" or "track"
+  render::TrackGeometry geometry;
+  std::vector<render::GeoPosition> positions;  // the same points, for framing
+  double ground_height_m = 0.0;                // the flat ground: the lowest point's height
+
+  std::size_t point_count() const { return positions.size(); }
+};
+
+// A walk of `points` points (at least 2) in one segment: steps of 2-6 m in a heading that
+// drifts, kept within about 2 km of a place in the Tyrol (so it folds over itself like a long
+// hike or a thermal flight), climbing and sinking by up to a metre a step within 0..1500 m above
+// the ground. The same `points` always gives the same walk.
+BenchDataset make_random_walk(std::size_t points);
+
+struct RealTracks {
+  std::vector<BenchDataset> datasets;
+  std::vector<std::string> skipped;  // "<file>: why" for files left out
+};
+
+// Every gpx/*.gpx and igc/*.igc under `data_dir` (sorted by name), tracks and routes, cleaned
+// with the default options (track/clean.hpp); points without an elevation are placed at the
+// track's lowest one (0 m without any). A file that does not read, or keeps fewer than two
+// points, is skipped with the reason. A missing folder gives no datasets and one note.
+RealTracks load_real_tracks(const std::filesystem::path& data_dir);
+
+}  // namespace trailray::app
