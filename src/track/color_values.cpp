@@ -151,7 +151,8 @@ std::string hours_minutes(double seconds) {
   if (!std::isfinite(seconds)) return "n/a";
   const double minutes = std::floor(std::abs(seconds) / 60.0);
   const double hours = std::floor(minutes / 60.0);
-  const auto mm = static_cast<int>(minutes - hours * 60.0);
+  // fmod is exact: minutes - hours * 60 loses the minutes (and leaves int's range) for huge values.
+  const auto mm = static_cast<int>(std::clamp(std::fmod(minutes, 60.0), 0.0, 59.0));
   std::string text = (seconds < 0.0 && minutes > 0.0) ? "-" : "";
   text += fixed(hours, 0);
   text += ':';
