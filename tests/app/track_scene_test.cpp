@@ -1,0 +1,289 @@
+// build_track_scene on track files held in memory: segments and points kept (empty segments
+// dropped, gaps not joined), routes drawn as tracks, names, colour values per point (NaN where a
+// point has none, never Inf), the colour scale's range (--range over automatic), --color once
+// or per track, points without elevation on the ground, curtain heights.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/track_scene.hpp"
+#include "app/track_style_options.hpp"
+#include "render/camera.hpp"
+#include "render/colormap.hpp"
+#include "track/clean.hpp"
+#include "track/color_values.hpp"
+#include "track/metrics.hpp"
+#include "track_cli_support.hpp"
+
+namespace trailray::app {
+namespace {
+
+constexpr double kLat = 46.70, kLon = 7.85;
+constexpr double kT0 = 1718704800.0;  // 2024-06-18T10:00:00Z
+
+// `count` points heading east, `spacing_m` apart, `interval_s` apart in time (NaN: no times).
+track::Segment line(int count, double spacing_m, double interval_s, double ele, double start_east_m = 0.0,
+                    double t0 = kT0) {
+  track::Segment s;
+  for (const auto& g : test::east_line(kLat, kLon, start_east_m, count, spacing_m, t0, interval_s, ele)) {
+    track::TrackPoint p;
+    p.lat = g.lat;
+    p.lon = g.lon;
+    p.ele = g.ele;
+    p.time = std::isnan(interval_s) ? track::kMissing : g.time;
+    s.points.push_back(p);
+  }
+  return s;
+}
+
+track::Track track_of(std::string name, std::vector<track::Segment> segments) {
+  track::Track t;
+  t.name = std::move(name);
+  t.segments = std::move(segments);
+  return t;
+}
+
+LoadedTrackFile file_of(std::string path, std::vector<track::Track> tracks) {
+  LoadedTrackFile f;
+  f.path = std::move(path);
+  f.file.tracks = std::move(tracks);
+  return f;
+}
+
+TrackStyle style_of(TrackStyleArgs args = {}) { return parse_track_style(args); }
+
+TrackStyle style_by(const std::string& metric, const std::string& range = {}) {
+  TrackStyleArgs args;
+  args.color_by = metric;
+  args.range = range;
+  return parse_track_style(args);
+}
+
+struct Warnings {
+  std::vector<std::string> seen;
+  std::function<void(const std::string&)> sink() {
+    return [this](const std::string& w) { seen.push_back(w); };
+  }
+};
+
+TrackScene build(const std::vector<LoadedTrackFile>& files, const TrackStyle& style, Warnings* warnings = nullptr,
+                 bool smooth = true) {
+  TrackSceneInputs inputs;
+  inputs.neutral_ground_m = 900.0;
+  inputs.analysis.clean.smooth = smooth;
+  Warnings ignored;
+  return build_track_scene(files, style, inputs, (warnings != nullptr ? warnings : &ignored)->sink());
+}
+
+TEST(TrackScene, KeepsSegmentsAndPointsAndDropsEmptySegments) {
+  const auto files = std::vector{
+      file_of("walk.gpx", {track_of("Walk", {line(20, 25.0, 10.0, 1000.0), track::Segment{},
+                                              line(15, 25.0, 10.0, 1000.0, 2000.0, kT0 + 1000.0)})})};
+  const TrackScene scene = build(files, style_of());
+  ASSERT_EQ(scene.tracks.size(), 1u);
+  const auto& segments = scene.tracks[0].geometry.segments;
+  ASSERT_EQ(segments.size(), 2u) << "the empty segment is dropped, the two others stay apart";
+  EXPECT_EQ(segments[0].points_ecef.size(), 20u);
+  EXPECT_EQ(segments[1].points_ecef.size(), 15u);
+  EXPECT_EQ(scene.points, 35u);
+  // Solid: no values, no range, no curtain heights.
+  EXPECT_TRUE(segments[0].values.empty());
+  EXPECT_TRUE(segments[0].heights_above_ground_m.empty());
+  EXPECT_FALSE(scene.range.has_value());
+  // The gap is not bridged: the second segment starts 2 km east, where its first point is.
+  const double gap = glm::length(segments[1].points_ecef.front() - segments[0].points_ecef.back());
+  EXPECT_NEAR(gap, 2000.0 - 19 * 25.0, 5.0);
+}
+
+TEST(TrackScene, PointsWithoutSmoothingAreTheRecordedOnesInEcef) {
+  const track::Segment recorded = line(10, 30.0, 10.0, 1234.0);
+  const TrackScene scene = build({file_of("a.gpx", {track_of("A", {recorded})})}, style_of(), nullptr, false);
+  ASSERT_EQ(scene.tracks.size(), 1u);
+  const auto& points = scene.tracks[0].geometry.segments.at(0).points_ecef;
+  ASSERT_EQ(points.size(), recorded.points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& p = recorded.points[i];
+    const glm::dvec3 expected = render::to_dvec3(render::ecef_from({p.lat, p.lon, p.ele}));
+    EXPECT_LT(glm::length(points[i] - expected), 1e-6) << "point " << i;
+  }
+}
+
+TEST(TrackScene, PointsWithoutElevationLieOnTheNeutralGroundAndCurtainsReachIt) {
+  TrackStyleArgs args;
+  args.curtain = true;
+  track::Segment flat = line(8, 30.0, 10.0, track::kMissing);
+  track::Segment high = line(8, 30.0, 10.0, 1150.0, 0.0, kT0 + 500.0);
+  const TrackScene scene = build({file_of("a.gpx", {track_of("A", {flat, high})})}, style_of(args), nullptr, false);
+  const auto& segments = scene.tracks.at(0).geometry.segments;
+  ASSERT_EQ(segments.size(), 2u);
+  for (std::size_t i = 0; i < flat.points.size(); ++i) {
+    const glm::dvec3 ground =
+        render::to_dvec3(render::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0}));
+    EXPECT_LT(glm::length(segments[0].points_ecef[i] - ground), 1e-6) << "point " << i << " is on the ground";
+  }
+  ASSERT_EQ(segments[0].heights_above_ground_m.size(), flat.points.size());
+  ASSERT_EQ(segments[1].heights_above_ground_m.size(), high.points.size());
+  for (float h : segments[0].heights_above_ground_m) EXPECT_FLOAT_EQ(h, 0.0f);
+  // Without a terrain source the ground is the neutral ground: 1150 - 900 m.
+  for (float h : segments[1].heights_above_ground_m) EXPECT_FLOAT_EQ(h, 250.0f);
+}
+
+TEST(TrackScene, SpeedValuesOnePerPointAndFinite) {
+  // 25 m every 10 s: 9 km/h everywhere.
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(30, 25.0, 10.0, 1000.0)})})};
+  const TrackScene scene = build(files, style_by("speed"));
+  const auto& segment = scene.tracks.at(0).geometry.segments.at(0);
+  ASSERT_EQ(segment.values.size(), segment.points_ecef.size());
+  for (float v : segment.values) {
+    ASSERT_TRUE(std::isfinite(v));
+    EXPECT_NEAR(v, 9.0, 0.3);
+  }
+  EXPECT_EQ(scene.tracks[0].points_with_value, segment.points_ecef.size());
+  ASSERT_TRUE(scene.range.has_value());
+  // Every value the same: the range is widened around it, not empty.
+  EXPECT_LT(scene.range->min, 9.0);
+  EXPECT_GT(scene.range->max, 9.0);
+}
+
+TEST(TrackScene, MissingValuesStayNaNAndARangeComesFromTheOthers) {
+  // Track B has no times: no speed anywhere on it, NaN (the renderer's neutral colour).
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(30, 25.0, 10.0, 1000.0)}),
+                                                   track_of("B", {line(30, 25.0, track::kMissing, 1000.0, 0.0)})})};
+  Warnings warnings;
+  const TrackScene scene = build(files, style_by("speed"), &warnings);
+  ASSERT_EQ(scene.tracks.size(), 2u);
+  const auto& b = scene.tracks[1].geometry.segments.at(0);
+  ASSERT_EQ(b.values.size(), b.points_ecef.size());
+  for (float v : b.values) EXPECT_TRUE(std::isnan(v));
+  EXPECT_EQ(scene.tracks[1].points_with_value, 0u);
+  EXPECT_EQ(scene.tracks[0].points_with_value, scene.tracks[0].geometry.segments[0].points_ecef.size());
+  ASSERT_TRUE(scene.range.has_value());
+  EXPECT_TRUE(std::isfinite(scene.range->min) && std::isfinite(scene.range->max));
+  EXPECT_TRUE(warnings.seen.empty());
+}
+
+TEST(TrackScene, NoValueAnywhereWarnsAndHasNoRange) {
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(30, 25.0, track::kMissing, 1000.0)})})};
+  Warnings warnings;
+  const TrackScene scene = build(files, style_by("speed"), &warnings);
+  EXPECT_FALSE(scene.range.has_value());
+  ASSERT_EQ(warnings.seen.size(), 1u);
+  EXPECT_NE(warnings.seen[0].find("speed"), std::string::npos) << warnings.seen[0];
+  const auto& values = scene.tracks.at(0).geometry.segments.at(0).values;
+  ASSERT_FALSE(values.empty());
+  for (float v : values) EXPECT_TRUE(std::isnan(v));
+}
+
+TEST(TrackScene, AutomaticRangeIsTheRobustRangeOfAllValues) {
+  // Speed doubles halfway: 28 m then 56 m every 10 s.
+  track::Segment s = line(40, 28.0, 10.0, 1000.0);
+  const track::Segment fast = line(40, 56.0, 10.0, 1000.0, 40 * 28.0, kT0 + 400.0);
+  s.points.insert(s.points.end(), fast.points.begin(), fast.points.end());
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {s})})};
+  const TrackScene scene = build(files, style_by("speed"));
+  ASSERT_TRUE(scene.range.has_value());
+  std::vector<std::vector<float>> all;
+  for (const auto& t : scene.tracks)
+    for (const auto& seg : t.geometry.segments) all.push_back(seg.values);
+  const auto expected = track::robust_range(all, false);
+  ASSERT_TRUE(expected.has_value());
+  EXPECT_DOUBLE_EQ(scene.range->min, expected->min);
+  EXPECT_DOUBLE_EQ(scene.range->max, expected->max);
+  EXPECT_NEAR(scene.range->min, 28.0 * 0.36, 0.2);
+  EXPECT_NEAR(scene.range->max, 56.0 * 0.36, 0.3);
+
+  // --range wins over the automatic one.
+  const TrackScene given = build(files, style_by("speed", "0:50"));
+  ASSERT_TRUE(given.range.has_value());
+  EXPECT_EQ(given.range->min, 0.0);
+  EXPECT_EQ(given.range->max, 50.0);
+}
+
+TEST(TrackScene, VerticalSpeedRangeIsSymmetricAboutZero) {
+  track::Segment s = line(40, 20.0, 10.0, 1000.0);
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const double n = static_cast<double>(i);
+    s.points[i].ele = 1000.0 + (i < 20 ? 5.0 * n : 100.0 - 2.0 * (n - 20.0));
+  }
+  const TrackScene scene = build({file_of("a.gpx", {track_of("A", {s})})}, style_by("vspeed"));
+  ASSERT_TRUE(scene.range.has_value());
+  EXPECT_DOUBLE_EQ(scene.range->min, -scene.range->max);
+  EXPECT_NEAR(scene.range->max, 0.5, 0.1);  // 5 m per 10 s climbing
+}
+
+TEST(TrackScene, RoutesAreDrawnAsTracks) {
+  LoadedTrackFile f = file_of("plan.gpx", {});
+  track::Route route;
+  route.name = "Planned";
+  route.points = line(12, 40.0, track::kMissing, 1000.0).points;
+  f.file.routes.push_back(route);
+  const TrackScene scene = build({f}, style_of());
+  ASSERT_EQ(scene.tracks.size(), 1u);
+  EXPECT_EQ(scene.tracks[0].name, "Planned");
+  ASSERT_EQ(scene.tracks[0].geometry.segments.size(), 1u);
+  EXPECT_EQ(scene.tracks[0].geometry.segments[0].points_ecef.size(), 12u);
+}
+
+TEST(TrackScene, NamesAreTheTracksOwnElseTheFileNameAndNumber) {
+  LoadedTrackFile several = file_of("/some/folder/walk.gpx", {track_of("Morning", {line(5, 30.0, 10.0, 1000.0)}),
+                                                              track_of("", {line(5, 30.0, 10.0, 1000.0, 500.0)})});
+  track::Route route;
+  route.points = line(5, 30.0, track::kMissing, 1000.0, 1000.0).points;
+  several.file.routes.push_back(route);
+  const LoadedTrackFile single = file_of("other/ride.gpx", {track_of("", {line(5, 30.0, 10.0, 1000.0, 2000.0)})});
+  const TrackScene scene = build({several, single}, style_of());
+  ASSERT_EQ(scene.tracks.size(), 4u);
+  EXPECT_EQ(scene.tracks[0].name, "Morning");
+  EXPECT_EQ(scene.tracks[1].name, "walk.gpx #2");
+  EXPECT_EQ(scene.tracks[2].name, "walk.gpx #3");
+  EXPECT_EQ(scene.tracks[3].name, "ride.gpx");
+}
+
+TEST(TrackScene, ColoursFromThePaletteOnceOrPerTrack) {
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(5, 30.0, 10.0, 1000.0)}),
+                                                   track_of("B", {line(5, 30.0, 10.0, 1000.0, 500.0)}),
+                                                   track_of("C", {line(5, 30.0, 10.0, 1000.0, 1000.0)})})};
+  const TrackScene palette = build(files, style_of());
+  ASSERT_EQ(palette.tracks.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(palette.tracks[i].color_srgb, render::palette_color(i)) << i;
+  EXPECT_NE(palette.tracks[0].color_srgb, palette.tracks[1].color_srgb);
+
+  TrackStyleArgs once;
+  once.colors = {"#00ff00"};
+  for (const auto& t : build(files, style_of(once)).tracks) EXPECT_EQ(t.color_srgb, glm::vec3(0.0f, 1.0f, 0.0f));
+
+  TrackStyleArgs each;
+  each.colors = {"#ff0000", "#00ff00", "#0000ff"};
+  const TrackScene per_track = build(files, style_of(each));
+  EXPECT_EQ(per_track.tracks[0].color_srgb, glm::vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(per_track.tracks[1].color_srgb, glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_EQ(per_track.tracks[2].color_srgb, glm::vec3(0.0f, 0.0f, 1.0f));
+
+  TrackStyleArgs two;
+  two.colors = {"#ff0000", "#00ff00"};
+  try {
+    build(files, style_of(two));
+    FAIL() << "two colours for three tracks were accepted";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("--color"), std::string::npos) << message;
+    EXPECT_NE(message.find("once per track"), std::string::npos) << message;
+  }
+}
+
+TEST(TrackScene, HeightAboveGroundNeedsTerrain) {
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(5, 30.0, 10.0, 1000.0)})})};
+  try {
+    build(files, style_by("agl"));
+    FAIL() << "agl without terrain was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("--terrain"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace trailray::app
