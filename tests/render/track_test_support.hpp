@@ -1,0 +1,147 @@
+#pragma once
+// What the track render tests share: polylines built in a local east-north-up frame (straight,
+// turning), cameras looking straight down or along a direction, scene options that keep a
+// geometric check sharp (no SSAO, no haze, no shadows unless asked), and the pixel classifier.
+//
+// The classifier: the tests draw tracks in pure red (sRGB 1,0,0) over the grey neutral ground.
+// Lit red has no green or blue, and the overlay (ghosts, anti-aliased fringe) is blended in the
+// frame's sRGB values, so a pixel's green relative to the same pixel of the picture without
+// tracks is 1 - alpha: the track's coverage times its opacity, whatever the lighting of the
+// tube. An opaque tube pixel reads 1, a ghost the occluded alpha, a ghost blended twice
+// 1 - (1 - a)^2 > a.
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "render/framebuffer_readback.hpp"
+#include "render/scene_renderer.hpp"
+#include "render/track_buffer.hpp"
+#include "scene_test_support.hpp"
+
+namespace trailray::render::test {
+
+inline constexpr glm::vec3 kTrackRed{1.0f, 0.0f, 0.0f};
+
+// An east-north-up frame at a geodetic position: points as metres east, north and up from it.
+struct LocalFrame {
+  glm::dvec3 origin;
+  EnuAxes axes;
+
+  explicit LocalFrame(const GeoPosition& at)
+      : origin(to_dvec3(ecef_from(at))), axes(enu_axes_at(at.lat_deg, at.lon_deg)) {}
+  glm::dvec3 point(double east_m, double north_m, double up_m) const {
+    return origin + east_m * axes.east + north_m * axes.north + up_m * axes.up;
+  }
+  glm::dvec3 point(const glm::dvec3& enu) const { return point(enu.x, enu.y, enu.z); }
+};
+
+// A segment through the frame's points (east, north, up), optionally with values.
+inline TrackPolyline polyline(const LocalFrame& frame, const std::vector<glm::dvec3>& enu,
+                              std::vector<float> values = {}) {
+  TrackPolyline line;
+  for (const glm::dvec3& p : enu) line.points_ecef.push_back(frame.point(p));
+  line.values = std::move(values);
+  return line;
+}
+
+inline TrackGeometry geometry_of(std::initializer_list<TrackPolyline> segments) {
+  TrackGeometry g;
+  g.segments.assign(segments.begin(), segments.end());
+  return g;
+}
+
+// A level path (east, north, up) from `start` heading `heading_deg` (clockwise from north): a leg
+// of `leg_m`, then after each turn (degrees, positive to the right) another leg.
+inline std::vector<glm::dvec3> turning_path(const glm::dvec3& start, double heading_deg, double leg_m,
+                                            std::initializer_list<double> turns_deg) {
+  std::vector<glm::dvec3> points{start};
+  double heading = heading_deg;
+  const auto advance = [&] {
+    const double h = heading * M_PI / 180.0;
+    points.push_back(points.back() + leg_m * glm::dvec3(std::sin(h), std::cos(h), 0.0));
+  };
+  advance();
+  for (const double turn : turns_deg) {
+    heading += turn;
+    advance();
+  }
+  return points;
+}
+
+// The focal length in pixels: (height / 2) / tan(vfov / 2).
+inline double focal_length_px(const Lens& lens) {
+  return 0.5 * lens.height_px / std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0);
+}
+
+// A camera at `at` looking straight down (north is up in the image for heading 0).
+inline Camera looking_down(const GeoPosition& at, const Lens& lens, double near_m = 1.0, double far_m = 1.0e5) {
+  return Camera(ecef_from(at), 0.0, -90.0, lens, DepthRange{near_m, far_m});
+}
+
+// Options for a geometric check over the flat neutral ground at `ground_m`: the sun high in the
+// south, no SSAO, no atmosphere (flat sky, no haze), no shadows.
+inline SceneRenderOptions plain_options(const GeoPosition& place, double ground_m) {
+  SceneRenderOptions options;
+  options.neutral_ground_height_m = ground_m;
+  options.sun_direction_ecef = sun_from(place.lat_deg, place.lon_deg, 180.0, 60.0);
+  options.ssao = false;
+  options.atmosphere = false;
+  options.shadows = false;
+  return options;
+}
+
+// The red track's alpha at a pixel (see the file comment): 1 - green / green without tracks,
+// from green and blue together. 0 where the background is too dark to tell.
+inline double track_alpha(const RgbaImage& with, const RgbaImage& without, std::uint32_t x, std::uint32_t y) {
+  const auto p = with.pixel(x, y), q = without.pixel(x, y);
+  const double base = static_cast<double>(q[1]) + q[2];
+  if (base < 20.0) return 0.0;
+  return std::clamp(1.0 - (static_cast<double>(p[1]) + p[2]) / base, 0.0, 1.0);
+}
+
+// The alpha summed down one column (a tube crossing it: its width in pixels, fringe included).
+inline double column_alpha(const RgbaImage& with, const RgbaImage& without, std::uint32_t x) {
+  double sum = 0.0;
+  for (std::uint32_t y = 0; y < with.height; ++y) sum += track_alpha(with, without, x, y);
+  return sum;
+}
+
+// The alpha summed along one row.
+inline double row_alpha(const RgbaImage& with, const RgbaImage& without, std::uint32_t y) {
+  double sum = 0.0;
+  for (std::uint32_t x = 0; x < with.width; ++x) sum += track_alpha(with, without, x, y);
+  return sum;
+}
+
+// The pixel a point projects to, clamped into the image; false when behind the camera or off it.
+inline bool pixel_of(const Camera& camera, const glm::dvec3& ecef, std::uint32_t& x, std::uint32_t& y) {
+  const auto p = camera.project(to_ecef(ecef));
+  if (!p || p->x_px < 0.0 || p->y_px < 0.0 || p->x_px >= camera.lens().width_px || p->y_px >= camera.lens().height_px)
+    return false;
+  x = static_cast<std::uint32_t>(p->x_px);
+  y = static_cast<std::uint32_t>(p->y_px);
+  return true;
+}
+
+// Renders the scene without tracks and with them (same options otherwise).
+struct WithAndWithout {
+  RgbaImage with, without;
+};
+inline WithAndWithout render_both(SceneRenderer& renderer, const Camera& camera, SceneRenderOptions options,
+                                  std::vector<TrackDraw> tracks) {
+  WithAndWithout out;
+  options.tracks.clear();
+  out.without = renderer.render(camera, options).image;
+  options.tracks = std::move(tracks);
+  out.with = renderer.render(camera, options).image;
+  return out;
+}
+
+}  // namespace trailray::render::test
