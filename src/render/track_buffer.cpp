@@ -57,11 +57,20 @@ TrackBuffer::TrackBuffer(const TrackGeometry& geometry) {
     has_drops_ = has_drops_ || !line.heights_above_ground_m.empty();
   }
 
-  // Block origins: the first point of each block of kBlockPoints, kept in double.
+  // Block origins: the first point of each block, kept in double; blocks as large as the
+  // points' spread allows (see the header).
   std::vector<glm::dvec3> all;
   all.reserve(point_count_);
   for (const TrackPolyline& line : geometry.segments) all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
-  for (std::size_t i = 0; i < all.size(); i += kBlockPoints) block_origins_.push_back(all[i]);
+  const auto blocks_reach = [&](std::size_t size) {
+    for (std::size_t first = 0; first < all.size(); first += size)
+      for (std::size_t i = first + 1; i < std::min(all.size(), first + size); ++i)
+        if (glm::length(all[i] - all[first]) > kMaxBlockReachM) return false;
+    return true;
+  };
+  while (block_shift_ > 0 && !blocks_reach(std::size_t{1} << block_shift_)) --block_shift_;
+  const std::size_t block_size = std::size_t{1} << block_shift_;
+  for (std::size_t i = 0; i < all.size(); i += block_size) block_origins_.push_back(all[i]);
 
   // Bounding sphere: the box's centre and the farthest point from it.
   if (!all.empty()) {
@@ -82,7 +91,7 @@ TrackBuffer::TrackBuffer(const TrackGeometry& geometry) {
   std::size_t index = 0;
   for (const TrackPolyline& line : geometry.segments) {
     for (std::size_t i = 0; i < line.points_ecef.size(); ++i, ++index) {
-      const glm::dvec3 offset = line.points_ecef[i] - block_origins_[index / kBlockPoints];
+      const glm::dvec3 offset = line.points_ecef[i] - block_origins_[index >> block_shift_];
       const float value = line.values.empty() || std::isnan(line.values[i]) ? kMissingValue : line.values[i];
       texels.insert(texels.end(),
                     {static_cast<float>(offset.x), static_cast<float>(offset.y), static_cast<float>(offset.z), value});

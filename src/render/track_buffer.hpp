@@ -3,11 +3,11 @@
 // vertex buffer. The track pass builds each segment's quad from gl_VertexID and fetches the
 // points it needs.
 //
-// Layout, 16 bytes per point plus 1/16 byte per point of block origins:
+// Layout, 16 bytes per point plus 1/16 byte per point of block origins (for recorded tracks):
 //   points    RGBA32F, 2D (kMaxTextureWidth wide, or the point count when smaller): texel i is
 //             point i of the track (segments one after the other): xyz = float offset from the
 //             point's block origin (ECEF metres), w = the colour attribute (NaN: no value).
-//   blocks    RGBA32F, one texel per kBlockPoints points: "block origin minus eye", rewritten
+//   blocks    RGBA32F, one texel per block_points() points: "block origin minus eye", rewritten
 //             each frame by set_eye() from the origins kept in double on the CPU. A point's
 //             camera-relative position is its offset plus its block's texel: no large number
 //             ever reaches the GPU, so a track 300 km from anything stays exact to the
@@ -15,6 +15,11 @@
 //   drops     R32F, optional (curtains): metres from the point down to the ground.
 // A texture wider than 2048 is not guaranteed by WebGL2; the 2D layout holds a million points
 // in 489 rows.
+//
+// Block size: kMaxBlockPoints (256), halved until every point lies within kMaxBlockReachM of its
+// block's origin (its first point), so that a float offset never loses more than about a
+// millimetre. A track recorded every second keeps 256; only sparse points (a straight 300 km
+// segment) get small blocks, down to a block per point.
 //
 // Segments are never bridged: the pass draws each segment on its own, and the shader clamps the
 // neighbour lookups (x0, x3) to the segment, so nothing is read past a segment's points.
@@ -45,7 +50,8 @@ struct TrackGeometry {
 class TrackBuffer {
  public:
   static constexpr int kMaxTextureWidth = 2048;
-  static constexpr int kBlockPoints = 256;
+  static constexpr int kMaxBlockPoints = 256;
+  static constexpr double kMaxBlockReachM = 16000.0;  // float spacing there: 1 mm
 
   struct Range {
     std::int32_t first = 0;  // index of the segment's first point in the points texture
@@ -61,6 +67,8 @@ class TrackBuffer {
   const std::vector<Range>& segments() const { return segments_; }
   bool has_values() const { return has_values_; }
   bool has_drops() const { return has_drops_; }
+  int block_points() const { return 1 << block_shift_; }
+  int block_shift() const { return block_shift_; }  // log2 of block_points(), for the shaders
   int texture_width() const { return texture_width_; }
   const Texture& points() const { return points_; }
   const Texture& blocks() const { return blocks_; }
@@ -74,7 +82,7 @@ class TrackBuffer {
   double bounding_radius_m() const { return radius_; }
 
   // Rewrites the block texture for an eye (the camera's position: the passes work in
-  // camera-relative ECEF). Cheap (a texel per 256 points); a no-op when the eye is unchanged.
+  // camera-relative ECEF). Cheap (a texel per block); a no-op when the eye is unchanged.
   void set_eye(const glm::dvec3& eye_ecef);
 
  private:
@@ -89,6 +97,7 @@ class TrackBuffer {
   double radius_ = 0.0;
   Texture points_, blocks_, drops_;
   int block_texture_width_ = 1;
+  int block_shift_ = 8;
 };
 
 }  // namespace trailray::render

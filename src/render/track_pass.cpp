@@ -75,6 +75,7 @@ void bind_texture(GLuint unit, const Texture& texture) {
 void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
   bind_texture(kPointsUnit, buffer.points());
   bind_texture(kBlocksUnit, buffer.blocks());
+  program.set_int("u_block_shift", buffer.block_shift());
   for (const TrackBuffer::Range& range : buffer.segments()) {
     if (range.count <= 0) continue;
     program.set_int("u_first", range.first);

@@ -10,8 +10,8 @@ uniform float u_width_value;     // the tube's diameter: metres, or pixels when 
 uniform bool u_width_in_pixels;
 uniform float u_min_width_px;    // a tube is never thinner on screen than this
 uniform float u_pixel_angle;     // the camera's pixel size per metre of distance
+uniform int u_block_shift;       // log2 of the points per block origin (TrackBuffer::block_shift)
 
-const int kBlockPoints = 256;
 const float kMissingValueBelow = -1.0e38;  // track_buffer.cpp stores -3e38 for "no value"
 
 vec4 fetch_texel(highp sampler2D texture_2d, int index) {
@@ -20,7 +20,7 @@ vec4 fetch_texel(highp sampler2D texture_2d, int index) {
 }
 
 vec3 track_point(int index) {
-  return fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, index / kBlockPoints).xyz;
+  return fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, index >> u_block_shift).xyz;
 }
 
 float track_value(int index) { return fetch_texel(u_points, index).w; }

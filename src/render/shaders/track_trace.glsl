@@ -13,35 +13,44 @@ in vec3 v_position;
 uniform mat4 u_view_projection;
 
 // The nearest entry of the line o + t d (d unit, t of either sign) into the capsule a-b of
-// radius r (after Inigo Quilez's capsule intersection: the cylinder body, else the nearer of the
-// end spheres, which lie inside the infinite cylinder). The caller puts o near the capsule, so
-// that no term is large and the float arithmetic keeps its precision at any distance.
+// radius r: the cylinder body, else the nearer of the end spheres (which lie inside the infinite
+// cylinder, so a ray missing it misses them too). Each part is solved from the ray's point of
+// closest approach to it (the axis line, a sphere's centre), where the quadratic has no large
+// terms: a textbook form such as |oa|^2 |ba|^2 - (oa.ba)^2 - r^2 |ba|^2 subtracts numbers of
+// 1e15 to find one of 1e9 for a kilometre-long segment, and float arithmetic loses the radius
+// (ragged edges). The caller puts o near the capsule.
 bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t) {
   t = 0.0;
   vec3 ba = b - a;
-  vec3 oa = o - a;
-  float baba = dot(ba, ba);
-  float bard = dot(ba, d);
-  float baoa = dot(ba, oa);
-  float k2 = baba - bard * bard;
-  if (baba > 0.0 && k2 > 1.0e-6 * baba) {
-    float k1 = baba * dot(d, oa) - baoa * bard;
-    float k0 = baba * dot(oa, oa) - baoa * baoa - r * r * baba;
-    float h = k1 * k1 - k2 * k0;
-    if (h < 0.0) return false;  // misses the infinite cylinder, so the spheres too
-    t = (-k1 - sqrt(h)) / k2;
-    float y = baoa + t * bard;
-    if (y > 0.0 && y < baba) return true;
+  float len = length(ba);
+  if (len > 0.0) {
+    vec3 u = ba / len;
+    vec3 oa = o - a;
+    vec3 d_across = d - u * dot(d, u);
+    float dd = dot(d_across, d_across);
+    if (dd > 1.0e-10) {
+      vec3 oa_across = oa - u * dot(oa, u);
+      float closest = -dot(oa_across, d_across) / dd;  // the ray's point nearest the axis line
+      vec3 miss = oa_across + d_across * closest;
+      float miss2 = dot(miss, miss);
+      if (miss2 > r * r) return false;
+      float entry = closest - sqrt((r * r - miss2) / dd);
+      float y = dot(oa + d * entry, u);
+      if (y > 0.0 && y < len) {
+        t = entry;
+        return true;
+      }
+    }
   }
-  // The end spheres (also the whole capsule seen exactly end-on, or a zero-length segment).
   bool hit = false;
   float best = 0.0;
   for (int end = 0; end < 2; ++end) {
-    vec3 oc = o - (end == 0 ? a : b);
-    float half_b = dot(oc, d);
-    float h = half_b * half_b - (dot(oc, oc) - r * r);
-    if (h < 0.0) continue;
-    float entry = -half_b - sqrt(h);
+    vec3 centre = end == 0 ? a : b;
+    float closest = dot(centre - o, d);
+    vec3 miss = o + d * closest - centre;
+    float miss2 = dot(miss, miss);
+    if (miss2 > r * r) continue;
+    float entry = closest - sqrt(r * r - miss2);
     if (!hit || entry < best) best = entry;
     hit = true;
   }
@@ -49,16 +58,19 @@ bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t) {
   return hit;
 }
 
-// Whether p (on this capsule's surface) lies inside the capsule a-b, with a hair of tolerance so
-// that a point on both surfaces counts as inside: the joint planes then give it to exactly one.
+// Whether p (on this capsule's surface) lies inside the capsule a-b, by a hair more than
+// rounding: where two surfaces nearly coincide (points much closer together than the radius),
+// neither capsule drops its hit, and the depth test keeps the nearer; a looser test let both
+// drop theirs and left pinholes.
 bool inside_capsule(vec3 p, vec3 a, vec3 b, float r) {
-  return length(p - closest_on_segment(p, a, b)) < r * (1.0 + 1.0e-4) + 1.0e-4;
+  return length(p - closest_on_segment(p, a, b)) < r * (1.0 - 1.0e-3);
 }
 
 // The joints (thesis §3.2.3): a hit beyond the plane through a joint is dropped when the
 // neighbouring capsule holds it; that capsule draws the surface there. Clipping only what the
-// neighbour covers leaves no hole at any turn, and the first entry of a ray into the union of
-// the two capsules is never inside either, so exactly one of them draws it.
+// neighbour covers leaves no hole at any turn: the first entry of a ray into the union of the
+// two capsules is never inside either, so it is always drawn. Both passes depth-test without
+// blending between track fragments, so a pixel both capsules draw still shows one surface once.
 bool clipped_by_joints(vec3 p) {
   if ((v_neighbours & 1) != 0) {
     vec3 n = joint_normal(v_x0, v_x1, v_x2);
