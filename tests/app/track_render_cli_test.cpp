@@ -73,9 +73,10 @@ Picture render_to(const RenderEnv& env, const std::string& args, const std::stri
   return read_picture(out);
 }
 
-// Keeps a copy of a picture for a person to look at (TRAILRAY_KEEP_PICTURES=folder).
+// Keeps a copy of a picture for a person to look at, as h5-NAME in $TRAILRAY_TEST_IMAGE_DIR
+// when that is set (the render tests' convention).
 void keep(const RenderEnv& env, const std::string& name) {
-  const char* folder = std::getenv("TRAILRAY_KEEP_PICTURES");
+  const char* folder = std::getenv("TRAILRAY_TEST_IMAGE_DIR");
   if (folder == nullptr || *folder == '\0') return;
   std::error_code ec;
   std::filesystem::copy_file(env.file(name), std::filesystem::path(folder) / ("h5-" + name),
