@@ -73,13 +73,13 @@ Picture render_to(const RenderEnv& env, const std::string& args, const std::stri
   return read_picture(out);
 }
 
-// Keeps a copy of a picture for a person to look at, as h5-NAME in $TRAILRAY_TEST_IMAGE_DIR
+// Keeps a copy of a picture for a person to look at, as track_cli_NAME in $TRAILRAY_TEST_IMAGE_DIR
 // when that is set (the render tests' convention).
 void keep(const RenderEnv& env, const std::string& name) {
   const char* folder = std::getenv("TRAILRAY_TEST_IMAGE_DIR");
   if (folder == nullptr || *folder == '\0') return;
   std::error_code ec;
-  std::filesystem::copy_file(env.file(name), std::filesystem::path(folder) / ("h5-" + name),
+  std::filesystem::copy_file(env.file(name), std::filesystem::path(folder) / ("track_cli_" + name),
                              std::filesystem::copy_options::overwrite_existing, ec);
 }
 
