@@ -44,7 +44,8 @@ struct GpxTrack {
 // good to well under a metre over the few kilometres the tests use.
 inline GpxPoint offset_point(double lat, double lon, double east_m, double north_m) {
   constexpr double kMetresPerDegree = 6378137.0 * 3.14159265358979323846 / 180.0;
-  return {lat + north_m / kMetresPerDegree, lon + east_m / (kMetresPerDegree * std::cos(lat * 3.14159265358979323846 / 180.0))};
+  return {lat + north_m / kMetresPerDegree,
+          lon + east_m / (kMetresPerDegree * std::cos(lat * 3.14159265358979323846 / 180.0))};
 }
 
 inline std::string iso8601(double unix_s) {

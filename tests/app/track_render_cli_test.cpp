@@ -130,12 +130,12 @@ TEST(TrackRenderCli, WrongTrackStyleValuesAreUsageErrorsNamingTheOption) {
 
 TEST(TrackRenderCli, TwoColoursForThreeTracksIsRefused) {
   RenderEnv env;
-  const std::string gpx = env.write_gpx(
-      "three.gpx", {{"A", {east_line(kLat, kLon, 0.0, 20, 25.0, kT0, 10.0, 1000.0, 0.0)}},
-                    {"B", {east_line(kLat, kLon, 0.0, 20, 25.0, kT0, 10.0, 1000.0, 300.0)}},
-                    {"C", {east_line(kLat, kLon, 0.0, 20, 25.0, kT0, 10.0, 1000.0, 600.0)}}});
-  const auto r = run_command(env.prefix() + shell_quote(gpx) + kPicture +
-                             " --color '#ff0000' --color '#00ff00' -o " + shell_quote(env.file("out.png")) + " 2>&1");
+  const std::string gpx =
+      env.write_gpx("three.gpx", {{"A", {east_line(kLat, kLon, 0.0, 20, 25.0, kT0, 10.0, 1000.0, 0.0)}},
+                                  {"B", {east_line(kLat, kLon, 0.0, 20, 25.0, kT0, 10.0, 1000.0, 300.0)}},
+                                  {"C", {east_line(kLat, kLon, 0.0, 20, 25.0, kT0, 10.0, 1000.0, 600.0)}}});
+  const auto r = run_command(env.prefix() + shell_quote(gpx) + kPicture + " --color '#ff0000' --color '#00ff00' -o " +
+                             shell_quote(env.file("out.png")) + " 2>&1");
   EXPECT_TRUE(r.status == 1 || r.status == 2) << r.out;
   EXPECT_NE(r.out.find("--color"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("once per track"), std::string::npos) << r.out;
@@ -501,8 +501,7 @@ TEST(TrackRenderCli, AGapBetweenSegmentsIsNotBridged) {
   const auto first = east_line(kLat, kLon, 0.0, 41, 25.0, kT0, 10.0, 1000.0);
   const auto second = east_line(kLat, kLon, 2000.0, 41, 25.0, kT0 + 3600.0, 10.0, 1000.0);
   const std::string gpx = env.write_gpx("gap.gpx", {{"Gap", {first, second}}});
-  const Picture picture =
-      render_to(env, shell_quote(gpx) + kPicture + " --color '#ff0000' --width 6px", "gap.png");
+  const Picture picture = render_to(env, shell_quote(gpx) + kPicture + " --color '#ff0000' --width 6px", "gap.png");
   ASSERT_EQ(picture.width, kWidth);
   keep(env, "gap.png");
   std::vector<GpxPoint> all = first;

@@ -80,9 +80,9 @@ TrackScene build(const std::vector<LoadedTrackFile>& files, const TrackStyle& st
 }
 
 TEST(TrackScene, KeepsSegmentsAndPointsAndDropsEmptySegments) {
-  const auto files = std::vector{
-      file_of("walk.gpx", {track_of("Walk", {line(20, 25.0, 10.0, 1000.0), track::Segment{},
-                                              line(15, 25.0, 10.0, 1000.0, 2000.0, kT0 + 1000.0)})})};
+  const auto files =
+      std::vector{file_of("walk.gpx", {track_of("Walk", {line(20, 25.0, 10.0, 1000.0), track::Segment{},
+                                                         line(15, 25.0, 10.0, 1000.0, 2000.0, kT0 + 1000.0)})})};
   const TrackScene scene = build(files, style_of());
   ASSERT_EQ(scene.tracks.size(), 1u);
   const auto& segments = scene.tracks[0].geometry.segments;
@@ -121,8 +121,7 @@ TEST(TrackScene, PointsWithoutElevationLieOnTheNeutralGroundAndCurtainsReachIt) 
   const auto& segments = scene.tracks.at(0).geometry.segments;
   ASSERT_EQ(segments.size(), 2u);
   for (std::size_t i = 0; i < flat.points.size(); ++i) {
-    const glm::dvec3 ground =
-        render::to_dvec3(render::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0}));
+    const glm::dvec3 ground = render::to_dvec3(render::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0}));
     EXPECT_LT(glm::length(segments[0].points_ecef[i] - ground), 1e-6) << "point " << i << " is on the ground";
   }
   ASSERT_EQ(segments[0].heights_above_ground_m.size(), flat.points.size());
@@ -244,9 +243,9 @@ TEST(TrackScene, NamesAreTheTracksOwnElseTheFileNameAndNumber) {
 }
 
 TEST(TrackScene, ColoursFromThePaletteOnceOrPerTrack) {
-  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(5, 30.0, 10.0, 1000.0)}),
-                                                   track_of("B", {line(5, 30.0, 10.0, 1000.0, 500.0)}),
-                                                   track_of("C", {line(5, 30.0, 10.0, 1000.0, 1000.0)})})};
+  const auto files = std::vector{file_of(
+      "a.gpx", {track_of("A", {line(5, 30.0, 10.0, 1000.0)}), track_of("B", {line(5, 30.0, 10.0, 1000.0, 500.0)}),
+                track_of("C", {line(5, 30.0, 10.0, 1000.0, 1000.0)})})};
   const TrackScene palette = build(files, style_of());
   ASSERT_EQ(palette.tracks.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(palette.tracks[i].color_srgb, render::palette_color(i)) << i;
