@@ -84,8 +84,10 @@ TrackPoints load_tracks(const RenderArgs& a) {
         for (const auto& p : s.points) add(p);
     for (const auto& r : read.file.routes)
       for (const auto& p : r.points) add(p);
-    if (read.file.tracks.empty() && read.file.routes.empty())
-      throw std::runtime_error(path + ": has no track or route points to frame");
+    std::size_t points = 0;
+    for (const auto& t : read.file.tracks) points += t.point_count();
+    for (const auto& r : read.file.routes) points += r.points.size();
+    if (points == 0) throw std::runtime_error(path + ": has no track or route points to draw");
     out.files.push_back({path, std::move(read.file)});
   }
   return out;

@@ -40,7 +40,8 @@ void add_track_style_options(CLI::App& command, TrackStyleArgs& args) {
   command
       .add_option("--color", args.colors,
                   "Solid colour: one for every track, or one per track in order (default: a qualitative palette)")
-      ->type_name("'#rrggbb'");
+      ->type_name("'#rrggbb'")
+      ->allow_extra_args(false);  // one value per --color: the words after it are tracks
   command.add_option("--legend", args.legend, "Legend (colour bar, or key of track names) in the image (default on)")
       ->type_name("on|off");
   command
