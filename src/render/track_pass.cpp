@@ -42,7 +42,7 @@ std::array<float, 9> to_float_mat3(const glm::dmat3& m) {
   return out;
 }
 
-// The camera's pixel size per metre of distance (at the image centre).
+// The camera's pixel size per metre of view depth.
 float pixel_angle(const Camera& camera) {
   const Lens& lens = camera.lens();
   return static_cast<float>(2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px);
@@ -56,6 +56,8 @@ void set_width_uniforms(const ShaderProgram& program, const Camera& camera, cons
   program.set_int("u_width_in_pixels", settings.width.unit == TrackWidth::Unit::pixels ? 1 : 0);
   program.set_float("u_min_width_px", static_cast<float>(settings.min_width_px));
   program.set_float("u_pixel_angle", pixel_angle(camera));
+  const glm::vec3 forward(camera.axes().forward);
+  set_vec3(program, "u_camera_forward", forward);
 }
 
 void set_color_uniforms(const ShaderProgram& program, const TrackDraw& draw, const TrackSceneSettings& settings) {

@@ -69,7 +69,7 @@ void main() {
     float d_here = max(length(here), 1.0e-6);
     float d_there = max(length(there), 1.0e-6);
     to_eye = -here / d_here;
-    reach = silhouette * max(1.0, d_here / d_there) + u_margin_px * u_pixel_angle * d_here;
+    reach = silhouette * max(1.0, d_here / d_there) + u_margin_px * pixel_size_at(here);
   }
   vec3 axis = x2 - x1;
   vec3 across_view = axis - to_eye * dot(axis, to_eye);

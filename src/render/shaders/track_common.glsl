@@ -9,7 +9,8 @@ uniform int u_last;
 uniform float u_width_value;     // the tube's diameter: metres, or pixels when u_width_in_pixels
 uniform bool u_width_in_pixels;
 uniform float u_min_width_px;    // a tube is never thinner on screen than this
-uniform float u_pixel_angle;     // the camera's pixel size per metre of distance
+uniform float u_pixel_angle;     // the camera's pixel size per metre of view depth
+uniform vec3 u_camera_forward;   // unit, ECEF: the camera's view axis
 uniform int u_block_shift;       // log2 of the points per block origin (TrackBuffer::block_shift)
 
 const float kMissingValueBelow = -1.0e38;  // track_buffer.cpp stores -3e38 for "no value"
@@ -33,10 +34,15 @@ vec3 closest_on_segment(vec3 p, vec3 a, vec3 b) {
   return a + ab * s;
 }
 
+// The size of a pixel (metres) at camera-relative point p: from its depth along the view axis,
+// not its distance, so a tube off the image centre is as many pixels wide as one in the middle
+// (the projection divides by depth).
+float pixel_size_at(vec3 p) { return u_pixel_angle * max(dot(p, u_camera_forward), 1.0e-3 * length(p)); }
+
 // The radius of the capsule a-b: from the width, never under the minimum on-screen width at the
-// segment's distance from the camera (so a distant track never breaks into dots).
+// segment's depth (so a distant track never breaks into dots).
 float tube_radius(vec3 a, vec3 b) {
-  float pixel_m = u_pixel_angle * length(closest_on_segment(vec3(0.0), a, b));
+  float pixel_m = pixel_size_at(closest_on_segment(vec3(0.0), a, b));
   float diameter = u_width_in_pixels ? u_width_value * pixel_m : u_width_value;
   return 0.5 * max(diameter, u_min_width_px * pixel_m);
 }

@@ -85,7 +85,7 @@ void main() {
   vec3 outward = on_ray - on_axis;
   float miss = length(outward);
   float radius = v_radii.y;
-  float pixel_m = u_pixel_angle * t;
+  float pixel_m = pixel_size_at(on_ray);
   float coverage = clamp(0.5 - (miss - radius) / pixel_m, 0.0, 0.5);
   if (coverage <= 0.0 || miss <= 0.0) discard;
   vec3 normal = outward / miss;
