@@ -63,7 +63,8 @@ struct TrackPoints {
   std::vector<LoadedTrackFile> files;
   std::vector<render::GeoPosition> points;
   std::optional<double> first_time_s;
-  double first_lon_deg = 0.0;
+  double first_lon_deg = 0.0;              // of the first timed point
+  std::optional<double> any_lon_deg;       // of the first point at all
 };
 
 TrackPoints load_tracks(const RenderArgs& a) {
@@ -74,6 +75,7 @@ TrackPoints load_tracks(const RenderArgs& a) {
     if (read.error) throw std::runtime_error(read.error->to_string());
     const auto add = [&](const track::TrackPoint& p) {
       out.points.push_back({p.lat, p.lon, p.has_ele() ? p.ele : std::numeric_limits<double>::quiet_NaN()});
+      if (!out.any_lon_deg) out.any_lon_deg = p.lon;
       if (!out.first_time_s && !std::isnan(p.time)) {
         out.first_time_s = p.time;
         out.first_lon_deg = p.lon;
@@ -116,7 +118,10 @@ double sun_time(const RenderArgs& a, const TrackPoints& tracks) {
     return *t;
   }
   if (tracks.first_time_s) return render::solar_noon_utc(*tracks.first_time_s, tracks.first_lon_deg);
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  // Tracks without times (planned routes): today's noon there, not the dark of "now" at night.
+  if (tracks.any_lon_deg) return render::solar_noon_utc(now, *tracks.any_lon_deg);
+  return now;
 }
 
 int run_render(const RenderArgs& a) {
@@ -280,12 +285,13 @@ std::optional<ImageSize> parse_image_size(std::string_view text) {
 
 void add_render_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RenderArgs>();
-  CLI::App* cmd = app.add_subcommand("render", "A picture of the terrain around tracks, or from a camera, as a PNG");
+  CLI::App* cmd = app.add_subcommand("render", "A picture of tracks on the terrain, or of the terrain from a camera, as a PNG");
   cmd->footer(
       "Without tracks a camera is needed (--camera or --look-at). Heading 0 looks north, pitch 0 is\n"
       "horizontal, negative looks down. The sun stands where it was at --time (default: local solar noon\n"
-      "on the track's first day, or now without tracks). Where no source covers the view a neutral ground\n"
-      "is drawn at the tracks' lowest point.\n"
+      "on the track's first day, today's for tracks without times, now without tracks). Where no source\n"
+      "covers the view a neutral ground"
+      " is drawn at the tracks' lowest point.\n"
       "Exit status: 0 written, 1 a file, source or GL failed, 2 a usage error.");
   cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to draw (the view frames them)")->type_name("FILE");
   cmd->add_option("-o,--output", args->output, "The PNG to write (atomically)")->required()->type_name("OUT.png");
