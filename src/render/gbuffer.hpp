@@ -1,7 +1,8 @@
 #pragma once
 // The G-buffer (DESIGN.md "The frame", step 3): what the terrain pass leaves for the lighting
 // passes, one texel per pixel:
-//   albedo    SRGB8_ALPHA8  linear albedo (stored sRGB-encoded for precision in the darks)
+//   albedo    SRGB8_ALPHA8  linear albedo (stored sRGB-encoded for precision in the darks);
+//                           alpha 1 for terrain, 0 for a track (it gets less haze)
 //   normal    RGB10_A2      view-space unit normal as n * 0.5 + 0.5
 //   distance  R32F          metres from the camera, 0 where no terrain was drawn (the sky);
 //             RGBA8         the same packed as 24-bit fixed point when float targets are missing

@@ -32,6 +32,7 @@ out vec4 frag_color;
 // The sky's rays end at the top of the atmosphere; this stands in for "far enough".
 const float kSkyPathM = 1.0e6;
 const float kSunCosRadius = 0.99999;  // ~0.26 degrees: the sun's disc
+const float kTrackHaze = 0.3;         // the share of the aerial perspective a track gets
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -50,7 +51,11 @@ void main() {
       color = u_flat_sky;
     }
   } else {
-    vec3 albedo = texelFetch(u_albedo, pixel, 0).rgb;
+    vec4 albedo_texel = texelFetch(u_albedo, pixel, 0);
+    vec3 albedo = albedo_texel.rgb;
+    // Alpha 0 marks a track (track_visible.frag): data, not landscape, so the haze only tints it
+    // a little and its colours stay readable against the legend at any distance.
+    float haze = albedo_texel.a < 0.5 ? kTrackHaze : 1.0;
     vec3 normal = decode_normal(texelFetch(u_normal, pixel, 0));
     float ao = u_has_ao ? texelFetch(u_ao, pixel, 0).r : 1.0;
     float shadow = 1.0;
@@ -67,7 +72,7 @@ void main() {
     if (u_atmosphere) {
       vec3 transmittance;
       vec3 light = inscattering(rise, distance_m, mu, u_sun_radiance, u_sky_radiance, transmittance);
-      color = color * transmittance + light;
+      color = mix(color, color * transmittance + light, haze);
     }
   }
   frag_color = vec4(linear_to_srgb(color), 1.0);

@@ -20,7 +20,7 @@ layout(location = 2) out vec4 g_distance;
 void main() {
   CapsuleHit hit = trace_capsule(vec3(0.0), normalize(v_position), true);
   if (!hit.hit) discard;
-  g_albedo = vec4(track_albedo(hit.position), 1.0);
+  g_albedo = vec4(track_albedo(hit.position), 0.0);  // alpha 0: a track (compose.frag: less haze)
   g_normal = encode_normal(normalize(u_view_rotation * hit.normal));
   g_distance = u_packed_distance ? pack_distance(hit.t) : vec4(hit.t, 0.0, 0.0, 1.0);
   gl_FragDepth = window_depth(hit.position);
