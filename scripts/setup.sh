@@ -32,12 +32,15 @@ packages=(
   libglm-dev             # GLSL-like vectors and matrices on the CPU (render/): camera, projections, sun direction
   libfreetype-dev        # the legend's text, rasterized on the CPU into the picture (render/legend)
   fonts-dejavu-core      # DejaVu Sans, embedded into the binary at build time for the legend
+  libglfw3-dev           # the viewer's window: an OpenGL ES 3.0 context through EGL, input events (trailray view)
+  libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
   libclang-rt-14-dev     # libFuzzer / sanitizer runtimes for clang 14
   python3-gdal           # conformance test: GDAL's own bilinear heights at track points
   sqlite3                # building MBTiles fixtures in tests
+  xvfb                   # the viewer's tests run in a virtual X server (xvfb-run)
   # --- conformance and benchmarks (peers we compare against) ---
   python3-gpxpy          # conformance test: gpxpy's lengths and durations on every GPX in shared/data
   gpsbabel               # benchmark peer
