@@ -1,0 +1,103 @@
+// The replay: one clock for every track, and where each track is at a clock time.
+#include <algorithm>
+#include <cmath>
+
+#include "app/view/viewer_model.hpp"
+
+namespace trailray::app::view {
+namespace {
+
+TrackPosition on_point(const ViewerTrack& t, std::size_t i, bool active) {
+  return {true, active, i, 0.0, t.ecef.at(i)};
+}
+
+}  // namespace
+
+TrackPosition position_at(const ViewerTrack& t, double time) {
+  const auto start = t.start_time();
+  const auto end = t.end_time();
+  if (!start || t.ecef.size() != t.point_count()) return {};
+  const std::size_t n = t.point_count();
+  // The last timed point at or before `time`, in file order (cleaned times rise within a
+  // segment; a later segment that starts earlier than the previous one ended stops the scan).
+  std::optional<std::size_t> before;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ti = t.time_unix_s[i];
+    if (std::isnan(ti)) continue;
+    if (ti <= time) before = i;
+    else if (before) break;
+  }
+  if (!before) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (!std::isnan(t.time_unix_s[i])) return on_point(t, i, false);
+  }
+  const std::size_t a = *before;
+  const bool active = time >= *start && time <= *end;
+  // The next timed point in the same segment: interpolate towards it; none: wait at `a`.
+  const std::size_t seg = t.segment_of(a);
+  const std::size_t seg_end = seg + 1 < t.segment_first.size() ? t.segment_first[seg + 1] : n;
+  for (std::size_t j = a + 1; j < seg_end; ++j) {
+    const double tj = t.time_unix_s[j];
+    if (std::isnan(tj)) continue;
+    const double ta = t.time_unix_s[a];
+    if (tj <= ta) break;
+    const double f = std::clamp((time - ta) / (tj - ta), 0.0, 1.0);
+    if (f <= 0.0) return on_point(t, a, active);
+    // Untimed points between a and j (rare) are skipped: the marker moves straight from a to j.
+    return {true, active, a, f, t.ecef[a] + (t.ecef[j] - t.ecef[a]) * f};
+  }
+  return on_point(t, a, active);
+}
+
+std::optional<TimeSpan> common_time_span(const std::vector<ViewerTrack>& tracks) {
+  std::optional<TimeSpan> span;
+  for (const ViewerTrack& t : tracks) {
+    const auto s = t.start_time();
+    const auto e = t.end_time();
+    if (!s || !e) continue;
+    if (!span)
+      span = TimeSpan{*s, *e};
+    else
+      span = TimeSpan{std::min(span->start, *s), std::max(span->end, *e)};
+  }
+  return span;
+}
+
+void ReplayClock::set_span(const TimeSpan& span) {
+  span_ = TimeSpan{span.start, std::max(span.start, span.end)};
+  if (!(time_ >= span_->start && time_ <= span_->end)) time_ = span_->start;
+}
+
+double ReplayClock::fraction() const {
+  if (!span_ || span_->end <= span_->start) return 0.0;
+  return (time_ - span_->start) / (span_->end - span_->start);
+}
+
+void ReplayClock::play() {
+  if (!span_) return;
+  if (time_ >= span_->end) time_ = span_->start;
+  playing_ = true;
+}
+
+void ReplayClock::set_speed(double speed) {
+  if (!std::isfinite(speed)) return;
+  speed_ = std::clamp(speed, kMinSpeed, kMaxSpeed);
+}
+
+void ReplayClock::seek(double time) {
+  if (!span_ || std::isnan(time)) return;
+  time_ = std::clamp(time, span_->start, span_->end);
+}
+
+void ReplayClock::seek_fraction(double f) {
+  if (!span_ || std::isnan(f)) return;
+  seek(span_->start + std::clamp(f, 0.0, 1.0) * (span_->end - span_->start));
+}
+
+void ReplayClock::advance(double wall_seconds) {
+  if (!playing_ || !span_ || !(wall_seconds > 0.0)) return;
+  time_ = std::min(span_->end, time_ + wall_seconds * speed_);
+  if (time_ >= span_->end) playing_ = false;
+}
+
+}  // namespace trailray::app::view
