@@ -49,6 +49,27 @@ void timed(FrameProfiler* profiler, std::string_view name, Run&& run) {
   run();
 }
 
+// Adds the ancestors of the requested tiles down to `min_zoom`, coarsest first (higher
+// priority than any wanted tile): without waiting, they stand in while their children load.
+void add_ancestors(std::vector<terrain::TileRequest>& requests, int min_zoom) {
+  constexpr double kAncestorPriority = 1.0e12;
+  std::unordered_map<terrain::TileId, bool> seen;
+  for (const auto& r : requests) seen.emplace(r.id, true);
+  const std::size_t wanted = requests.size();
+  for (std::size_t i = 0; i < wanted; ++i)
+    for (auto up = geo::parent(requests[i].id); up && up->zoom >= min_zoom; up = geo::parent(*up)) {
+      if (!seen.emplace(*up, true).second) break;  // its ancestors are in already
+      requests.push_back({*up, kAncestorPriority - up->zoom});
+    }
+}
+
+void add_progress(terrain::LoadProgress& total, const terrain::LoadProgress& p) {
+  total.wanted += p.wanted;
+  total.loaded += p.loaded;
+  total.no_data += p.no_data;
+  total.failed += p.failed;
+}
+
 }  // namespace
 
 struct SceneRenderer::DrawnTile {
@@ -104,6 +125,14 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
   const terrain::LodCamera lod_camera = to_lod_camera(camera);
   terrain::LodSelection selection;
   std::vector<terrain::TileId> previous;
+  const auto update_lowest = [&] {
+    if (!lowest_in_view) return;
+    float lowest = INFINITY;
+    for (const auto& t : selection.tiles)
+      if (const auto tile = height_loader_->get(t.id); tile && tile->has_data())
+        lowest = std::min(lowest, tile->min_m);
+    if (std::isfinite(lowest)) neutral = lowest;
+  };
   for (int round = 0; round < kMaxSelectionRounds; ++round) {
     selection = terrain::select_tiles(lod_camera, settings, height_range);
     report.selection_rounds = round + 1;
@@ -112,20 +141,22 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
     if (!height_loader_ || ids == previous) break;
     std::vector<terrain::TileRequest> requests;
     for (const auto& t : selection.tiles) requests.push_back({t.id, t.priority});
+    if (!options.wait_for_tiles) {
+      // One round: the next frame selects again with whatever heights have arrived.
+      add_ancestors(requests, settings.min_zoom);
+      height_loader_->request(requests);
+      update_lowest();
+      break;
+    }
     height_loader_->request(requests);
     if (!height_loader_->wait_until_done(remaining(deadline), options.on_progress)) {
       report.timed_out = true;
       break;
     }
-    if (lowest_in_view) {
-      float lowest = INFINITY;
-      for (const auto& t : selection.tiles)
-        if (const auto tile = height_loader_->get(t.id); tile && tile->has_data())
-          lowest = std::min(lowest, tile->min_m);
-      if (std::isfinite(lowest)) neutral = lowest;
-    }
+    update_lowest();
     previous = std::move(ids);
   }
+  if (height_loader_) add_progress(report.progress, height_loader_->progress());
   report.neutral_ground_height_m = neutral;
 
   std::vector<DrawnTile> drawn;
@@ -170,14 +201,26 @@ std::vector<TerrainImagery> SceneRenderer::load_imagery(const std::vector<DrawnT
     wanted[i] = id;
     requests.push_back({*id, static_cast<double>(tiles.size() - i)});
   }
-  imagery_loader_->request(requests);
-  if (!imagery_loader_->wait_until_done(remaining(deadline), options.on_progress)) report.timed_out = true;
+  if (options.wait_for_tiles) {
+    imagery_loader_->request(requests);
+    if (!imagery_loader_->wait_until_done(remaining(deadline), options.on_progress)) report.timed_out = true;
+  } else {
+    add_ancestors(requests, min_zoom);
+    imagery_loader_->request(requests);
+  }
+  add_progress(report.progress, imagery_loader_->progress());
   for (const auto& f : imagery_loader_->failures()) report.failures.push_back(f);
 
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     if (!wanted[i]) continue;
-    const auto image = imagery_loader_->get(*wanted[i]);
-    if (!image || image->width == 0 || image->height == 0) continue;
+    auto image = imagery_loader_->get(*wanted[i]);
+    // Still loading: the nearest coarser image in memory stands in (only when not waiting).
+    while (!options.wait_for_tiles && !image && wanted[i]->zoom > min_zoom) {
+      wanted[i] = geo::parent(*wanted[i]);
+      if (!wanted[i]) break;
+      image = imagery_loader_->get(*wanted[i]);
+    }
+    if (!wanted[i] || !image || image->width == 0 || image->height == 0) continue;
     auto it = imagery_textures_.find(*wanted[i]);
     if (it == imagery_textures_.end())
       it =
@@ -318,7 +361,13 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
     compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
   });
   if (track_overlay) timed(profiler, "overlays", [&] { track_pass_.blend_overlay(*track_overlay); });
-  timed(profiler, "readback", [&] { scene.image = read_rgba8(0, 0, target.width(), target.height()); });
+  if (options.read_back)
+    timed(profiler, "readback", [&] { scene.image = read_rgba8(0, 0, target.width(), target.height()); });
+  if (options.blit_to_default_framebuffer) {
+    target.bind();
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (profiler != nullptr) profiler->end_frame();
   return scene;

@@ -64,6 +64,15 @@ struct SceneRenderOptions {
   TrackSceneSettings track_settings;
   // Called about every 100 ms while tiles load (on the calling thread).
   std::function<void(const terrain::LoadProgress&)> on_progress;
+  // The viewer's mode (false): never wait. Draw what is in memory now, the nearest loaded
+  // coarser tile (and imagery) standing in for tiles still loading, and leave the loaders
+  // working for the next frame; coarse levels above the wanted tiles are requested first so
+  // the view fills coarse-to-fine. `timeout` and `on_progress` are then unused.
+  bool wait_for_tiles = true;
+  // false: no glReadPixels (RenderedScene::image stays empty), for frames only shown on screen.
+  bool read_back = true;
+  // Copy the frame into the default framebuffer (a window's, which must be the lens's size).
+  bool blit_to_default_framebuffer = false;
 };
 
 struct SceneRenderReport {
@@ -75,6 +84,9 @@ struct SceneRenderReport {
   bool timed_out = false;                // drawn with what had arrived
   bool shadows_drawn = false;            // false: switched off, or the sun below the horizon
   std::vector<std::string> failures;     // tile errors ("<source> z/x/y: ...")
+  // Height and imagery tiles wanted by this frame and how many of them have arrived (a
+  // loading indicator's figures; pending() > 0 only without wait_for_tiles or after a timeout).
+  terrain::LoadProgress progress;
 };
 
 struct RenderedScene {
