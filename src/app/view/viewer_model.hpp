@@ -89,6 +89,11 @@ void set_ground_heights(ViewerTrack& track, terrain::HeightSource& heights);
 // geometry_revision. Throws std::invalid_argument for agl on a track without ground heights.
 void apply_color_metric(std::vector<ViewerTrack>& tracks, track::ColorMetric metric);
 
+// Curtains (walls down to the ground) on or off: sets each line's heights above the ground from
+// altitude - ground height (NaN where either is unknown: no wall there), or clears them; bumps
+// geometry_revision.
+void apply_curtain(std::vector<ViewerTrack>& tracks, bool on);
+
 // The statistics of flat points [first, last] (inclusive; clamped) of a track: the track cut to
 // those points (its segments kept), cleaned metrics recomputed on the cut, track_statistics on it:
 // what `trailray stats` says of a file holding just that part. nullopt when first > last.
@@ -114,6 +119,7 @@ struct HoverState {
 struct ChartSelection {
   int track = -1;  // -1: none
   std::size_t first = 0, last = 0;
+  std::optional<track::Statistics> statistics;  // range_statistics, set when the drag ends
 };
 
 enum class ChartAxis { distance, time };
@@ -140,6 +146,7 @@ struct ViewerSettings {
   ChartAxis chart_axis = ChartAxis::distance;
 
   // Which windows are open.
+  bool show_menu = true;  // the main menu bar that reopens closed windows
   bool show_tracks = true, show_statistics = true, show_shading = false, show_occlusion = false,
        show_profiler = false, show_chart = true, show_replay = true;
 };

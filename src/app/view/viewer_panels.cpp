@@ -1,13 +1,341 @@
-// The viewer's ImGui windows (stub: filled in next).
+// The viewer's ImGui windows: track list, statistics, shading, occlusion, profiler, profile chart,
+// replay and errors. Each edits the model in place; draw_panels calls the open ones.
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "app/view/profile_chart.hpp"
 #include "app/view/viewer_model.hpp"
 
 namespace trailray::app::view {
+namespace {
+
+// A combo over a list of names; returns true when the choice changed.
+template <typename Names>
+bool name_combo(const char* label, int& index, const Names& names) {
+  const std::string current = index >= 0 && index < static_cast<int>(names.size())
+                                  ? std::string(names[static_cast<std::size_t>(index)])
+                                  : std::string();
+  bool changed = false;
+  if (ImGui::BeginCombo(label, current.c_str())) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const bool selected = static_cast<int>(i) == index;
+      if (ImGui::Selectable(std::string(names[i]).c_str(), selected) && !selected) {
+        index = static_cast<int>(i);
+        changed = true;
+      }
+      if (selected) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+std::vector<std::string> track_names(const ViewerModel& model) {
+  std::vector<std::string> names;
+  for (const ViewerTrack& t : model.tracks) names.push_back(t.name);
+  return names;
+}
+
+void colour_scale_controls(ViewerModel& model) {
+  ViewerSettings& s = model.settings;
+  int metric = static_cast<int>(s.color_by);
+  if (name_combo("colour by", metric, track::color_metric_names())) {
+    const track::ColorMetric previous = s.color_by;
+    try {
+      apply_color_metric(model.tracks, static_cast<track::ColorMetric>(metric));
+      s.color_by = static_cast<track::ColorMetric>(metric);
+      s.range.reset();  // another metric's range means nothing for this one
+    } catch (const std::exception& e) {
+      model.errors.push_back(fmt::format("colour by {}: {}", track::color_metric_name(static_cast<track::ColorMetric>(metric)),
+                                         e.what()));
+      apply_color_metric(model.tracks, previous);
+    }
+  }
+  if (s.color_by == track::ColorMetric::solid) return;
+  static constexpr const char* kColormaps[] = {"turbo", "viridis", "magma", "cividis", "diverging"};
+  int map = static_cast<int>(s.colormap);
+  if (name_combo("colormap", map, std::vector<std::string>(std::begin(kColormaps), std::end(kColormaps))))
+    s.colormap = static_cast<render::Colormap>(map);
+  bool automatic = !s.range.has_value();
+  if (ImGui::Checkbox("automatic range", &automatic)) {
+    if (automatic)
+      s.range.reset();
+    else
+      s.range = effective_range(model.tracks, s).value_or(track::ValueRange{0.0, 1.0});
+  }
+  const auto range = effective_range(model.tracks, s);
+  const std::string unit(track::color_metric_unit(s.color_by));
+  if (s.range) {
+    double lo = s.range->min, hi = s.range->max;
+    ImGui::InputDouble(fmt::format("min {}", unit).c_str(), &lo, 0.0, 0.0, "%.1f");
+    ImGui::InputDouble(fmt::format("max {}", unit).c_str(), &hi, 0.0, 0.0, "%.1f");
+    if (std::isfinite(lo) && std::isfinite(hi) && lo < hi) s.range = track::ValueRange{lo, hi};
+  } else if (range) {
+    ImGui::Text("range %s to %s %s", track::format_color_value(s.color_by, range->min).c_str(),
+                track::format_color_value(s.color_by, range->max).c_str(), unit.c_str());
+  } else {
+    ImGui::TextDisabled("no point has a value");
+  }
+}
+
+void width_controls(ViewerSettings& s) {
+  float width = static_cast<float>(s.width.value);
+  const bool pixels = s.width.unit == render::TrackWidth::Unit::pixels;
+  if (ImGui::SliderFloat("width", &width, pixels ? 1.0f : 0.5f, pixels ? 30.0f : 200.0f, pixels ? "%.1f px" : "%.1f m",
+                         ImGuiSliderFlags_Logarithmic) &&
+      width > 0.0f)
+    s.width.value = width;
+  int unit = pixels ? 0 : 1;
+  ImGui::SameLine();
+  if (ImGui::RadioButton("px", &unit, 0) && !pixels) s.width = {5.0, render::TrackWidth::Unit::pixels};
+  ImGui::SameLine();
+  if (ImGui::RadioButton("m", &unit, 1) && pixels) s.width = {10.0, render::TrackWidth::Unit::metres};
+}
+
+void track_list_window(ViewerModel& model, PanelActions& actions) {
+  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 330), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Tracks", &model.settings.show_tracks)) {
+    ImGui::End();
+    return;
+  }
+  if (model.loading) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading terrain...");
+  if (model.tracks.empty()) ImGui::TextDisabled("No track: drop a GPX, IGC or TCX file onto the window.");
+  for (std::size_t i = 0; i < model.tracks.size(); ++i) {
+    ViewerTrack& t = model.tracks[i];
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::Checkbox("##visible", &t.visible);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("##colour", glm::value_ptr(t.color_srgb), ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    if (ImGui::Selectable(t.name.c_str(), model.selected_track == static_cast<int>(i), 0,
+                          ImVec2(std::max(40.0f, ImGui::GetContentRegionAvail().x - 60.0f), 0.0f)))
+      model.selected_track = static_cast<int>(i);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("fly to")) actions.fly_to_track = static_cast<int>(i);
+    if (model.settings.color_by != track::ColorMetric::solid) {
+      ImGui::Indent();
+      ImGui::Checkbox("by value", &t.by_value);
+      ImGui::Unindent();
+    }
+    ImGui::PopID();
+  }
+  ImGui::Separator();
+  ViewerSettings& s = model.settings;
+  width_controls(s);
+  colour_scale_controls(model);
+  ImGui::Checkbox("legend", &s.legend);
+  ImGui::SameLine();
+  if (ImGui::Checkbox("curtain", &s.curtain)) apply_curtain(model.tracks, s.curtain);
+  ImGui::End();
+}
+
+void statistics_window(ViewerModel& model) {
+  ImGui::SetNextWindowPos(ImVec2(10, 370), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 230), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Statistics", &model.settings.show_statistics)) {
+    ImGui::End();
+    return;
+  }
+  if (model.tracks.empty()) {
+    ImGui::TextDisabled("No track.");
+  } else {
+    int selected = std::clamp(model.selected_track, 0, static_cast<int>(model.tracks.size()) - 1);
+    if (name_combo("track", selected, track_names(model))) model.selected_track = selected;
+    const ViewerTrack& t = model.tracks[static_cast<std::size_t>(selected)];
+    ImGui::TextDisabled("%s", t.source.c_str());
+    for (const std::string& line : statistics_lines(t.summary.clean)) ImGui::TextUnformatted(line.c_str());
+  }
+  ImGui::End();
+}
+
+void shading_window(ViewerModel& model) {
+  ImGui::SetNextWindowPos(ImVec2(350, 30), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Shading", &model.settings.show_shading, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return;
+  }
+  ViewerSettings& s = model.settings;
+  if (std::isnan(s.sun_time_unix)) {
+    // The shell chooses the sun until the user moves it: start the slider from the tracks' time.
+    const auto span = common_time_span(model.tracks);
+    s.sun_time_unix =
+        span ? span->start
+             : static_cast<double>(std::chrono::duration_cast<std::chrono::seconds>(
+                                       std::chrono::system_clock::now().time_since_epoch())
+                                       .count());
+  }
+  const double day_start = std::floor(s.sun_time_unix / 86400.0) * 86400.0;
+  float hours = static_cast<float>((s.sun_time_unix - day_start) / 3600.0);
+  if (ImGui::SliderFloat("time of day (UTC)", &hours, 0.0f, 24.0f, "%.2f h"))
+    s.sun_time_unix = day_start + std::clamp(static_cast<double>(hours), 0.0, 24.0 - 1e-6) * 3600.0;
+  ImGui::Checkbox("shadows", &s.shadows);
+  ImGui::Checkbox("ambient occlusion (SSAO)", &s.ssao);
+  ImGui::Checkbox("atmosphere", &s.atmosphere);
+  ImGui::Checkbox("snow", &s.snow.enabled);
+  if (s.snow.enabled) {
+    float snowline = static_cast<float>(s.snow.snowline_m);
+    if (ImGui::SliderFloat("snowline", &snowline, 0.0f, 5000.0f, "%.0f m")) s.snow.snowline_m = snowline;
+  }
+  ImGui::End();
+}
+
+void occlusion_window(ViewerModel& model) {
+  ImGui::SetNextWindowPos(ImVec2(350, 200), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Occlusion", &model.settings.show_occlusion, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return;
+  }
+  render::TrackOcclusion& o = model.settings.occlusion;
+  ImGui::Checkbox("show hidden parts", &o.enabled);
+  ImGui::SliderFloat("alpha", &o.alpha, 0.0f, 1.0f, "%.2f");
+  float near_m = o.fade_near_m, far_m = o.fade_far_m;
+  ImGui::DragFloat("fade from", &near_m, 5.0f, 0.0f, 100000.0f, "%.0f m");
+  ImGui::DragFloat("fade to", &far_m, 5.0f, 0.0f, 100000.0f, "%.0f m");
+  // The pass needs NEAR < FAR (as --occlusion-fade does).
+  if (near_m >= 0.0f && far_m > near_m) {
+    o.fade_near_m = near_m;
+    o.fade_far_m = far_m;
+  }
+  ImGui::End();
+}
+
+void profiler_window(ViewerModel& model) {
+  ImGui::SetNextWindowPos(ImVec2(350, 330), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Profiler", &model.settings.show_profiler, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return;
+  }
+  const ProfilerTable& p = model.profile;
+  ImGui::Text("%.1f FPS (%.2f ms per frame)", p.fps, p.frame_ms);
+  if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("CPU ms");
+    ImGui::TableSetupColumn("GPU ms");
+    ImGui::TableHeadersRow();
+    const auto cell = [](const std::optional<double>& ms) {
+      ImGui::TableNextColumn();
+      if (ms)
+        ImGui::Text("%.2f", *ms);
+      else
+        ImGui::TextDisabled("n/a");
+    };
+    for (const ProfilerRow& row : p.rows) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row.pass.c_str());
+      cell(row.cpu_ms);
+      cell(row.gpu_ms);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+void chart_window(ViewerModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(350, std::max(10.0f, display.y - 330.0f)), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(std::max(300.0f, display.x - 360.0f), 320.0f), ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Profile", &model.settings.show_chart)) draw_profile_chart(model);
+  ImGui::End();
+}
+
+std::string clock_text(double unix_s) {
+  const auto whole = static_cast<long long>(std::floor(unix_s));
+  const long long day_s = ((whole % 86400) + 86400) % 86400;
+  return fmt::format("{:02}:{:02}:{:02} UTC", day_s / 3600, (day_s / 60) % 60, day_s % 60);
+}
+
+void replay_window(ViewerModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(std::max(10.0f, display.x - 340.0f), 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 170), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Replay", &model.settings.show_replay)) {
+    ImGui::End();
+    return;
+  }
+  ReplayClock& clock = model.clock;
+  if (!clock.span()) {
+    ImGui::TextDisabled("No track has times.");
+    ImGui::End();
+    return;
+  }
+  if (ImGui::Button(clock.playing() ? "pause" : "play")) clock.toggle();
+  ImGui::SameLine();
+  ImGui::TextUnformatted(clock_text(clock.time()).c_str());
+  float speed = static_cast<float>(clock.speed());
+  if (ImGui::SliderFloat("speed", &speed, static_cast<float>(ReplayClock::kMinSpeed),
+                         static_cast<float>(ReplayClock::kMaxSpeed), "%.0fx", ImGuiSliderFlags_Logarithmic))
+    clock.set_speed(speed);
+  float fraction = static_cast<float>(clock.fraction());
+  if (ImGui::SliderFloat("##scrub", &fraction, 0.0f, 1.0f, "")) clock.seek_fraction(fraction);
+  static constexpr const char* kFollow[] = {"off", "chase", "fixed orbit"};
+  int follow = static_cast<int>(clock.follow);
+  if (name_combo("camera follows", follow, std::vector<std::string>(std::begin(kFollow), std::end(kFollow))))
+    clock.follow = static_cast<FollowMode>(follow);
+  if (clock.follow != FollowMode::off && !model.tracks.empty()) {
+    int t = std::clamp(clock.follow_track, 0, static_cast<int>(model.tracks.size()) - 1);
+    if (name_combo("track", t, track_names(model))) clock.follow_track = t;
+  }
+  ImGui::End();
+}
+
+void errors_window(ViewerModel& model) {
+  if (model.errors.empty()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 40.0f), ImGuiCond_Appearing, ImVec2(0.5f, 0.0f));
+  ImGui::Begin("Errors", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  for (const std::string& e : model.errors) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", e.c_str());
+  if (ImGui::Button("dismiss")) model.errors.clear();
+  ImGui::End();
+}
+
+// The clock spans every track with times: tracks dropped in later widen it.
+void keep_clock_span(ViewerModel& model) {
+  const auto span = common_time_span(model.tracks);
+  if (!span) return;
+  const auto& current = model.clock.span();
+  if (!current || current->start != span->start || current->end != span->end) model.clock.set_span(*span);
+}
+
+void window_menu(ViewerSettings& s) {
+  if (!ImGui::BeginMainMenuBar()) return;
+  if (ImGui::BeginMenu("Windows")) {
+    ImGui::MenuItem("Tracks", nullptr, &s.show_tracks);
+    ImGui::MenuItem("Statistics", nullptr, &s.show_statistics);
+    ImGui::MenuItem("Profile", nullptr, &s.show_chart);
+    ImGui::MenuItem("Replay", nullptr, &s.show_replay);
+    ImGui::MenuItem("Shading", nullptr, &s.show_shading);
+    ImGui::MenuItem("Occlusion", nullptr, &s.show_occlusion);
+    ImGui::MenuItem("Profiler", nullptr, &s.show_profiler);
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+}  // namespace
 
 PanelActions draw_panels(ViewerModel& model, double wall_seconds) {
+  PanelActions actions;
+  keep_clock_span(model);
   model.clock.advance(wall_seconds);
-  return {};
+  ViewerSettings& s = model.settings;
+  if (s.show_menu) window_menu(s);
+  if (s.show_tracks) track_list_window(model, actions);
+  if (s.show_statistics) statistics_window(model);
+  if (s.show_shading) shading_window(model);
+  if (s.show_occlusion) occlusion_window(model);
+  if (s.show_profiler) profiler_window(model);
+  if (s.show_chart) chart_window(model);
+  if (s.show_replay) replay_window(model);
+  errors_window(model);
+  return actions;
 }
 
 }  // namespace trailray::app::view

@@ -169,6 +169,21 @@ void apply_color_metric(std::vector<ViewerTrack>& tracks, track::ColorMetric met
   }
 }
 
+void apply_curtain(std::vector<ViewerTrack>& tracks, bool on) {
+  for (ViewerTrack& t : tracks) {
+    for (std::size_t line = 0; line < t.geometry.segments.size() && line < t.segment_first.size(); ++line) {
+      auto& heights = t.geometry.segments[line].heights_above_ground_m;
+      heights.clear();
+      if (!on) continue;
+      const std::size_t first = t.segment_first[line];
+      const std::size_t count = t.geometry.segments[line].points_ecef.size();
+      for (std::size_t i = first; i < first + count && i < t.point_count(); ++i)
+        heights.push_back(static_cast<float>(t.altitude_m[i] - t.ground_m[i]));
+    }
+    ++t.geometry_revision;
+  }
+}
+
 track::Track cut_track(const ViewerTrack& t, std::size_t first, std::size_t last) {
   track::Track out;
   out.name = t.name;
