@@ -17,6 +17,14 @@ constexpr float kMissingValue = -3.0e38f;
 
 int rows_for(std::size_t texels, int width) { return static_cast<int>((texels + width - 1) / width); }
 
+// The narrowest width (at most kMaxTextureWidth) that holds `texels` in as few rows as the widest
+// would: the last row is then nearly full (2049 points take 2 rows of 1025, not of 2048).
+int width_for(std::size_t texels) {
+  const auto max_width = static_cast<std::size_t>(TrackBuffer::kMaxTextureWidth);
+  const std::size_t rows = std::max<std::size_t>(1, (texels + max_width - 1) / max_width);
+  return static_cast<int>(std::max<std::size_t>(1, (texels + rows - 1) / rows));
+}
+
 // Uploads `texels` RGBA32F texels into a width x rows texture (padding the last row).
 Texture upload_rgba32f(std::vector<float>& texels, int width) {
   const std::size_t count = texels.size() / 4;
@@ -83,7 +91,7 @@ TrackBuffer::TrackBuffer(const TrackGeometry& geometry) {
     for (const glm::dvec3& p : all) radius_ = std::max(radius_, glm::length(p - centre_));
   }
 
-  texture_width_ = static_cast<int>(std::clamp<std::size_t>(point_count_, 1, kMaxTextureWidth));
+  texture_width_ = width_for(point_count_);
   std::vector<float> texels;
   texels.reserve(point_count_ * 4);
   std::vector<float> drops;
@@ -110,7 +118,7 @@ TrackBuffer::TrackBuffer(const TrackGeometry& geometry) {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_width_, rows, GL_RED, GL_FLOAT, drops.data());
     glBindTexture(GL_TEXTURE_2D, 0);
   }
-  block_texture_width_ = static_cast<int>(std::clamp<std::size_t>(block_origins_.size(), 1, kMaxTextureWidth));
+  block_texture_width_ = width_for(block_origins_.size());
   std::vector<float> zeros(std::max<std::size_t>(block_origins_.size(), 1) * 4, 0.0f);
   blocks_ = upload_rgba32f(zeros, block_texture_width_);
 }

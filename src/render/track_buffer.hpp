@@ -4,7 +4,7 @@
 // points it needs.
 //
 // Layout, 16 bytes per point plus 1/16 byte per point of block origins (for recorded tracks):
-//   points    RGBA32F, 2D (kMaxTextureWidth wide, or the point count when smaller): texel i is
+//   points    RGBA32F, 2D (at most kMaxTextureWidth wide, as narrow as keeps the row count): texel i is
 //             point i of the track (segments one after the other): xyz = float offset from the
 //             point's block origin (ECEF metres), w = the colour attribute (NaN: no value).
 //   blocks    RGBA32F, one texel per block_points() points: "block origin minus eye", rewritten

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -15,7 +17,7 @@ namespace {
 // Texture units of the track programs.
 constexpr GLuint kPointsUnit = 0, kBlocksUnit = 1, kColormapUnit = 2, kTerrainDistanceUnit = 3, kDropsUnit = 4;
 // The quad's margin for the anti-aliased fringe (pixels), and the shadow quad's (texels).
-constexpr float kFringeMarginPx = 1.5f;
+constexpr float kFringeMarginPx = 1.0f;  // the fringe reaches half a pixel past the silhouette
 constexpr float kShadowMarginTexels = 1.0f;
 
 void check_gl(const char* what) {
@@ -72,8 +74,29 @@ void bind_texture(GLuint unit, const Texture& texture) {
   glBindTexture(GL_TEXTURE_2D, texture.id());
 }
 
-// Draws every segment of the track with `vertices_per_segment` vertices per pair of points
-// (a segment of one point is drawn as a sphere: a zero-length capsule).
+// Capsules per draw call: the shared index buffer's 16-bit indices reach 4 * 16384 vertices.
+constexpr std::int32_t kCapsulesPerDraw = 16384;
+
+// The index buffer every capsule draw shares: 0 1 2 2 1 3 for each quad of four vertices, so the
+// vertex shader runs four times per capsule instead of six (post-transform cache), and only the
+// two provoking corners fetch the neighbours.
+Buffer make_quad_indices() {
+  std::vector<std::uint16_t> indices;
+  indices.reserve(static_cast<std::size_t>(kCapsulesPerDraw) * 6);
+  for (std::int32_t q = 0; q < kCapsulesPerDraw; ++q) {
+    const auto base = static_cast<std::uint16_t>(q * 4);
+    for (const int corner : {0, 1, 2, 2, 1, 3}) indices.push_back(static_cast<std::uint16_t>(base + corner));
+  }
+  Buffer buffer = Buffer::create();
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint16_t)),
+               indices.data(), GL_STATIC_DRAW);
+  return buffer;
+}
+
+// Draws every segment of the track, a capsule per pair of consecutive points (a segment of one
+// point is a sphere: a zero-length capsule), in chunks of kCapsulesPerDraw. The quads' vertex
+// array (with the index buffer) must be bound.
 void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
   bind_texture(kPointsUnit, buffer.points());
   bind_texture(kBlocksUnit, buffer.blocks());
@@ -82,8 +105,12 @@ void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
     if (range.count <= 0) continue;
     program.set_int("u_first", range.first);
     program.set_int("u_last", range.first + range.count - 1);
-    const GLsizei capsules = std::max(range.count - 1, 1);
-    glDrawArrays(GL_TRIANGLES, 0, capsules * 6);
+    const std::int32_t capsules = std::max(range.count - 1, 1);
+    for (std::int32_t done = 0; done < capsules; done += kCapsulesPerDraw) {
+      program.set_int("u_chunk_first", range.first + done);
+      const std::int32_t count = std::min(kCapsulesPerDraw, capsules - done);
+      glDrawElements(GL_TRIANGLES, count * 6, GL_UNSIGNED_SHORT, nullptr);
+    }
   }
 }
 
@@ -145,7 +172,13 @@ TrackPass::TrackPass()
       shadow_(ShaderProgram::from_embedded("track.vert", "track_shadow.frag")),
       curtain_(ShaderProgram::from_embedded("track_curtain.vert", "track_curtain.frag")),
       blend_(ShaderProgram::from_embedded("fullscreen_triangle.vert", "overlay_blend.frag")),
-      empty_(VertexArray::create()) {}
+      empty_(VertexArray::create()),
+      quads_(VertexArray::create()) {
+  // The element buffer binding is vertex array state: the quads' array keeps it.
+  glBindVertexArray(quads_.id());
+  quad_indices_ = make_quad_indices();
+  glBindVertexArray(0);
+}
 
 void TrackPass::bind_colormap(Colormap map, GLuint unit) const {
   // Making the texture binds it to the active unit: make that unit the colormap's own, so the
@@ -192,7 +225,7 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const Camera& camera, std::
   visible_.set_int("u_colormap", static_cast<int>(kColormapUnit));
   set_width_uniforms(visible_, camera, settings);
   bind_colormap(settings.colormap, kColormapUnit);
-  glBindVertexArray(empty_.id());
+  glBindVertexArray(quads_.id());
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
     set_color_uniforms(visible_, draw, settings);
@@ -218,7 +251,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   const glm::vec3 sun(glm::normalize(lighting.sun_direction_ecef));
   bind_texture(kTerrainDistanceUnit, gbuffer.distance());
   bind_colormap(settings.colormap, kColormapUnit);
-  glBindVertexArray(empty_.id());
+  glBindVertexArray(quads_.id());
 
   // Curtains first, blended, so that a tube in front of a wall replaces it and one behind is
   // hidden by its depth.
@@ -301,7 +334,7 @@ void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_proj
   shadow_.set_float("u_margin_px", kShadowMarginTexels);
   shadow_.set_float("u_texel_m", static_cast<float>(texel_m));
   set_width_uniforms(shadow_, camera, settings);
-  glBindVertexArray(empty_.id());
+  glBindVertexArray(quads_.id());
   for (const TrackDraw& draw : tracks)
     if (drawable(draw)) draw_segments(shadow_, *draw.buffer);
   glBindVertexArray(0);

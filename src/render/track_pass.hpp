@@ -118,6 +118,8 @@ class TrackPass {
  private:
   ShaderProgram visible_, overlay_, shadow_, curtain_, blend_;
   VertexArray empty_;   // no attributes: everything comes from gl_VertexID
+  VertexArray quads_;   // no attributes either, but the shared quad index buffer
+  Buffer quad_indices_;
   mutable Texture colormap_;  // 256x1 SRGB8_ALPHA8, remade when the map changes
   mutable std::optional<Colormap> colormap_loaded_;
   void bind_colormap(Colormap map, GLuint unit) const;

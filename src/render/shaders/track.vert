@@ -1,6 +1,7 @@
 #version 300 es
-// One camera-facing quad per segment, from gl_VertexID alone (no vertex buffer): vertex 6k..6k+5
-// belong to the segment from point u_first + k to the next. The quad is the tight bounding quad
+// One camera-facing quad per segment, from gl_VertexID alone (no vertex buffer; a shared index
+// buffer only repeats 0 1 2 2 1 3): vertices 4k..4k+3 belong to the capsule from point
+// u_chunk_first + k to the next. The quad is the tight bounding quad
 // of thesis §3.2.2 (Groß and Gumhold), built per end in the plane facing the eye, with three
 // corrections: it is widened to the capsule's true silhouette when the eye is near (a sphere of
 // radius r seen from distance D spans r D / sqrt(D^2 - r^2) in the plane through its centre),
@@ -25,31 +26,47 @@ flat out vec3 v_x3;  // the next point after v_x2 (== v_x2 at a segment end)
 flat out vec3 v_radii;   // previous capsule's, this one's, next one's
 flat out vec2 v_values;  // at v_x1 and v_x2
 flat out int v_neighbours;  // bit 0: there is a previous capsule, bit 1: a next one
+flat out vec3 v_start_plane;  // the joint planes' normals at v_x1 and v_x2 (joint_normal)
+flat out vec3 v_end_plane;
 out vec3 v_position;     // the quad's point, camera-relative ECEF
 
 void main() {
-  int segment = gl_VertexID / 6;
-  int corner = gl_VertexID - segment * 6;
-  int i1 = u_first + segment;
+  // Four vertices per capsule (corner = end * 2 + side), indexed as triangles (0 1 2) (2 1 3):
+  // the last vertex of each triangle, the provoking one whose flat outputs the fragments see,
+  // is an end-1 corner, so only those fetch the neighbours and the values.
+  int segment = gl_VertexID >> 2;
+  int corner = gl_VertexID & 3;
+  int end = corner >> 1;
+  float side = (corner & 1) == 1 ? 1.0 : -1.0;
+  int i1 = u_chunk_first + segment;
   int i2 = min(i1 + 1, u_last);
-  bool has_previous = i1 > u_first;
-  bool has_next = i2 + 1 <= u_last;
   vec3 x1 = track_point(i1);
   vec3 x2 = track_point(i2);
-  vec3 x0 = has_previous ? track_point(i1 - 1) : x1;
-  vec3 x3 = has_next ? track_point(i2 + 1) : x2;
   float radius = tube_radius(x1, x2);
-  v_x0 = x0;
   v_x1 = x1;
   v_x2 = x2;
-  v_x3 = x3;
-  v_radii = vec3(has_previous ? tube_radius(x0, x1) : radius, radius, has_next ? tube_radius(x2, x3) : radius);
-  v_values = vec2(track_value(i1), track_value(i2));
-  v_neighbours = (has_previous ? 1 : 0) + (has_next ? 2 : 0);
+  if (end == 1) {
+    bool has_previous = i1 > u_first;
+    bool has_next = i2 + 1 <= u_last;
+    vec3 x0 = has_previous ? track_point(i1 - 1) : x1;
+    vec3 x3 = has_next ? track_point(i2 + 1) : x2;
+    v_x0 = x0;
+    v_x3 = x3;
+    v_radii = vec3(has_previous ? tube_radius(x0, x1) : radius, radius, has_next ? tube_radius(x2, x3) : radius);
+    v_values = vec2(track_value(i1), track_value(i2));
+    v_neighbours = (has_previous ? 1 : 0) + (has_next ? 2 : 0);
+    v_start_plane = has_previous ? joint_normal(x0, x1, x2) : vec3(0.0);
+    v_end_plane = has_next ? joint_normal(x1, x2, x3) : vec3(0.0);
+  } else {
+    v_x0 = x1;
+    v_x3 = x2;
+    v_radii = vec3(radius);
+    v_values = vec2(0.0);
+    v_neighbours = 0;
+    v_start_plane = vec3(0.0);
+    v_end_plane = vec3(0.0);
+  }
 
-  // Corners: (end, side) = (0,-1) (0,+1) (1,-1) | (1,-1) (0,+1) (1,+1).
-  int end = (corner == 2 || corner == 3 || corner == 5) ? 1 : 0;
-  float side = (corner == 1 || corner == 4 || corner == 5) ? 1.0 : -1.0;
   vec3 here = end == 0 ? x1 : x2;
   vec3 there = end == 0 ? x2 : x1;
   vec3 to_eye;

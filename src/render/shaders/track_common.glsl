@@ -6,6 +6,7 @@ uniform highp sampler2D u_points;  // xyz: offset from the block origin, w: valu
 uniform highp sampler2D u_blocks;  // xyz: block origin minus the camera
 uniform int u_first;               // the segment's first and last point index
 uniform int u_last;
+uniform int u_chunk_first;         // the point of this draw's first capsule (draws go in chunks)
 uniform float u_width_value;     // the tube's diameter: metres, or pixels when u_width_in_pixels
 uniform bool u_width_in_pixels;
 uniform float u_min_width_px;    // a tube is never thinner on screen than this

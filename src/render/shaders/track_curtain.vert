@@ -20,11 +20,11 @@ const vec3 kInverseAxes2 = vec3(1.0 / (6378137.0 * 6378137.0), 1.0 / (6378137.0 
                                 1.0 / (6356752.314245 * 6356752.314245));
 
 void main() {
-  int segment = gl_VertexID / 6;
-  int corner = gl_VertexID - segment * 6;
-  int index = u_first + segment + ((corner == 2 || corner == 3 || corner == 5) ? 1 : 0);
-  index = min(index, u_last);
-  bool top = corner == 1 || corner == 4 || corner == 5;
+  // Four vertices per segment (corner = end * 2 + top), indexed as triangles (0 1 2) (2 1 3).
+  int segment = gl_VertexID >> 2;
+  int corner = gl_VertexID & 3;
+  int index = min(u_chunk_first + segment + (corner >> 1), u_last);
+  bool top = (corner & 1) == 1;
   vec3 point = track_point(index);
   float drop = fetch_texel(u_drops, index).r;
   vec3 down = -normalize((u_eye_ecef + point) * kInverseAxes2);

@@ -8,6 +8,8 @@ flat in vec3 v_x3;
 flat in vec3 v_radii;
 flat in vec2 v_values;
 flat in int v_neighbours;
+flat in vec3 v_start_plane;
+flat in vec3 v_end_plane;
 in vec3 v_position;
 
 uniform mat4 u_view_projection;
@@ -72,14 +74,11 @@ bool inside_capsule(vec3 p, vec3 a, vec3 b, float r) {
 // two capsules is never inside either, so it is always drawn. Both passes depth-test without
 // blending between track fragments, so a pixel both capsules draw still shows one surface once.
 bool clipped_by_joints(vec3 p) {
-  if ((v_neighbours & 1) != 0) {
-    vec3 n = joint_normal(v_x0, v_x1, v_x2);
-    if (dot(p - v_x1, n) >= 0.0 && inside_capsule(p, v_x0, v_x1, v_radii.x)) return true;
-  }
-  if ((v_neighbours & 2) != 0) {
-    vec3 n = joint_normal(v_x1, v_x2, v_x3);
-    if (dot(p - v_x2, n) < 0.0 && inside_capsule(p, v_x2, v_x3, v_radii.z)) return true;
-  }
+  if ((v_neighbours & 1) != 0 && dot(p - v_x1, v_start_plane) >= 0.0 &&
+      inside_capsule(p, v_x0, v_x1, v_radii.x))
+    return true;
+  if ((v_neighbours & 2) != 0 && dot(p - v_x2, v_end_plane) < 0.0 && inside_capsule(p, v_x2, v_x3, v_radii.z))
+    return true;
   return false;
 }
 
