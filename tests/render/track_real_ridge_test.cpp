@@ -1,0 +1,125 @@
+// A track straight through a ridge of a real DEM (the swisstopo DHM25 around Interlaken): the
+// renderer draws it opaque where the camera sees it and as a translucent ghost where the terrain
+// hides it, with the boundary where a ray marched on the CPU over the raster's own heights puts
+// it. The rendered terrain is the raster warped into tiles, the CPU's the raster itself
+// (bilinear on its grid): they differ by a metre or so, which moves a grazing boundary by a few
+// pixels, so samples near a boundary are left out.
+#include <gtest/gtest.h>
+
+#include <GeographicLib/Geocentric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "gl_test_support.hpp"
+#include "render/scene_renderer.hpp"
+#include "render/track_pass.hpp"
+#include "scene_test_support.hpp"
+#include "terrain/height_sampler.hpp"
+#include "terrain/source_factory.hpp"
+#include "test_support.hpp"
+#include "track_test_support.hpp"
+
+namespace trailray::render {
+namespace {
+
+using test::GlTest;
+using test::keep_image;
+using test::kTrackRed;
+using test::pixel_of;
+using test::track_alpha;
+
+class TrackRealRidgeTest : public GlTest {};
+
+// Whether the terrain hides `point` from `eye`: the line between them in 5 m steps, each
+// step's height above the ellipsoid against the raster's height below it.
+bool terrain_hides(terrain::HeightSampler& sampler, const glm::dvec3& eye, const glm::dvec3& point) {
+  const double length = glm::length(point - eye);
+  const int steps = static_cast<int>(length / 5.0);
+  for (int i = 1; i < steps; ++i) {
+    const glm::dvec3 q = glm::mix(eye, point, static_cast<double>(i) / steps);
+    double lat = 0.0, lon = 0.0, h = 0.0;
+    GeographicLib::Geocentric::WGS84().Reverse(q.x, q.y, q.z, lat, lon, h);
+    const double ground = sampler.sample(lat, lon);
+    if (!std::isnan(ground) && h < ground) return true;
+  }
+  return false;
+}
+
+// Along 46.71 N the DEM rises from a valley at 7.846 E (772 m) to a crest at 7.868 E (1583 m)
+// and falls to the plain at 7.92 E (563 m): a track at 1200 m from 7.84 to 7.91 E runs into the
+// mountain and out again. Seen from 2.8 km south-south-west, a little above it.
+TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehindIt) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
+  terrain::SourceSettings settings;
+  settings.source = dem.string();
+  auto source = terrain::open_height_source(settings, {});
+  ASSERT_TRUE(source);
+  terrain::HeightSampler sampler(*source);
+  SceneRenderer renderer({source.get(), nullptr});
+
+  constexpr double kLat = 46.71, kTrackM = 1200.0, kWidthPx = 5.0;
+  constexpr float kAlpha = 0.45f;
+  const Lens lens{50.0, 480, 270};
+  const auto made = camera_at({{46.685, 7.866, 1450.0}, 5.0, -4.0}, lens, 600.0);
+  ASSERT_TRUE(made.ok()) << made.error;
+  const Camera& camera = *made.value;
+  const glm::dvec3 eye = to_dvec3(camera.position());
+
+  TrackGeometry geometry;
+  TrackPolyline line;
+  for (double lon = 7.840; lon <= 7.9101; lon += 0.001) line.points_ecef.push_back(to_dvec3(ecef_from({kLat, lon, kTrackM})));
+  geometry.segments.push_back(line);
+  const TrackBuffer buffer(geometry);
+  SceneRenderOptions options = test::plain_options({kLat, 7.87, 0.0}, 560.0);
+  options.track_settings.width = {kWidthPx, TrackWidth::Unit::pixels};
+  options.track_settings.occlusion.alpha = kAlpha;
+  options.track_settings.occlusion.fade_near_m = 1.0e5f;  // constant alpha however deep
+  options.track_settings.occlusion.fade_far_m = 2.0e5f;
+  options.track_settings.cast_shadows = false;
+  const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  keep_image(images.with, "track_through_real_ridge.png");
+
+  // Every 10 m along the track: its pixel, and whether the CPU sees the tube's near side.
+  const double pixel_angle = 2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px;
+  struct Sample {
+    double lon;
+    std::uint32_t x, y;
+    bool hidden;
+  };
+  std::vector<Sample> samples;
+  for (double lon = 7.841; lon <= 7.909; lon += 0.000131) {
+    const glm::dvec3 centre = to_dvec3(ecef_from({kLat, lon, kTrackM}));
+    const glm::dvec3 towards_eye = glm::normalize(eye - centre);
+    const double radius = 0.5 * kWidthPx * pixel_angle * glm::length(eye - centre);
+    Sample s{lon, 0, 0, terrain_hides(sampler, eye, centre + towards_eye * radius)};
+    if (pixel_of(camera, centre, s.x, s.y)) samples.push_back(s);
+  }
+  ASSERT_GT(samples.size(), 300u) << "the track is not in the picture";
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> boundaries;
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (samples[i].hidden != samples[i - 1].hidden) boundaries.emplace_back(samples[i].x, samples[i].y);
+  ASSERT_FALSE(boundaries.empty()) << "the ridge hides nothing of the track: the scene is wrong";
+  const auto near_boundary = [&](const Sample& s) {
+    return std::any_of(boundaries.begin(), boundaries.end(), [&](const auto& b) {
+      return std::hypot(static_cast<double>(s.x) - b.first, static_cast<double>(s.y) - b.second) < 6.0;
+    });
+  };
+  int opaque = 0, ghost = 0, wrong = 0;
+  for (const Sample& s : samples) {
+    if (near_boundary(s)) continue;
+    const double a = track_alpha(images.with, images.without, s.x, s.y);
+    const bool ok = s.hidden ? std::abs(a - kAlpha) < 0.08 : a > 0.9;
+    (s.hidden ? ghost : opaque) += 1;
+    if (!ok && ++wrong <= 8)
+      ADD_FAILURE() << s.lon << " E, pixel (" << s.x << ", " << s.y << "): alpha " << a << ", expected "
+                    << (s.hidden ? "a ghost" : "the opaque tube");
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(opaque, 50) << "too little of the track in front of the ridge to judge";
+  EXPECT_GT(ghost, 50) << "too little of the track inside the ridge to judge";
+}
+
+}  // namespace
+}  // namespace trailray::render
