@@ -7,6 +7,7 @@
 #include "app/elevation_command.hpp"
 #include "app/render_command.hpp"
 #include "app/stats_command.hpp"
+#include "app/view_command.hpp"
 
 namespace trailray::app {
 
@@ -20,6 +21,7 @@ int run_cli(int argc, char** argv) {
   add_stats_command(app, exit_code);
   add_elevation_command(app, exit_code);
   add_render_command(app, exit_code);
+  add_view_command(app, exit_code);
   add_bench_command(app, exit_code);
 
   try {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string_view>
 #include <utility>
@@ -236,6 +237,32 @@ std::vector<TerrainImagery> SceneRenderer::load_imagery(const std::vector<DrawnT
     ++report.imagery_tiles_used;
   }
   return imagery;
+}
+
+double SceneRenderer::height_in_memory(double lat_deg, double lon_deg) const {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (!height_loader_) return kNaN;
+  const terrain::SourceInfo& info = sources_.heights->info();
+  for (int zoom = info.max_zoom; zoom >= info.min_zoom; --zoom) {
+    const auto id = geo::tile_containing(lat_deg, lon_deg, zoom);
+    const auto where = geo::fractional_tile_coord(lat_deg, lon_deg, zoom);
+    if (!id || !where) return kNaN;
+    const auto tile = height_loader_->get(*id);
+    if (!tile || !tile->has_data() || tile->width < 2 || tile->height < 2) continue;
+    // The sample grid: corners on the tile's edges (pixel is point) or on cell centres (area).
+    const bool point = tile->layout == terrain::SampleLayout::pixel_is_point;
+    const double fx = where->x - id->x, fy = where->y - id->y;
+    const double gx = point ? fx * (tile->width - 1) : fx * tile->width - 0.5;
+    const double gy = point ? fy * (tile->height - 1) : fy * tile->height - 0.5;
+    const double cx = std::clamp(gx, 0.0, tile->width - 1.0), cy = std::clamp(gy, 0.0, tile->height - 1.0);
+    const auto c0 = static_cast<std::uint32_t>(std::min(cx, tile->width - 2.0));
+    const auto r0 = static_cast<std::uint32_t>(std::min(cy, tile->height - 2.0));
+    const double tx = cx - c0, ty = cy - r0;
+    const double h = (1 - ty) * ((1 - tx) * tile->at(c0, r0) + tx * tile->at(c0 + 1, r0)) +
+                     ty * ((1 - tx) * tile->at(c0, r0 + 1) + tx * tile->at(c0 + 1, r0 + 1));
+    if (!std::isnan(h)) return h;
+  }
+  return kNaN;
 }
 
 RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptions& options) {

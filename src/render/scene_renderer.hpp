@@ -107,6 +107,11 @@ class SceneRenderer {
   // std::invalid_argument for an unusable camera or a shadow map size outside 16..16384.
   RenderedScene render(const Camera& camera, const SceneRenderOptions& options);
 
+  // The terrain height at a place from the finest height tile already in memory, bilinear
+  // (NaN: no loaded tile there, or a hole). Never loads: for the viewer's camera, which must not
+  // go below the ground and must not wait for it either.
+  double height_in_memory(double lat_deg, double lon_deg) const;
+
   // The G-buffer's distance encoding: from the context's capabilities, queried once at
   // construction; tests force the packed path to check it against the float one.
   DistanceEncoding distance_encoding() const { return distance_encoding_; }

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "gl_test_support.hpp"
@@ -76,6 +77,20 @@ TEST_F(SceneStreamingTest, TilesArrivingBetweenFramesAreDrawnByLaterFrames) {
   EXPECT_GT(scene.report.tiles_with_data, 0u);
   EXPECT_EQ(scene.report.tiles_with_data, scene.report.tiles_drawn);
   EXPECT_FALSE(scene.report.timed_out);
+}
+
+TEST_F(SceneStreamingTest, HeightsInMemoryComeFromLoadedTilesOnly) {
+  GatedSource source;
+  SceneRenderer renderer({&source, nullptr});
+  const double east_deg = 1500.0 / (111320.0 * std::cos(kLat * M_PI / 180.0));  // 1.5 km east
+  EXPECT_TRUE(std::isnan(renderer.height_in_memory(kLat + 0.01, kLon + east_deg)));  // nothing loaded
+  source.open = true;
+  SceneRenderOptions options = viewer_options();
+  for (int frame = 0; frame < 2000 && !renderer.render(camera(), options).report.progress.done(); ++frame)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  // The hill: 1000 m + 0.1 m per metre east; bilinear on a fine tile is within centimetres.
+  EXPECT_NEAR(renderer.height_in_memory(kLat + 0.01, kLon + east_deg), 1150.0, 0.5);
+  EXPECT_NEAR(renderer.height_in_memory(kLat + 0.01, kLon - east_deg), 1150.0, 0.5);
 }
 
 TEST_F(SceneStreamingTest, WithoutReadBackTheImageStaysEmpty) {

@@ -1,0 +1,38 @@
+#pragma once
+// Track files into viewer tracks, without GL (so a background thread can do it while the window
+// keeps drawing): each file read on its own, so one that cannot be read becomes an error line
+// and the others still load (issue 6: "everything already open stays").
+
+#include <future>
+#include <string>
+#include <vector>
+
+#include "app/scene_inputs.hpp"
+#include "app/view/viewer_model.hpp"
+
+namespace trailray::app::view {
+
+struct LoadedViewerTracks {
+  std::vector<ViewerTrack> tracks;
+  TrackPoints points;               // the readable files' points (framing, the sun's time)
+  std::vector<std::string> errors;  // one per file that failed, naming it
+  std::vector<std::string> warnings;
+};
+
+struct TrackLoadInputs {
+  track::ReadOptions read;
+  track::AnalysisOptions analysis;
+  TrackStyle style;
+  terrain::HeightSource* heights = nullptr;  // ground heights under the points (may load tiles)
+  double neutral_ground_m = 0.0;  // NaN: the lowest point of the files read
+  // Tracks already open: a new file continues the palette after them and, when --color gave
+  // one colour per track, gets the palette's colour.
+  std::size_t tracks_open = 0;
+};
+
+LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs);
+
+// The same on a worker thread (files dropped on the window). The inputs' source must outlive it.
+std::future<LoadedViewerTracks> load_viewer_tracks_async(std::vector<std::string> paths, TrackLoadInputs inputs);
+
+}  // namespace trailray::app::view

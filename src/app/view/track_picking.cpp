@@ -1,0 +1,35 @@
+#include "app/view/track_picking.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace trailray::app::view {
+
+std::optional<glm::dvec2> screen_position(const render::Camera& camera, const glm::dvec3& ecef) {
+  const auto p = camera.project(render::to_ecef(ecef));
+  if (!p) return std::nullopt;
+  return glm::dvec2(p->x_px, p->y_px);
+}
+
+HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const render::Camera& camera, double x_px,
+                            double y_px, double radius_px) {
+  HoverState best;
+  double best_px = radius_px, best_depth = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < tracks.size(); ++t) {
+    if (!tracks[t].visible) continue;
+    for (std::size_t i = 0; i < tracks[t].ecef.size(); ++i) {
+      const auto p = camera.project(render::to_ecef(tracks[t].ecef[i]));
+      if (!p) continue;
+      const double d = std::hypot(p->x_px - x_px, p->y_px - y_px);
+      if (d < best_px || (d == best_px && p->depth_m < best_depth)) {
+        best_px = d;
+        best_depth = p->depth_m;
+        best.track = static_cast<int>(t);
+        best.point = i;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace trailray::app::view

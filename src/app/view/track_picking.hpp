@@ -1,0 +1,26 @@
+#pragma once
+// Which track point is under the cursor in the 3D view: the visible tracks' points projected
+// with the camera on the CPU (ViewerTrack::ecef), the nearest one to the cursor within a few
+// pixels. Points hidden by terrain count too: the track pass shows them as ghosts.
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <vector>
+
+#include "app/view/viewer_model.hpp"
+#include "render/camera.hpp"
+
+namespace trailray::app::view {
+
+inline constexpr double kPickRadiusPx = 8.0;
+
+// The nearest visible track point within `radius_px` of pixel (x, y); among points at the same
+// pixel distance, the one nearer the camera. HoverState::track is -1 when there is none.
+HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const render::Camera& camera, double x_px,
+                            double y_px, double radius_px = kPickRadiusPx);
+
+// Where an ECEF point appears (pixel), nullopt behind the camera.
+std::optional<glm::dvec2> screen_position(const render::Camera& camera, const glm::dvec3& ecef);
+
+}  // namespace trailray::app::view

@@ -1,0 +1,106 @@
+#include "app/view/view_script.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace trailray::app::view {
+namespace {
+
+using Kind = ScriptCommand::Kind;
+
+struct Syntax {
+  std::string_view name;
+  Kind kind;
+  int numbers;     // how many numbers follow (-1: one path)
+  bool non_negative;
+  std::string_view usage;
+};
+
+constexpr Syntax kSyntax[] = {
+    {"orbit", Kind::orbit, 2, false, "orbit DX DY"},
+    {"pan", Kind::pan, 2, false, "pan DX DY"},
+    {"zoom", Kind::zoom, 1, false, "zoom STEPS"},
+    {"select", Kind::select, 1, true, "select TRACK_INDEX"},
+    {"hover", Kind::hover, 2, false, "hover X Y"},
+    {"print-hover", Kind::print_hover, 0, false, "print-hover"},
+    {"print-marker", Kind::print_marker, 0, false, "print-marker"},
+    {"print-camera", Kind::print_camera, 0, false, "print-camera"},
+    {"play", Kind::play, 1, true, "play SECONDS"},
+    {"speed", Kind::speed, 1, true, "speed X"},
+    {"wait", Kind::wait, 1, true, "wait FRAMES"},
+    {"screenshot", Kind::screenshot, -1, false, "screenshot PATH"},
+};
+
+std::vector<std::string_view> words(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+bool parse_number(std::string_view text, double& value) {
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+}
+
+}  // namespace
+
+ViewScript parse_view_script(std::string_view text, const std::string& file) {
+  ViewScript script{file, {}};
+  int number = 0;
+  while (!text.empty()) {
+    const std::size_t nl = text.find('\n');
+    const std::string_view line = text.substr(0, nl);
+    text = nl == std::string_view::npos ? std::string_view() : text.substr(nl + 1);
+    ++number;
+    const auto w = words(line);
+    if (w.empty() || w[0].front() == '#') continue;
+    const auto fail = [&](const std::string& why) { throw ScriptError(fmt::format("{}:{}: {}", file, number, why)); };
+    const Syntax* syntax = nullptr;
+    for (const Syntax& s : kSyntax)
+      if (s.name == w[0]) syntax = &s;
+    if (syntax == nullptr)
+      fail(fmt::format("unknown command '{}' (orbit, pan, zoom, select, hover, print-hover, print-marker, "
+                       "print-camera, play, speed, wait, screenshot)",
+                       w[0]));
+    ScriptCommand c;
+    c.kind = syntax->kind;
+    c.line = number;
+    if (syntax->numbers < 0) {
+      if (w.size() != 2) fail(fmt::format("expected '{}'", syntax->usage));
+      c.path = std::string(w[1]);
+    } else {
+      if (static_cast<int>(w.size()) != syntax->numbers + 1) fail(fmt::format("expected '{}'", syntax->usage));
+      double values[2] = {0.0, 0.0};
+      for (int i = 0; i < syntax->numbers; ++i) {
+        if (!parse_number(w[static_cast<std::size_t>(i) + 1], values[i]))
+          fail(fmt::format("'{}' is not a number (expected '{}')", w[static_cast<std::size_t>(i) + 1], syntax->usage));
+        if (syntax->non_negative && values[i] < 0.0)
+          fail(fmt::format("'{}' is negative (expected '{}')", w[static_cast<std::size_t>(i) + 1], syntax->usage));
+      }
+      c.x = values[0];
+      c.y = values[1];
+    }
+    script.commands.push_back(std::move(c));
+  }
+  return script;
+}
+
+ViewScript load_view_script(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScriptError(path + ": cannot read the script");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_view_script(text.str(), path);
+}
+
+}  // namespace trailray::app::view

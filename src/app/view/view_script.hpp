@@ -1,0 +1,51 @@
+#pragma once
+// `trailray view --script FILE`: simple commands, one per line, that drive the viewer for tests
+// and scripted pictures. Blank lines and lines starting with '#' are skipped.
+//
+//   orbit DX DY       a left drag of DX, DY pixels (heading and pitch around the pivot)
+//   pan DX DY         a right drag of DX, DY pixels from the image centre
+//   zoom STEPS        wheel steps toward the image centre (negative: out)
+//   select TRACK      the statistics panel's track (0-based), and the camera flies to it
+//   hover X Y         the cursor at pixel (X, Y): picks the track point there
+//   print-hover       prints the hovered point's tooltip to standard output
+//   print-marker      prints each track's replay marker position (pixels) to standard output
+//   print-camera      prints the camera's pivot, distance, heading and pitch
+//   play SECONDS      the replay runs SECONDS of wall time at its speed, then pauses
+//   speed X           the replay's speed (1..1000 times real time)
+//   wait FRAMES       renders FRAMES frames
+//   screenshot PATH   waits for the view's tiles, then writes the picture (as `render` would)
+//
+// Errors name the file and the line: "view.txt:3: orbit expects two numbers, got 'left'".
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace trailray::app::view {
+
+class ScriptError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ScriptCommand {
+  enum class Kind { orbit, pan, zoom, select, hover, print_hover, print_marker, print_camera, play, speed, wait, screenshot };
+  Kind kind = Kind::wait;
+  double x = 0.0, y = 0.0;  // the numbers (one or two)
+  std::string path;         // screenshot
+  int line = 0;             // 1-based, for messages
+};
+
+struct ViewScript {
+  std::string file;
+  std::vector<ScriptCommand> commands;
+};
+
+// Throws ScriptError "FILE:LINE: ..." for an unknown command, a wrong number of arguments, or a
+// number that is not one (or out of range: negative frames, track or seconds).
+ViewScript parse_view_script(std::string_view text, const std::string& file);
+// Reads and parses a file; ScriptError names it when it cannot be read.
+ViewScript load_view_script(const std::string& path);
+
+}  // namespace trailray::app::view

@@ -1,0 +1,44 @@
+#pragma once
+// `trailray view`: the window, its frame loop and the scripted runs. Each frame: input (camera
+// gestures, keys, dropped files), the scene through the same SceneRenderer as `trailray render`
+// without waiting for tiles (they stream in coarse-to-fine, a loading indicator counts them),
+// blitted into the window, then the panels (draw_panels), the tooltip and the markers on top.
+//
+// Scripted (`--frames N`, `--script FILE`, `--screenshot OUT.png`): the same loop, driven by the
+// commands instead of a person; pictures wait for the view's tiles, so they are complete.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/scene_inputs.hpp"
+#include "app/terrain_options.hpp"
+#include "app/track_style_options.hpp"
+#include "render/camera.hpp"
+#include "track/io/load.hpp"
+#include "track/metrics.hpp"
+
+namespace trailray::app::view {
+
+struct ViewerOptions {
+  std::vector<std::string> tracks;
+  render::Lens lens;  // the window's size and the field of view
+  CameraRequest camera;
+  EffectArgs effects;
+  TrackStyle style;
+  track::ReadOptions read;
+  track::AnalysisOptions analysis;
+  TerrainOptions terrain;
+  bool verbose = false;
+  int frames = 0;           // > 0: render this many frames, then (screenshot and) exit
+  std::string script;       // commands to run, then exit
+  std::string screenshot;   // written at the end of a scripted run
+  double timeout_s = 120.0; // for a scripted picture's tiles
+};
+
+// Opens the window and runs until it is closed (or the script ends). Throws RenderError when
+// there is no display, std::runtime_error for sources and files that stop the start, ScriptError
+// for the script; returns the exit status.
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace trailray::app::view

@@ -1,0 +1,98 @@
+#include "app/view/viewer_overlay.hpp"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <cmath>
+
+#include "app/view/track_picking.hpp"
+
+namespace trailray::app::view {
+namespace {
+
+ImU32 colour_of(const glm::vec3& srgb, float alpha = 1.0f) { return ImGui::ColorConvertFloat4ToU32({srgb.r, srgb.g, srgb.b, alpha}); }
+
+// ImGui draws in window coordinates; the camera's pixels are the framebuffer's.
+ImVec2 to_screen(const glm::dvec2& px) {
+  const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+  return {static_cast<float>(px.x / scale.x), static_cast<float>(px.y / scale.y)};
+}
+
+void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius) {
+  list->AddCircleFilled(at, radius + 2.0f, IM_COL32(255, 255, 255, 230));
+  list->AddCircleFilled(at, radius, fill);
+}
+
+void replay_markers(const OverlayState& s, ImDrawList* list) {
+  if (!s.model.clock.span()) return;
+  for (const ViewerTrack& t : s.model.tracks) {
+    if (!t.visible) continue;
+    const TrackPosition p = position_at(t, s.model.clock.time());
+    if (!p.valid) continue;
+    if (const auto px = screen_position(s.camera, p.ecef)) marker(list, to_screen(*px), colour_of(t.color_srgb), 6.0f);
+  }
+}
+
+void hover(const OverlayState& s, ImDrawList* list) {
+  const HoverState& h = s.model.hover;
+  if (h.track < 0 || h.track >= static_cast<int>(s.model.tracks.size())) return;
+  const ViewerTrack& t = s.model.tracks[static_cast<std::size_t>(h.track)];
+  if (h.point >= t.ecef.size()) return;
+  if (const auto px = screen_position(s.camera, t.ecef[h.point]))
+    marker(list, to_screen(*px), IM_COL32(20, 20, 20, 255), 4.0f);
+  if (h.from_chart) return;
+  ImGui::BeginTooltip();
+  ImGui::TextUnformatted(t.name.c_str());
+  ImGui::Separator();
+  for (const std::string& line : tooltip_lines(t, h.point)) ImGui::TextUnformatted(line.c_str());
+  ImGui::EndTooltip();
+}
+
+void bottom_lines(const OverlayState& s) {
+  std::string text;
+  if (s.progress.pending() > 0)
+    text = fmt::format("Loading terrain: {}/{} tiles", s.progress.loaded + s.progress.no_data + s.progress.failed,
+                       s.progress.wanted);
+  if (!s.status.empty()) text += (text.empty() ? "" : "   ") + s.status;
+  if (text.empty()) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::GetForegroundDrawList()->AddText({10.0f, size.y - ImGui::GetTextLineHeight() - 8.0f},
+                                          IM_COL32(255, 255, 255, 230), text.c_str());
+}
+
+bool compass(double heading_deg) {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({size.x - 10.0f, 30.0f}, ImGuiCond_Always, {1.0f, 0.0f});
+  ImGui::SetNextWindowBgAlpha(0.5f);
+  bool clicked = false;
+  if (ImGui::Begin("##compass", nullptr,
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
+    // The needle points to north on screen: against the heading.
+    const ImVec2 c = ImGui::GetCursorScreenPos();
+    const float r = 18.0f;
+    const ImVec2 centre{c.x + r, c.y + r};
+    clicked = ImGui::InvisibleButton("north", {2.0f * r, 2.0f * r});
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    list->AddCircle(centre, r, IM_COL32(255, 255, 255, 200), 24, 1.5f);
+    const double a = -heading_deg * 3.14159265358979323846 / 180.0;
+    const ImVec2 tip{centre.x + static_cast<float>(std::sin(a)) * (r - 3.0f), centre.y - static_cast<float>(std::cos(a)) * (r - 3.0f)};
+    list->AddLine(centre, tip, IM_COL32(230, 60, 50, 255), 3.0f);
+    list->AddText({tip.x - 4.0f, tip.y - 7.0f}, IM_COL32(255, 255, 255, 255), "N");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("North up (N)");
+  }
+  ImGui::End();
+  return clicked;
+}
+
+}  // namespace
+
+bool draw_overlays(const OverlayState& s) {
+  ImDrawList* list = ImGui::GetBackgroundDrawList();  // under the panels, over the 3D view
+  replay_markers(s, list);
+  hover(s, list);
+  bottom_lines(s);
+  return compass(s.heading_deg);
+}
+
+}  // namespace trailray::app::view

@@ -1,0 +1,25 @@
+#pragma once
+// What the viewer draws over the 3D view with ImGui each frame: the tooltip of the track point
+// under the cursor, a marker where the profile chart points, the replay markers, the loading
+// indicator, a status line and the compass (click: north up).
+
+#include <string>
+
+#include "app/view/viewer_model.hpp"
+#include "render/camera.hpp"
+#include "terrain/tile_loader.hpp"
+
+namespace trailray::app::view {
+
+struct OverlayState {
+  const ViewerModel& model;
+  const render::Camera& camera;
+  const terrain::LoadProgress& progress;
+  const std::string& status;
+  double heading_deg = 0.0;
+};
+
+// Call between ImGui::NewFrame and ImGui::Render. True when the compass was clicked.
+bool draw_overlays(const OverlayState& state);
+
+}  // namespace trailray::app::view

@@ -1,0 +1,96 @@
+#include "app/view_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+
+#include "app/render_command.hpp"
+#include "app/scene_inputs.hpp"
+#include "app/track_options.hpp"
+#include "app/track_style_options.hpp"
+#include "app/view/viewer_app.hpp"
+
+namespace trailray::app {
+namespace {
+
+constexpr int kMaxFrames = 100000;
+
+struct ViewArgs {
+  std::vector<std::string> tracks;
+  std::string size = "1280x720";
+  CameraArgs camera;
+  EffectArgs effects;
+  TrackStyleArgs style;
+  track::ReadOptions read;
+  track::AnalysisOptions analysis;
+  TerrainOptions terrain;
+  bool verbose = false;
+  int frames = 0;
+  std::string script, screenshot;
+  double timeout_s = 120.0;
+};
+
+int run_view(const ViewArgs& a) {
+  const auto size = parse_image_size(a.size);
+  if (!size) throw CLI::ValidationError("--size", fmt::format("'{}' is not WxH, e.g. 1280x720", a.size));
+  view::ViewerOptions o;
+  o.lens = {a.camera.fov_deg, size->width, size->height};
+  if (auto problem = render::lens_problem(o.lens)) throw CLI::ValidationError("--fov/--size", *problem);
+  o.camera = parse_camera_request(a.camera, !a.tracks.empty());
+  if (a.frames < 0 || a.frames > kMaxFrames)
+    throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 0..{}", a.frames, kMaxFrames));
+  if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
+    throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
+  if (!a.effects.time.empty()) sun_time(a.effects.time, {});  // a bad --time is a usage error, before any window
+  o.tracks = a.tracks;
+  o.effects = a.effects;
+  o.style = parse_track_style(a.style);
+  o.read = a.read;
+  o.analysis = a.analysis;
+  o.terrain = a.terrain;
+  o.verbose = a.verbose;
+  o.frames = a.frames;
+  o.script = a.script;
+  o.screenshot = a.screenshot;
+  o.timeout_s = a.timeout_s;
+  return view::run_viewer(o);
+}
+
+}  // namespace
+
+void add_view_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ViewArgs>();
+  CLI::App* cmd = app.add_subcommand("view", "Tracks on the terrain in a window: fly around, inspect, replay");
+  cmd->footer(
+      "Mouse: left drag orbits around the ground point, right drag pans, the wheel zooms toward the cursor,\n"
+      "double click flies there. Keys: W A S D or arrows move, Q E turn, Page Up/Down tilt, + - zoom,\n"
+      "N north up, F fly to the selected track, Space play/pause the replay, P writes a screenshot.\n"
+      "Files dropped on the window are opened. Needs a display (X11, Wayland, or xvfb-run).\n"
+      "Scripted: --frames N renders N frames and prints the frame times; --script FILE runs commands\n"
+      "(orbit DX DY, pan DX DY, zoom STEPS, select TRACK, hover X Y, print-hover, print-marker,\n"
+      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH); --screenshot OUT.png\n"
+      "writes the picture at the end and exits.\n"
+      "Exit status: 0 done, 1 a file, source, script or GL failed, 2 a usage error.");
+  cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to show (the view frames them)")->type_name("FILE");
+  cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");
+  add_camera_options(*cmd, args->camera);
+  add_effect_options(*cmd, args->effects);
+  cmd->add_option("--timeout", args->timeout_s, "Seconds a scripted screenshot waits for terrain tiles (default 120)")
+      ->type_name("S");
+  cmd->add_flag("--verbose", args->verbose, "Log the GL context");
+  cmd->add_option("--frames", args->frames,
+                  "Render N frames, print their mean and median time to standard error, then exit")
+      ->type_name("N");
+  cmd->add_option("--script", args->script, "Run the commands in FILE, one per line, then exit")->type_name("FILE");
+  cmd->add_option("--screenshot", args->screenshot, "At the end of a scripted run, write the view as a PNG and exit")
+      ->type_name("OUT.png");
+  add_terrain_options(*cmd, args->terrain);
+  add_imagery_option(*cmd, args->terrain);
+  add_track_style_options(*cmd, args->style);
+  add_read_options(*cmd, args->read);
+  add_cleaning_options(*cmd, args->analysis);
+  cmd->callback([args, &exit_code] { exit_code = run_view(*args); });
+}
+
+}  // namespace trailray::app

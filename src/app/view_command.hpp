@@ -1,0 +1,11 @@
+#pragma once
+// `trailray view`: the tracks in a window, to fly around, inspect and replay (issue 6). The
+// window and its loop are app/view/viewer_app.hpp's; this file is the command line.
+
+#include <CLI/CLI.hpp>
+
+namespace trailray::app {
+
+void add_view_command(CLI::App& app, int& exit_code);
+
+}  // namespace trailray::app

@@ -1,0 +1,66 @@
+// The viewer's script language: what each line becomes, and errors that name FILE:LINE.
+#include "app/view/view_script.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace trailray::app::view {
+namespace {
+
+using Kind = ScriptCommand::Kind;
+
+TEST(ViewScript, EachLineIsACommandWithItsNumbers) {
+  const ViewScript s = parse_view_script(
+      "# a test\n\norbit 40 -12.5\r\n  zoom -2\nselect 1\nhover 100 80\nprint-hover\nplay 5\nwait 3\n"
+      "screenshot dir/a.png",
+      "s.txt");
+  ASSERT_EQ(s.commands.size(), 8u);
+  EXPECT_EQ(s.commands[0].kind, Kind::orbit);
+  EXPECT_EQ(s.commands[0].x, 40.0);
+  EXPECT_EQ(s.commands[0].y, -12.5);
+  EXPECT_EQ(s.commands[0].line, 3);
+  EXPECT_EQ(s.commands[1].kind, Kind::zoom);
+  EXPECT_EQ(s.commands[1].x, -2.0);
+  EXPECT_EQ(s.commands[2].kind, Kind::select);
+  EXPECT_EQ(s.commands[3].kind, Kind::hover);
+  EXPECT_EQ(s.commands[3].y, 80.0);
+  EXPECT_EQ(s.commands[4].kind, Kind::print_hover);
+  EXPECT_EQ(s.commands[5].kind, Kind::play);
+  EXPECT_EQ(s.commands[6].kind, Kind::wait);
+  EXPECT_EQ(s.commands[7].kind, Kind::screenshot);
+  EXPECT_EQ(s.commands[7].path, "dir/a.png");
+  EXPECT_EQ(s.commands[7].line, 10);
+}
+
+void expect_error(const std::string& text, const std::string& where, const std::string& what) {
+  try {
+    parse_view_script(text, "view.txt");
+    ADD_FAILURE() << "no error for: " << text;
+  } catch (const ScriptError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind(where, 0), 0u) << m;
+    EXPECT_NE(m.find(what), std::string::npos) << m;
+  }
+}
+
+TEST(ViewScript, ErrorsNameTheFileAndTheLine) {
+  expect_error("wait 1\nfly 3\n", "view.txt:2:", "unknown command 'fly'");
+  expect_error("\n\norbit left 3\n", "view.txt:3:", "'left' is not a number");
+  expect_error("orbit 3\n", "view.txt:1:", "orbit DX DY");
+  expect_error("wait -1\n", "view.txt:1:", "negative");
+  expect_error("screenshot\n", "view.txt:1:", "screenshot PATH");
+  expect_error("zoom 1e999\n", "view.txt:1:", "not a number");
+}
+
+TEST(ViewScript, AMissingFileIsNamed) {
+  try {
+    load_view_script("/nonexistent/script.txt");
+    ADD_FAILURE();
+  } catch (const ScriptError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/script.txt"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace trailray::app::view
