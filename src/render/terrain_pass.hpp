@@ -64,6 +64,7 @@ class FrameTarget {
   void bind() const;
   int width() const { return width_; }
   int height() const { return height_; }
+  const Texture& color() const { return color_; }
 
  private:
   int width_, height_;

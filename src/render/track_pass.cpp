@@ -144,21 +144,10 @@ Result<TrackWidth> parse_track_width(std::string_view text) {
   return {width, {}};
 }
 
-TrackOverlayTarget::TrackOverlayTarget(int width, int height)
-    : width_(width),
-      height_(height),
-      color_(make_texture_2d(GL_RGBA8, width, height)),
-      depth_(make_renderbuffer(GL_DEPTH_COMPONENT24, width, height)),
-      framebuffer_(Framebuffer::create()) {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-  check_framebuffer_complete(GL_FRAMEBUFFER, "track overlay");
-}
+TrackOverlayTarget::TrackOverlayTarget(int width, int height) : frame_(width, height) {}
 
 void TrackOverlayTarget::bind_and_clear() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glViewport(0, 0, width_, height_);
+  frame_.bind();
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);

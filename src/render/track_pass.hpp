@@ -33,6 +33,7 @@
 #include "render/gbuffer.hpp"
 #include "render/gl_objects.hpp"
 #include "render/shader_program.hpp"
+#include "render/terrain_pass.hpp"
 #include "render/track_buffer.hpp"
 
 namespace trailray::render {
@@ -76,15 +77,12 @@ class TrackOverlayTarget {
  public:
   TrackOverlayTarget(int width, int height);  // throws RenderError
   void bind_and_clear() const;                // colour (0,0,0,0), depth far, viewport
-  int width() const { return width_; }
-  int height() const { return height_; }
-  const Texture& color() const { return color_; }
+  int width() const { return frame_.width(); }
+  int height() const { return frame_.height(); }
+  const Texture& color() const { return frame_.color(); }
 
  private:
-  int width_, height_;
-  Texture color_;
-  Renderbuffer depth_;
-  Framebuffer framebuffer_;
+  FrameTarget frame_;  // RGBA8 + 24-bit depth, like the composed frame
 };
 
 class TrackPass {
