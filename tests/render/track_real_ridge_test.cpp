@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "gl_test_support.hpp"
@@ -83,42 +84,22 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
 
   // Every 10 m along the track: its pixel, and whether the CPU sees the tube's near side.
   const double pixel_angle = 2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px;
-  struct Sample {
-    double lon;
-    std::uint32_t x, y;
-    bool hidden;
-  };
-  std::vector<Sample> samples;
+  std::vector<test::VisibilitySample> samples;
   for (double lon = 7.841; lon <= 7.909; lon += 0.000131) {
     const glm::dvec3 centre = to_dvec3(ecef_from({kLat, lon, kTrackM}));
     const glm::dvec3 towards_eye = glm::normalize(eye - centre);
     const double radius = 0.5 * kWidthPx * pixel_angle * glm::length(eye - centre);
-    Sample s{lon, 0, 0, terrain_hides(sampler, eye, centre + towards_eye * radius)};
+    test::VisibilitySample s{0, 0, terrain_hides(sampler, eye, centre + towards_eye * radius),
+                             std::to_string(lon) + " E"};
     if (pixel_of(camera, centre, s.x, s.y)) samples.push_back(s);
   }
   ASSERT_GT(samples.size(), 300u) << "the track is not in the picture";
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> boundaries;
-  for (std::size_t i = 1; i < samples.size(); ++i)
-    if (samples[i].hidden != samples[i - 1].hidden) boundaries.emplace_back(samples[i].x, samples[i].y);
-  ASSERT_FALSE(boundaries.empty()) << "the ridge hides nothing of the track: the scene is wrong";
-  const auto near_boundary = [&](const Sample& s) {
-    return std::any_of(boundaries.begin(), boundaries.end(), [&](const auto& b) {
-      return std::hypot(static_cast<double>(s.x) - b.first, static_cast<double>(s.y) - b.second) < 6.0;
-    });
-  };
-  int opaque = 0, ghost = 0, wrong = 0;
-  for (const Sample& s : samples) {
-    if (near_boundary(s)) continue;
-    const double a = track_alpha(images.with, images.without, s.x, s.y);
-    const bool ok = s.hidden ? std::abs(a - kAlpha) < 0.08 : a > 0.9;
-    (s.hidden ? ghost : opaque) += 1;
-    if (!ok && ++wrong <= 8)
-      ADD_FAILURE() << s.lon << " E, pixel (" << s.x << ", " << s.y << "): alpha " << a << ", expected "
-                    << (s.hidden ? "a ghost" : "the opaque tube");
-  }
-  EXPECT_EQ(wrong, 0);
-  EXPECT_GT(opaque, 50) << "too little of the track in front of the ridge to judge";
-  EXPECT_GT(ghost, 50) << "too little of the track inside the ridge to judge";
+  const bool some_hidden = std::any_of(samples.begin(), samples.end(), [](const auto& s) { return s.hidden; });
+  ASSERT_TRUE(some_hidden) << "the ridge hides nothing of the track: the scene is wrong";
+  const test::VisibilityCount count = test::check_visibility(samples, images, kAlpha, 0.08, 6.0);
+  EXPECT_EQ(count.wrong, 0);
+  EXPECT_GT(count.opaque, 50) << "too little of the track in front of the ridge to judge";
+  EXPECT_GT(count.ghost, 50) << "too little of the track inside the ridge to judge";
 }
 
 }  // namespace

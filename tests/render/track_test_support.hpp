@@ -11,12 +11,15 @@
 // 1 - (1 - a)^2 > a.
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "render/camera.hpp"
@@ -142,6 +145,44 @@ inline WithAndWithout render_both(SceneRenderer& renderer, const Camera& camera,
   options.tracks = std::move(tracks);
   out.with = renderer.render(camera, options).image;
   return out;
+}
+
+// A point of a track where the CPU decided whether the terrain hides it: its pixel, the answer,
+// and a label for failure messages.
+struct VisibilitySample {
+  std::uint32_t x = 0, y = 0;
+  bool hidden = false;
+  std::string where;
+};
+struct VisibilityCount {
+  int opaque = 0, ghost = 0, wrong = 0;
+};
+
+// Checks each sample's pixel: the opaque tube (alpha > 0.9) where the CPU sees it, a ghost of
+// `ghost_alpha` (+- `tolerance`) where the terrain hides it. Samples within `boundary_px` of a
+// pixel where the CPU's answer changes are left out (the GPU's terrain and the CPU's differ a
+// little there). Reports the first few mismatches as test failures.
+inline VisibilityCount check_visibility(const std::vector<VisibilitySample>& samples, const WithAndWithout& images,
+                                        double ghost_alpha, double tolerance, double boundary_px) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> boundaries;
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (samples[i].hidden != samples[i - 1].hidden) boundaries.emplace_back(samples[i].x, samples[i].y);
+  const auto near_boundary = [&](const VisibilitySample& s) {
+    return std::any_of(boundaries.begin(), boundaries.end(), [&](const auto& b) {
+      return std::hypot(static_cast<double>(s.x) - b.first, static_cast<double>(s.y) - b.second) < boundary_px;
+    });
+  };
+  VisibilityCount count;
+  for (const VisibilitySample& s : samples) {
+    if (near_boundary(s)) continue;
+    const double a = track_alpha(images.with, images.without, s.x, s.y);
+    const bool ok = s.hidden ? std::abs(a - ghost_alpha) < tolerance : a > 0.9;
+    (s.hidden ? count.ghost : count.opaque) += 1;
+    if (!ok && ++count.wrong <= 8)
+      ADD_FAILURE() << s.where << ", pixel (" << s.x << ", " << s.y << "): alpha " << a << ", expected "
+                    << (s.hidden ? "a ghost" : "the opaque tube");
+  }
+  return count;
 }
 
 }  // namespace trailray::render::test
