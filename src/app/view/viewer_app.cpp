@@ -439,6 +439,8 @@ int ViewerApp::run() {
 }
 
 int run_viewer(const ViewerOptions& options) {
+  // A script that does not parse fails before a window opens.
+  if (!options.script.empty()) load_view_script(options.script);
   ViewerApp app(options);
   return app.run();
 }

@@ -1,0 +1,226 @@
+// `trailray view` through its command line, in a window under Xvfb (Mesa's llvmpipe through EGL):
+// the window shows the track, a scripted drag changes the view, hovering a known track point
+// prints that point's values, the replay moves the marker, a broken file or script is reported.
+// Small windows (480x270) keep the whole set to a few seconds per test on llvmpipe.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "track_cli_support.hpp"
+
+namespace trailray::test {
+namespace {
+
+constexpr double kLat = 46.70, kLon = 7.85;
+constexpr double kT0 = 1718704800.0;  // 2024-06-18T10:00:00Z
+constexpr std::uint32_t kWidth = 480, kHeight = 270;
+const std::string kWindow =
+    " --terrain none --no-ssao --no-atmosphere --size 480x270 --time 2024-06-18T10:00:00Z --color '#ff0000'";
+
+// A hike east with a bend, 10 s and 25 m between points, climbing 2 m a point, heart rate
+// 120 + (i mod 30): every point's values tell which point it is.
+std::vector<GpxPoint> bent_hike() {
+  std::vector<GpxPoint> points;
+  for (int i = 0; i < 120; ++i) {
+    GpxPoint p = offset_point(kLat, kLon, 25.0 * i, 300.0 * std::sin(i / 20.0));
+    p.ele = 1000.0 + 2.0 * i;
+    p.time = kT0 + 10.0 * i;
+    points.push_back(p);
+  }
+  return points;
+}
+
+std::string hike_gpx_with_heart_rate(const std::vector<GpxPoint>& points) {
+  std::string text =
+      "<?xml version=\"1.0\"?>\n<gpx version=\"1.1\" creator=\"t\" xmlns=\"http://www.topografix.com/GPX/1/1\" "
+      "xmlns:h=\"http://www.garmin.com/xmlschemas/TrackPointExtension/v1\"><trk><name>Hike</name><trkseg>\n";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "<trkpt lat=\"%.9f\" lon=\"%.9f\"><ele>%.1f</ele><time>%s</time><extensions><h:TrackPointExtension>"
+                  "<h:hr>%zu</h:hr></h:TrackPointExtension></extensions></trkpt>\n",
+                  points[i].lat, points[i].lon, points[i].ele, iso8601(points[i].time).c_str(), 120 + i % 30);
+    text += line;
+  }
+  return text + "</trkseg></trk></gpx>\n";
+}
+
+struct ViewEnv : RenderEnv {
+  std::string view() const {
+    std::string p = prefix();
+    p.replace(p.find(" render "), 8, " view ");
+    // Our own X authority file: xvfb-run's temporary folder sometimes fails to clean up (exit 5)
+    // when the program ends quickly.
+    const std::string auth = file("Xauthority");
+    std::ofstream(auth, std::ios::app).flush();
+    return "xvfb-run -a -f " + shell_quote(auth) + " env " + p;
+  }
+  std::string script(const std::string& name, const std::string& text) const {
+    const std::string path = file(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+  std::string hike() const {
+    const std::string path = file("hike.gpx");
+    std::ofstream(path, std::ios::binary) << hike_gpx_with_heart_rate(bent_hike());
+    return path;
+  }
+};
+
+using Rgb = Picture::Rgb;
+bool red(const Rgb& p) { return p.r >= 90 && p.r > 2 * p.g + 40 && p.r > 2 * p.b + 40; }
+
+std::size_t count_red(const Picture& picture) {
+  std::size_t n = 0;
+  for (std::uint32_t y = 0; y < picture.height; ++y)
+    for (std::uint32_t x = 0; x < picture.width; ++x) n += red(picture.at(x, y)) ? 1 : 0;
+  return n;
+}
+
+bool red_near(const Picture& picture, double x, double y, int radius) {
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const double px = std::round(x) + dx, py = std::round(y) + dy;
+      if (picture.inside(px, py) && red(picture.at(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py))))
+        return true;
+    }
+  return false;
+}
+
+CommandResult run_view(const ViewEnv& env, const std::string& args) {
+  return run_command(env.view() + args + " 2>&1");
+}
+
+TEST(ViewCli, TheWindowShowsTheTrackWhereItsPointsProject) {
+  ViewEnv env;
+  const std::string out = env.file("view.png");
+  const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --frames 3 --screenshot " + shell_quote(out));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("frames: 3, mean"), std::string::npos) << r.out;  // the frame times
+  const Picture picture = read_picture(out);
+  ASSERT_EQ(picture.width, kWidth);
+  ASSERT_EQ(picture.height, kHeight);
+  // The viewer starts framed like `render`: the same camera.
+  const auto points = bent_hike();
+  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  std::size_t projected = 0;
+  for (std::size_t i = 3; i + 3 < points.size(); i += 4) {
+    const auto at = camera.project(render::ecef_from({points[i].lat, points[i].lon, points[i].ele}));
+    ASSERT_TRUE(at.has_value());
+    if (!picture.inside(at->x_px, at->y_px)) continue;
+    ++projected;
+    EXPECT_TRUE(red_near(picture, at->x_px, at->y_px, 3)) << "point " << i << " at " << at->x_px << "," << at->y_px;
+  }
+  EXPECT_GT(projected, 20u);
+  EXPECT_GT(count_red(picture), 500u);
+}
+
+TEST(ViewCli, AScriptedDragChangesTheView) {
+  ViewEnv env;
+  const std::string before = env.file("before.png"), after = env.file("after.png");
+  const std::string script = env.script("drag.txt", "print-camera\nscreenshot " + before +
+                                                        "\norbit 120 -20\nprint-camera\nscreenshot " + after + "\n");
+  const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(script));
+  ASSERT_EQ(r.status, 0) << r.out;
+  // Heading turns by 120 px * 0.25 degrees, the pitch rises by 20 * 0.25.
+  const std::regex camera_line(R"(camera: pivot \S+ distance \S+ heading (\S+) pitch (\S+))");
+  std::vector<std::pair<double, double>> angles;
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), camera_line); it != std::sregex_iterator(); ++it)
+    angles.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+  ASSERT_EQ(angles.size(), 2u) << r.out;
+  EXPECT_NEAR(std::remainder(angles[0].first - angles[1].first, 360.0), 30.0, 0.01);
+  EXPECT_NEAR(angles[1].second - angles[0].second, 5.0, 0.01);
+  const Picture a = read_picture(before), b = read_picture(after);
+  ASSERT_EQ(a.rgba.size(), b.rgba.size());
+  std::size_t differing = 0;
+  for (std::uint32_t y = 0; y < a.height; ++y)
+    for (std::uint32_t x = 0; x < a.width; ++x) differing += red(a.at(x, y)) != red(b.at(x, y)) ? 1 : 0;
+  EXPECT_GT(differing, 200u) << "the track moved on screen";
+}
+
+TEST(ViewCli, HoveringAKnownTrackPointPrintsItsValues) {
+  ViewEnv env;
+  const auto points = bent_hike();
+  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  const std::size_t target = 60;
+  const auto at = camera.project(render::ecef_from({points[target].lat, points[target].lon, points[target].ele}));
+  ASSERT_TRUE(at.has_value());
+  const std::string script = env.script(
+      "hover.txt", "hover " + std::to_string(at->x_px) + " " + std::to_string(at->y_px) + "\nprint-hover\nhover 2 2\nprint-hover\n");
+  const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(script));
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(hover: track 0 'Hike' point (\d+))"))) << r.out;
+  const std::size_t point = std::stoul(m[1]);
+  EXPECT_LE(point > target ? point - target : target - point, 1u) << "picked the point under the cursor";
+  // Its own values: time, altitude, heart rate of that point of the file.
+  EXPECT_NE(r.out.find("time: " + iso8601(kT0 + 10.0 * static_cast<double>(point)).replace(10, 1, " ").substr(0, 19) + " UTC"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("altitude: " + std::to_string(1000 + 2 * point) + " m"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("heart rate: " + std::to_string(120 + point % 30) + " bpm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("speed: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hover: none"), std::string::npos) << "a corner far from the track hovers nothing\n" << r.out;
+}
+
+TEST(ViewCli, ReplayMovesTheMarker) {
+  ViewEnv env;
+  const std::string script = env.script("play.txt", "print-marker\nplay 5\nprint-marker\nplay 20\nprint-marker\n");
+  const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(script));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::regex marker_line(R"(marker: track 0 point (\d+) at (\S+) (\S+))");
+  std::vector<std::tuple<int, double, double>> markers;
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), marker_line); it != std::sregex_iterator(); ++it)
+    markers.emplace_back(std::stoi((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]));
+  ASSERT_EQ(markers.size(), 3u) << r.out;
+  // The default speed is 10x: 5 s of play is 50 s of track time, 5 points of 10 s.
+  EXPECT_EQ(std::get<0>(markers[0]), 0);
+  EXPECT_NEAR(std::get<0>(markers[1]), 5, 1);  // on point 5, or at the end of the segment before it
+  EXPECT_NEAR(std::get<0>(markers[2]), 25, 1);
+  // On screen it moves east along the track (to the right in this framing), never back.
+  EXPECT_GT(std::hypot(std::get<1>(markers[1]) - std::get<1>(markers[0]), std::get<2>(markers[1]) - std::get<2>(markers[0])),
+            5.0);
+  EXPECT_GT(std::hypot(std::get<1>(markers[2]) - std::get<1>(markers[1]), std::get<2>(markers[2]) - std::get<2>(markers[1])),
+            20.0);
+}
+
+TEST(ViewCli, AFileThatCannotBeReadIsReportedAndTheOthersStay) {
+  ViewEnv env;
+  const std::string broken = env.script("broken.gpx", "<gpx><trk><trkseg><trkpt lat=\"x\"");
+  const std::string out = env.file("view.png");
+  const auto r = run_view(env, shell_quote(env.hike()) + " " + shell_quote(broken) + kWindow + " --screenshot " +
+                                   shell_quote(out));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("broken.gpx"), std::string::npos) << r.out;
+  EXPECT_GT(count_red(read_picture(out)), 500u);
+}
+
+TEST(ViewCli, ScriptErrorsNameTheFileAndLine) {
+  ViewEnv env;
+  const std::string script = env.script("bad.txt", "wait 1\n\norbit left 3\n");
+  const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(script));
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("bad.txt:3: 'left' is not a number"), std::string::npos) << r.out;
+  const std::string select = env.script("select.txt", "select 4\n");
+  const auto s = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(select));
+  EXPECT_EQ(s.status, 1) << s.out;
+  EXPECT_NE(s.out.find("select.txt:1: select 4: there is 1 track"), std::string::npos) << s.out;
+}
+
+TEST(ViewCli, WithoutADisplayItSaysHowToGetOne) {
+  ViewEnv env;
+  std::string command = env.prefix();
+  command.replace(command.find(" render "), 8, " view ");
+  const auto r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + command + shell_quote(env.hike()) +
+                             " --terrain none 2>&1");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("no display"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("xvfb-run"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace trailray::test
