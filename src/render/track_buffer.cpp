@@ -65,20 +65,27 @@ TrackBuffer::TrackBuffer(const TrackGeometry& geometry) {
     has_drops_ = has_drops_ || !line.heights_above_ground_m.empty();
   }
 
-  // Block origins: the first point of each block, kept in double; blocks as large as the
-  // points' spread allows (see the header).
+  // Block origins, kept in double: each segment's points in blocks from its own first point
+  // (a gap between segments, however wide, costs no precision), blocks as large as the points'
+  // spread within them allows (see the header).
   std::vector<glm::dvec3> all;
   all.reserve(point_count_);
   for (const TrackPolyline& line : geometry.segments) all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
-  const auto blocks_reach = [&](std::size_t size) {
-    for (std::size_t first = 0; first < all.size(); first += size)
-      for (std::size_t i = first + 1; i < std::min(all.size(), first + size); ++i)
-        if (glm::length(all[i] - all[first]) > kMaxBlockReachM) return false;
+  const auto blocks_reach = [&](std::int32_t size) {
+    for (const Range& range : segments_)
+      for (std::int32_t first = range.first; first < range.first + range.count; first += size)
+        for (std::int32_t i = first + 1; i < std::min(range.first + range.count, first + size); ++i)
+          if (glm::length(all[static_cast<std::size_t>(i)] - all[static_cast<std::size_t>(first)]) > kMaxBlockReachM)
+            return false;
     return true;
   };
-  while (block_shift_ > 0 && !blocks_reach(std::size_t{1} << block_shift_)) --block_shift_;
-  const std::size_t block_size = std::size_t{1} << block_shift_;
-  for (std::size_t i = 0; i < all.size(); i += block_size) block_origins_.push_back(all[i]);
+  while (block_shift_ > 0 && !blocks_reach(std::int32_t{1} << block_shift_)) --block_shift_;
+  const std::int32_t block_size = std::int32_t{1} << block_shift_;
+  for (Range& range : segments_) {
+    range.first_block = static_cast<std::int32_t>(block_origins_.size());
+    for (std::int32_t i = range.first; i < range.first + range.count; i += block_size)
+      block_origins_.push_back(all[static_cast<std::size_t>(i)]);
+  }
 
   // Bounding sphere: the box's centre and the farthest point from it.
   if (!all.empty()) {
@@ -96,10 +103,12 @@ TrackBuffer::TrackBuffer(const TrackGeometry& geometry) {
   texels.reserve(point_count_ * 4);
   std::vector<float> drops;
   if (has_drops_) drops.reserve(point_count_);
-  std::size_t index = 0;
+  std::size_t segment = 0;
   for (const TrackPolyline& line : geometry.segments) {
-    for (std::size_t i = 0; i < line.points_ecef.size(); ++i, ++index) {
-      const glm::dvec3 offset = line.points_ecef[i] - block_origins_[index >> block_shift_];
+    if (line.points_ecef.empty()) continue;
+    const auto first_block = static_cast<std::size_t>(segments_[segment++].first_block);
+    for (std::size_t i = 0; i < line.points_ecef.size(); ++i) {
+      const glm::dvec3 offset = line.points_ecef[i] - block_origins_[first_block + (i >> block_shift_)];
       const float value = line.values.empty() || std::isnan(line.values[i]) ? kMissingValue : line.values[i];
       texels.insert(texels.end(),
                     {static_cast<float>(offset.x), static_cast<float>(offset.y), static_cast<float>(offset.z), value});

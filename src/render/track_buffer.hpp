@@ -7,7 +7,7 @@
 //   points    RGBA32F, 2D (at most kMaxTextureWidth wide, as narrow as keeps the row count): texel i is
 //             point i of the track (segments one after the other): xyz = float offset from the
 //             point's block origin (ECEF metres), w = the colour attribute (NaN: no value).
-//   blocks    RGBA32F, one texel per block_points() points: "block origin minus eye", rewritten
+//   blocks    RGBA32F, one texel per block (block_points() points of a segment): "block origin minus eye", rewritten
 //             each frame by set_eye() from the origins kept in double on the CPU. A point's
 //             camera-relative position is its offset plus its block's texel: no large number
 //             ever reaches the GPU, so a track 300 km from anything stays exact to the
@@ -16,10 +16,12 @@
 // A texture wider than 2048 is not guaranteed by WebGL2; the 2D layout holds a million points
 // in 489 rows.
 //
-// Block size: kMaxBlockPoints (256), halved until every point lies within kMaxBlockReachM of its
-// block's origin (its first point), so that a float offset never loses more than about a
-// millimetre. A track recorded every second keeps 256; only sparse points (a straight 300 km
-// segment) get small blocks, down to a block per point.
+// Blocks: each segment's points are cut into blocks from the segment's own first point, so a
+// jump between segments (tracks of one file far apart) costs nothing. Block size:
+// kMaxBlockPoints (256), halved until every point lies within kMaxBlockReachM of its block's
+// origin (its first point), so that a float offset never loses more than about a millimetre. A
+// track recorded every second keeps 256; only sparse points within a segment (a straight 300 km
+// segment, a GPS jump) get small blocks, down to a block per point.
 //
 // Segments are never bridged: the pass draws each segment on its own, and the shader clamps the
 // neighbour lookups (x0, x3) to the segment, so nothing is read past a segment's points.
@@ -54,8 +56,10 @@ class TrackBuffer {
   static constexpr double kMaxBlockReachM = 16000.0;  // float spacing there: 1 mm
 
   struct Range {
-    std::int32_t first = 0;  // index of the segment's first point in the points texture
-    std::int32_t count = 0;  // its points (a segment of one point is a sphere)
+    std::int32_t first = 0;        // index of the segment's first point in the points texture
+    std::int32_t count = 0;        // its points (a segment of one point is a sphere)
+    std::int32_t first_block = 0;  // its first block in the blocks texture: point first + k is
+                                   // relative to block first_block + (k >> block_shift())
   };
 
   // Uploads (the GL context must be current). Throws std::invalid_argument when a segment's

@@ -104,6 +104,7 @@ void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
   for (const TrackBuffer::Range& range : buffer.segments()) {
     if (range.count <= 0) continue;
     program.set_int("u_first", range.first);
+    program.set_int("u_first_block", range.first_block);
     program.set_int("u_last", range.first + range.count - 1);
     const std::int32_t capsules = std::max(range.count - 1, 1);
     for (std::int32_t done = 0; done < capsules; done += kCapsulesPerDraw) {

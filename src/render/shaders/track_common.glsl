@@ -13,6 +13,7 @@ uniform float u_min_width_px;    // a tube is never thinner on screen than this
 uniform float u_pixel_angle;     // the camera's pixel size per metre of view depth
 uniform vec3 u_camera_forward;   // unit, ECEF: the camera's view axis
 uniform int u_block_shift;       // log2 of the points per block origin (TrackBuffer::block_shift)
+uniform int u_first_block;       // the segment's first block (TrackBuffer::Range::first_block)
 
 const float kMissingValueBelow = -1.0e38;  // track_buffer.cpp stores -3e38 for "no value"
 
@@ -22,7 +23,7 @@ vec4 fetch_texel(highp sampler2D texture_2d, int index) {
 }
 
 vec3 track_point(int index) {
-  return fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, index >> u_block_shift).xyz;
+  return fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, u_first_block + ((index - u_first) >> u_block_shift)).xyz;
 }
 
 float track_value(int index) { return fetch_texel(u_points, index).w; }
