@@ -189,7 +189,9 @@ void draw_profile_chart(ViewerModel& model) {
   const auto y_px = [&](double y) {
     return bottom - static_cast<float>((y - extent->y_min) / (extent->y_max - extent->y_min)) * plot_h;
   };
-  const auto x_px = [&](std::size_t i) { return pixel_at_x(chart_x(t, settings.chart_axis, i), left, plot_w, *extent); };
+  const auto x_px = [&](std::size_t i) {
+    return pixel_at_x(chart_x(t, settings.chart_axis, i), left, plot_w, *extent);
+  };
 
   // Axis labels: altitude at the ends, distance (km) or time (h:mm) at the ends.
   draw->AddText(ImVec2(origin.x, top), IM_COL32(200, 200, 200, 255), fmt::format("{:.0f} m", extent->y_max).c_str());

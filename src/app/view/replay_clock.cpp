@@ -24,8 +24,10 @@ TrackPosition position_at(const ViewerTrack& t, double time) {
   for (std::size_t i = 0; i < n; ++i) {
     const double ti = t.time_unix_s[i];
     if (std::isnan(ti)) continue;
-    if (ti <= time) before = i;
-    else if (before) break;
+    if (ti <= time)
+      before = i;
+    else if (before)
+      break;
   }
   if (!before) {
     for (std::size_t i = 0; i < n; ++i)

@@ -36,11 +36,11 @@ namespace trailray::app::view {
 // One loaded track (or route) and everything the viewer shows of it. Per-point vectors are
 // parallel (flat point index); NaN where a point has no such value.
 struct ViewerTrack {
-  std::string name;    // as `render` names it (track name, else file name and number)
-  std::string source;  // the file it came from
-  track::Track cleaned;          // after clean_track (what is drawn and measured)
-  track::TrackMetrics metrics;   // compute_metrics(cleaned)
-  track::TrackSummary summary;   // raw and clean statistics, as `trailray stats` prints them
+  std::string name;                        // as `render` names it (track name, else file name and number)
+  std::string source;                      // the file it came from
+  track::Track cleaned;                    // after clean_track (what is drawn and measured)
+  track::TrackMetrics metrics;             // compute_metrics(cleaned)
+  track::TrackSummary summary;             // raw and clean statistics, as `trailray stats` prints them
   std::vector<std::size_t> segment_first;  // flat index of each non-empty segment's first point
 
   std::vector<double> distance_m;      // cumulative 2D distance from the start (gaps add nothing)
@@ -110,9 +110,9 @@ std::vector<std::string> tooltip_lines(const ViewerTrack& track, std::size_t poi
 // ---------------------------------------------------------------------------------------------
 
 struct HoverState {
-  int track = -1;          // -1: nothing hovered
-  std::size_t point = 0;   // flat point index
-  bool from_chart = false; // true: the chart set it (the 3D view marks the point); false: the 3D view
+  int track = -1;           // -1: nothing hovered
+  std::size_t point = 0;    // flat point index
+  bool from_chart = false;  // true: the chart set it (the 3D view marks the point); false: the 3D view
 };
 
 // A drag-selected range on the profile chart (flat point indices, inclusive).
@@ -147,8 +147,8 @@ struct ViewerSettings {
 
   // Which windows are open.
   bool show_menu = true;  // the main menu bar that reopens closed windows
-  bool show_tracks = true, show_statistics = true, show_shading = false, show_occlusion = false,
-       show_profiler = false, show_chart = true, show_replay = true;
+  bool show_tracks = true, show_statistics = true, show_shading = false, show_occlusion = false, show_profiler = false,
+       show_chart = true, show_replay = true;
 };
 
 // Settings from the command line's track style (the viewer starts as `render` would draw).
@@ -159,8 +159,7 @@ ViewerSettings settings_from_style(const TrackStyle& style);
 std::optional<track::ValueRange> effective_range(const std::vector<ViewerTrack>& tracks,
                                                  const ViewerSettings& settings);
 // What the renderer's track pass needs from the settings (range from effective_range).
-render::TrackSceneSettings track_scene_settings(const std::vector<ViewerTrack>& tracks,
-                                                const ViewerSettings& settings);
+render::TrackSceneSettings track_scene_settings(const std::vector<ViewerTrack>& tracks, const ViewerSettings& settings);
 
 // ---------------------------------------------------------------------------------------------
 
@@ -170,8 +169,8 @@ enum class FollowMode { off, chase, orbit };
 // way), or on a point (fraction 0). Before the track's start it waits at its first timed point,
 // after its end at its last; across a segment gap it waits at the gap's start (never bridged).
 struct TrackPosition {
-  bool valid = false;    // false: the track has no timed point
-  bool active = false;   // the time lies within the track's start..end
+  bool valid = false;     // false: the track has no timed point
+  bool active = false;    // the time lies within the track's start..end
   std::size_t point = 0;  // flat index
   double fraction = 0.0;
   glm::dvec3 ecef{0.0};
@@ -201,9 +200,9 @@ class ReplayClock {
   void play();  // at the end: starts over
   void pause() { playing_ = false; }
   void toggle() { playing_ ? pause() : play(); }
-  void set_speed(double speed);    // clamped to kMinSpeed..kMaxSpeed
-  void seek(double time_unix_s);   // clamped to the span
-  void seek_fraction(double f);    // 0..1
+  void set_speed(double speed);       // clamped to kMinSpeed..kMaxSpeed
+  void seek(double time_unix_s);      // clamped to the span
+  void seek_fraction(double f);       // 0..1
   void advance(double wall_seconds);  // moves the time when playing
 
   FollowMode follow = FollowMode::off;

@@ -1,8 +1,8 @@
 // The viewer's ImGui windows: track list, statistics, shading, occlusion, profiler, profile chart,
 // replay and errors. Each edits the model in place; draw_panels calls the open ones.
 #include <fmt/format.h>
-#include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -52,8 +52,8 @@ void colour_scale_controls(ViewerModel& model) {
       s.color_by = static_cast<track::ColorMetric>(metric);
       s.range.reset();  // another metric's range means nothing for this one
     } catch (const std::exception& e) {
-      model.errors.push_back(fmt::format("colour by {}: {}", track::color_metric_name(static_cast<track::ColorMetric>(metric)),
-                                         e.what()));
+      model.errors.push_back(
+          fmt::format("colour by {}: {}", track::color_metric_name(static_cast<track::ColorMetric>(metric)), e.what()));
       apply_color_metric(model.tracks, previous);
     }
   }
@@ -165,11 +165,10 @@ void shading_window(ViewerModel& model) {
   if (std::isnan(s.sun_time_unix)) {
     // The shell chooses the sun until the user moves it: start the slider from the tracks' time.
     const auto span = common_time_span(model.tracks);
-    s.sun_time_unix =
-        span ? span->start
-             : static_cast<double>(std::chrono::duration_cast<std::chrono::seconds>(
-                                       std::chrono::system_clock::now().time_since_epoch())
-                                       .count());
+    s.sun_time_unix = span ? span->start
+                           : static_cast<double>(std::chrono::duration_cast<std::chrono::seconds>(
+                                                     std::chrono::system_clock::now().time_since_epoch())
+                                                     .count());
   }
   const double day_start = std::floor(s.sun_time_unix / 86400.0) * 86400.0;
   float hours = static_cast<float>((s.sun_time_unix - day_start) / 3600.0);

@@ -120,7 +120,8 @@ std::vector<ViewerTrack> build_viewer_tracks(const std::vector<LoadedTrackFile>&
       }
       fill_point_arrays(t, ground);
       t.geometry = std::move(drawn.geometry);
-      for (const auto& line : t.geometry.segments) t.ecef.insert(t.ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
+      for (const auto& line : t.geometry.segments)
+        t.ecef.insert(t.ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
       if (t.ecef.size() != t.point_count())
         throw std::logic_error(fmt::format("build_viewer_tracks: track '{}' drawn with {} points, measured with {}",
                                            t.name, t.ecef.size(), t.point_count()));
