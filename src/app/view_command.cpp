@@ -69,8 +69,9 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "Files dropped on the window are opened. Needs a display (X11, Wayland, or xvfb-run).\n"
       "Scripted: --frames N renders N frames and prints the frame times; --script FILE runs commands\n"
       "(orbit DX DY, pan DX DY, zoom STEPS, select TRACK, hover X Y, print-hover, print-marker,\n"
-      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH); --screenshot OUT.png\n"
-      "writes the picture at the end and exits.\n"
+      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH, window-screenshot PATH);\n"
+      "--screenshot OUT.png"
+      " writes the picture at the end and exits.\n"
       "Exit status: 0 done, 1 a file, source, script or GL failed, 2 a usage error.");
   cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to show (the view frames them)")->type_name("FILE");
   cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");

@@ -4,6 +4,9 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <cfloat>
+#include <cmath>
+
 #include "render/embedded_fonts.hpp"
 
 namespace trailray::render {
@@ -18,8 +21,12 @@ ImGuiLayer::ImGuiLayer(Window& window, float font_px) {
   ImFontConfig config;
   config.FontDataOwnedByAtlas = false;
   const auto font = detail::dejavu_sans_font();
+  // Latin (track names such as "Zürich", "Škofja Loka"), Greek, Cyrillic, and the punctuation and
+  // symbols the panels print (the em dash of a missing value, arrows, the degree sign).
+  static constexpr ImWchar kRanges[] = {0x0020, 0x024F, 0x0370, 0x03FF, 0x0400, 0x04FF,
+                                        0x2000, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
   io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data()), static_cast<int>(font.size()), font_px,
-                                 &config, io.Fonts->GetGlyphRangesDefault());
+                                 &config, kRanges);
   if (!ImGui_ImplGlfw_InitForOpenGL(window.handle(), true)) {
     ImGui::DestroyContext();
     throw RenderError("ImGui: the GLFW backend did not start");
@@ -37,9 +44,18 @@ ImGuiLayer::~ImGuiLayer() {
   ImGui::DestroyContext();
 }
 
-void ImGuiLayer::begin_frame() {
+void ImGuiLayer::begin_frame(std::optional<std::array<float, 2>> scripted_cursor) {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  if (scripted_cursor) {
+    // Scripts must not depend on where the display's pointer happens to be (Xvfb's starts at the
+    // screen's centre, which can lie over a panel).
+    ImGuiIO& io = ImGui::GetIO();
+    const bool nowhere = std::isnan((*scripted_cursor)[0]);
+    io.MousePos = nowhere ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2((*scripted_cursor)[0], (*scripted_cursor)[1]);
+    for (bool& down : io.MouseDown) down = false;
+    io.MouseWheel = io.MouseWheelH = 0.0f;
+  }
   ImGui::NewFrame();
 }
 

@@ -5,6 +5,9 @@
 // every machine. One layer per window; the caller draws widgets between begin_frame and
 // render.
 
+#include <array>
+#include <optional>
+
 #include "render/window.hpp"
 
 namespace trailray::render {
@@ -17,7 +20,9 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  void begin_frame();  // the backends' NewFrame, then ImGui::NewFrame
+  // The backends' NewFrame, then ImGui::NewFrame. With `scripted_cursor`, the mouse is not the
+  // real one: it is there (window pixels), or nowhere when its x is NaN, with no button down.
+  void begin_frame(std::optional<std::array<float, 2>> scripted_cursor = std::nullopt);
   // ImGui::Render and the draw lists into the framebuffer bound now (the window's, 0).
   void render();
   // Whether ImGui wants the mouse / keyboard this frame (the camera must not take them then).

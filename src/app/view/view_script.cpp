@@ -33,6 +33,8 @@ constexpr Syntax kSyntax[] = {
     {"speed", Kind::speed, 1, true, "speed X"},
     {"wait", Kind::wait, 1, true, "wait FRAMES"},
     {"screenshot", Kind::screenshot, -1, false, "screenshot PATH"},
+    {"window-screenshot", Kind::window_screenshot, -1, false, "window-screenshot PATH"},
+    {"hide-panels", Kind::hide_panels, 0, false, "hide-panels"},
 };
 
 std::vector<std::string_view> words(std::string_view line) {
@@ -70,7 +72,7 @@ ViewScript parse_view_script(std::string_view text, const std::string& file) {
       if (s.name == w[0]) syntax = &s;
     if (syntax == nullptr)
       fail(fmt::format("unknown command '{}' (orbit, pan, zoom, select, hover, print-hover, print-marker, "
-                       "print-camera, play, speed, wait, screenshot)",
+                       "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels)",
                        w[0]));
     ScriptCommand c;
     c.kind = syntax->kind;

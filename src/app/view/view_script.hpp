@@ -14,6 +14,8 @@
 //   speed X           the replay's speed (1..1000 times real time)
 //   wait FRAMES       renders FRAMES frames
 //   screenshot PATH   waits for the view's tiles, then writes the picture (as `render` would)
+//   window-screenshot PATH  the window as shown, panels included (after the next frame)
+//   hide-panels       draws the 3D view alone from now on (no panels, markers or tooltip)
 //
 // Errors name the file and the line: "view.txt:3: orbit expects two numbers, got 'left'".
 
@@ -30,7 +32,7 @@ class ScriptError : public std::runtime_error {
 };
 
 struct ScriptCommand {
-  enum class Kind { orbit, pan, zoom, select, hover, print_hover, print_marker, print_camera, play, speed, wait, screenshot };
+  enum class Kind { orbit, pan, zoom, select, hover, print_hover, print_marker, print_camera, play, speed, wait, screenshot, window_screenshot, hide_panels };
   Kind kind = Kind::wait;
   double x = 0.0, y = 0.0;  // the numbers (one or two)
   std::string path;         // screenshot

@@ -64,7 +64,8 @@ class ViewerApp {
   render::SceneRenderOptions scene_options() const;
   void update_hover(double x_px, double y_px, const render::Camera& camera);
   void fly_to_track(int index);
-  void screenshot(const std::string& path);
+  // `status`: say so in the window too (the P key; not scripted pictures).
+  void screenshot(const std::string& path, bool status = false);
   void run_script(const ViewScript& script);
   double sun_unix_time() const;
 
@@ -85,6 +86,8 @@ class ViewerApp {
   terrain::LoadProgress progress_;
   std::string status_;  // a line at the bottom (screenshot written, ...)
   std::optional<glm::dvec2> script_cursor_;  // `hover X Y`
+  bool panels_ = true;                       // false: `hide-panels`
+  std::string window_grab_;                  // `window-screenshot PATH`: after the next frame's UI
 };
 
 render::WindowOptions window_options(const ViewerOptions& o) {
@@ -276,7 +279,7 @@ void ViewerApp::handle_keys(double wall_s) {
     char name[64];
     const std::time_t now = std::time(nullptr);
     std::strftime(name, sizeof name, "trailray-%Y%m%d-%H%M%S.png", std::localtime(&now));
-    screenshot(name);
+    screenshot(name, true);
   }
 }
 
@@ -284,21 +287,30 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   window_.poll_events();
   take_dropped_files();
   const std::uint32_t width = window_.framebuffer_width(), height = window_.framebuffer_height();
-  imgui_.begin_frame();
+  std::optional<std::array<float, 2>> cursor;
+  if (scripted) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    cursor = script_cursor_ ? std::array<float, 2>{static_cast<float>(script_cursor_->x) / scale.x,
+                                                   static_cast<float>(script_cursor_->y) / scale.y}
+                            : std::array<float, 2>{nan, nan};
+  }
+  imgui_.begin_frame(cursor);
   if (width > 0 && height > 0) controller_.set_image_size(width, height);
   if (!scripted) {
     handle_mouse(controller_.camera());
     handle_keys(wall_s);
   }
   controller_.update(wall_s);
-  const PanelActions actions = draw_panels(model_, scripted ? 0.0 : wall_s);
+  const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   sync_track_buffers();
   const render::Camera camera = controller_.camera();
   if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
 
-  OverlayState overlay{model_, camera, progress_, status_, controller_.view().heading_deg};
-  if (draw_overlays(overlay)) controller_.reset_north();
+  OverlayState overlay{model_, camera, progress_, status_, controller_.view().heading_deg,
+                       scripted ? script_cursor_ : std::nullopt};
+  if (panels_ && draw_overlays(overlay)) controller_.reset_north();
 
   if (width > 0 && height > 0) {
     render::SceneRenderOptions options = scene_options();
@@ -313,11 +325,17 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
   }
   imgui_.render();
+  if (!window_grab_.empty() && width > 0 && height > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    render::write_srgb_png(window_grab_, render::read_rgba8(0, 0, static_cast<int>(width), static_cast<int>(height)));
+    fmt::print(stderr, "trailray: wrote {} ({}x{}, the window)\n", window_grab_, width, height);
+    window_grab_.clear();
+  }
   window_.swap_buffers();
 }
 
 // A picture as `render` makes it: the scene once its tiles are in, with the legend.
-void ViewerApp::screenshot(const std::string& path) {
+void ViewerApp::screenshot(const std::string& path, bool status) {
   sync_track_buffers();
   render::SceneRenderOptions options = scene_options();
   options.timeout = std::chrono::milliseconds(static_cast<long long>(options_.timeout_s * 1000.0));
@@ -334,8 +352,9 @@ void ViewerApp::screenshot(const std::string& path) {
     if (t.visible) legend_scene.tracks.push_back({t.name, {}, t.color_srgb, 0});
   draw_scene_legend(scene.image, style, legend_scene);
   render::write_srgb_png(path, scene.image);
-  status_ = fmt::format("wrote {} ({}x{})", path, scene.image.width, scene.image.height);
-  fmt::print(stderr, "trailray: {}\n", status_);
+  const std::string wrote = fmt::format("wrote {} ({}x{})", path, scene.image.width, scene.image.height);
+  if (status) status_ = wrote;
+  fmt::print(stderr, "trailray: {}\n", wrote);
 }
 
 void ViewerApp::run_script(const ViewScript& script) {
@@ -397,6 +416,8 @@ void ViewerApp::run_script(const ViewScript& script) {
       case Kind::speed: model_.clock.set_speed(c.x); break;
       case Kind::wait: frames = static_cast<int>(c.x); break;
       case Kind::screenshot: screenshot(c.path); break;
+      case Kind::window_screenshot: window_grab_ = c.path; break;
+      case Kind::hide_panels: panels_ = false; break;
     }
     std::fflush(stdout);
     for (int i = 0; i < frames; ++i) frame(0.0, true);
@@ -430,8 +451,15 @@ int ViewerApp::run() {
       if (progress_.done()) settled_ms.push_back(ms);
     }
     fmt::print(stderr, "trailray: {}\n", frame_time_summary("frames", all_ms));
-    if (!settled_ms.empty() && settled_ms.size() != all_ms.size())
-      fmt::print(stderr, "trailray: {}\n", frame_time_summary("frames with every tile loaded", settled_ms));
+    if (settled_ms.size() != all_ms.size())
+      fmt::print(stderr, "trailray: {}\n",
+                 settled_ms.empty() ? std::string("frames with every tile loaded: none")
+                                    : frame_time_summary("frames with every tile loaded", settled_ms));
+    if (options_.verbose) {
+      // The renderer's share of those frames, per pass (the last 60 frames).
+      profiler_.finish();
+      fmt::print(stderr, "{}", profiler_.table());
+    }
   }
   if (script) run_script(*script);
   if (!options_.screenshot.empty()) screenshot(options_.screenshot);

@@ -41,6 +41,10 @@ void hover(const OverlayState& s, ImDrawList* list) {
   if (const auto px = screen_position(s.camera, t.ecef[h.point]))
     marker(list, to_screen(*px), IM_COL32(20, 20, 20, 255), 4.0f);
   if (h.from_chart) return;
+  if (s.cursor) {
+    const ImVec2 at = to_screen(*s.cursor);
+    ImGui::SetNextWindowPos({at.x + 16.0f, at.y + 8.0f});
+  }
   ImGui::BeginTooltip();
   ImGui::TextUnformatted(t.name.c_str());
   ImGui::Separator();
@@ -62,7 +66,8 @@ void bottom_lines(const OverlayState& s) {
 
 bool compass(double heading_deg) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos({size.x - 10.0f, 30.0f}, ImGuiCond_Always, {1.0f, 0.0f});
+  // Right, under where the replay panel opens (top right).
+  ImGui::SetNextWindowPos({size.x - 10.0f, 215.0f}, ImGuiCond_Always, {1.0f, 0.0f});
   ImGui::SetNextWindowBgAlpha(0.5f);
   bool clicked = false;
   if (ImGui::Begin("##compass", nullptr,

@@ -3,6 +3,9 @@
 // under the cursor, a marker where the profile chart points, the replay markers, the loading
 // indicator, a status line and the compass (click: north up).
 
+#include <glm/glm.hpp>
+
+#include <optional>
 #include <string>
 
 #include "app/view/viewer_model.hpp"
@@ -17,6 +20,7 @@ struct OverlayState {
   const terrain::LoadProgress& progress;
   const std::string& status;
   double heading_deg = 0.0;
+  std::optional<glm::dvec2> cursor;  // a scripted cursor (pixels): the tooltip goes there
 };
 
 // Call between ImGui::NewFrame and ImGui::Render. True when the compass was clicked.
