@@ -189,6 +189,13 @@ void CameraController::move(double right, double forward) {
   keep_above_ground();
 }
 
+void CameraController::follow(const render::GeoPosition& pivot, std::optional<double> heading_deg) {
+  flight_.reset();
+  view_.target = pivot;
+  if (heading_deg && std::isfinite(*heading_deg)) view_.heading_deg = std::fmod(*heading_deg + 360.0, 360.0);
+  keep_above_ground();
+}
+
 void CameraController::reset_north() {
   render::LookAt north = view_;
   north.heading_deg = 0.0;

@@ -58,6 +58,9 @@ class CameraController {
   void tilt(double degrees);
   // Moves the pivot `right` and `forward` (fractions of the distance) in the view's heading.
   void move(double right, double forward);
+  // Replay's camera follow: the pivot jumps to `pivot` (the marker) each frame; with a heading
+  // (chase) the camera also turns to look along it, from behind.
+  void follow(const render::GeoPosition& pivot, std::optional<double> heading_deg = std::nullopt);
   void reset_north();  // an animated turn to heading 0
   void fly_to(const render::LookAt& target);
   bool animating() const { return flight_.has_value(); }

@@ -64,6 +64,7 @@ class ViewerApp {
   render::SceneRenderOptions scene_options() const;
   void update_hover(double x_px, double y_px, const render::Camera& camera);
   void fly_to_track(int index);
+  void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
   // `status`: say so in the window too (the P key; not scripted pictures).
   void screenshot(const std::string& path, bool status = false);
   void run_script(const ViewScript& script);
@@ -235,6 +236,27 @@ void ViewerApp::fly_to_track(int index) {
   controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
 }
 
+void ViewerApp::follow_replay() {
+  const ReplayClock& clock = model_.clock;
+  if (clock.follow == FollowMode::off || clock.follow_track < 0 ||
+      clock.follow_track >= static_cast<int>(model_.tracks.size()))
+    return;
+  const ViewerTrack& t = model_.tracks[static_cast<std::size_t>(clock.follow_track)];
+  const TrackPosition p = position_at(t, clock.time());
+  if (!p.valid) return;
+  render::GeoPosition at;
+  GeographicLib::Geocentric::WGS84().Reverse(p.ecef.x, p.ecef.y, p.ecef.z, at.lat_deg, at.lon_deg, at.height_m);
+  std::optional<double> heading;
+  if (clock.follow == FollowMode::chase && p.point + 1 < t.ecef.size()) {
+    // Look along the way the track goes from here (the segment the marker is on).
+    const render::EnuAxes enu = render::enu_axes_at(at.lat_deg, at.lon_deg);
+    const glm::dvec3 d = t.ecef[p.point + 1] - t.ecef[p.point];
+    const double east = glm::dot(d, enu.east), north = glm::dot(d, enu.north);
+    if (std::hypot(east, north) > 0.1) heading = std::atan2(east, north) * 180.0 / 3.14159265358979323846;
+  }
+  controller_.follow(at, heading);
+}
+
 void ViewerApp::handle_mouse(const render::Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
   if (imgui_.wants_mouse()) return;
@@ -302,6 +324,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     handle_keys(wall_s);
   }
   controller_.update(wall_s);
+  follow_replay();
   const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   sync_track_buffers();

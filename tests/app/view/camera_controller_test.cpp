@@ -143,3 +143,23 @@ TEST(CameraController, KeysMoveThePivotAlongTheHeading) {
 
 }  // namespace
 }  // namespace trailray::app::view
+
+namespace trailray::app::view {
+namespace {
+
+TEST(CameraController, FollowingMovesThePivotAndChaseTurnsTheHeading) {
+  CameraController c(start_view(), kLens, flat_ground);
+  const render::GeoPosition marker{kLat + 0.01, kLon, 1500.0};
+  c.follow(marker);
+  EXPECT_DOUBLE_EQ(c.view().target.lat_deg, kLat + 0.01);
+  EXPECT_DOUBLE_EQ(c.view().target.height_m, 1500.0);
+  EXPECT_NEAR(c.view().heading_deg, 30.0, 1e-9);  // orbit: the heading stays
+  c.follow(marker, -90.0);                         // chase: look west, along the track
+  EXPECT_NEAR(c.view().heading_deg, 270.0, 1e-9);
+  const glm::dvec2 centre = pixel_of(c, marker);
+  EXPECT_NEAR(centre.x, kLens.width_px / 2.0, 0.5);  // the marker in the middle of the view
+  EXPECT_NEAR(centre.y, kLens.height_px / 2.0, 0.5);
+}
+
+}  // namespace
+}  // namespace trailray::app::view
