@@ -53,6 +53,20 @@ TEST(ViewScript, ErrorsNameTheFileAndTheLine) {
   expect_error("zoom 1e999\n", "view.txt:1:", "not a number");
 }
 
+TEST(ViewScript, WindowPicturesAndPanelsHaveTheirCommands) {
+  const ViewScript s =
+      parse_view_script("window-screenshot w.png\nhide-panels\nspeed 100\nprint-marker\nprint-camera\n", "s.txt");
+  ASSERT_EQ(s.commands.size(), 5u);
+  EXPECT_EQ(s.commands[0].kind, Kind::window_screenshot);
+  EXPECT_EQ(s.commands[0].path, "w.png");
+  EXPECT_EQ(s.commands[1].kind, Kind::hide_panels);
+  EXPECT_EQ(s.commands[2].kind, Kind::speed);
+  EXPECT_EQ(s.commands[2].x, 100.0);
+  EXPECT_EQ(s.commands[3].kind, Kind::print_marker);
+  EXPECT_EQ(s.commands[4].kind, Kind::print_camera);
+  expect_error("hide-panels now\n", "view.txt:1:", "hide-panels");
+}
+
 TEST(ViewScript, AMissingFileIsNamed) {
   try {
     load_view_script("/nonexistent/script.txt");
