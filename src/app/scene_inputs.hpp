@@ -70,7 +70,7 @@ double lowest_height(const std::vector<render::GeoPosition>& points);
 double sun_time(const std::string& time_text, const TrackPoints& tracks);
 
 struct TerrainSources {
-  std::unique_ptr<terrain::HeightSource> heights;    // nullptr: --terrain none
+  std::unique_ptr<terrain::HeightSource> heights;   // nullptr: --terrain none
   std::unique_ptr<terrain::ImagerySource> imagery;  // nullptr: the hypsometric tint
 };
 // The sources of --terrain/--imagery, the configuration file and the defaults. Throws

@@ -23,8 +23,8 @@ ImGuiLayer::ImGuiLayer(Window& window, float font_px) {
   const auto font = detail::dejavu_sans_font();
   // Latin (track names such as "Zürich", "Škofja Loka"), Greek, Cyrillic, and the punctuation and
   // symbols the panels print (the em dash of a missing value, arrows, the degree sign).
-  static constexpr ImWchar kRanges[] = {0x0020, 0x024F, 0x0370, 0x03FF, 0x0400, 0x04FF,
-                                        0x2000, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  static constexpr ImWchar kRanges[] = {0x0020, 0x024F, 0x0370, 0x03FF, 0x0400, 0x04FF, 0x2000,
+                                        0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
   io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data()), static_cast<int>(font.size()), font_px,
                                  &config, kRanges);
   if (!ImGui_ImplGlfw_InitForOpenGL(window.handle(), true)) {

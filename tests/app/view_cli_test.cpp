@@ -91,9 +91,7 @@ bool red_near(const Picture& picture, double x, double y, int radius) {
   return false;
 }
 
-CommandResult run_view(const ViewEnv& env, const std::string& args) {
-  return run_command(env.view() + args + " 2>&1");
-}
+CommandResult run_view(const ViewEnv& env, const std::string& args) { return run_command(env.view() + args + " 2>&1"); }
 
 TEST(ViewCli, TheWindowShowsTheTrackWhereItsPointsProject) {
   ViewEnv env;
@@ -122,8 +120,8 @@ TEST(ViewCli, TheWindowShowsTheTrackWhereItsPointsProject) {
 TEST(ViewCli, AScriptedDragChangesTheView) {
   ViewEnv env;
   const std::string before = env.file("before.png"), after = env.file("after.png");
-  const std::string script = env.script("drag.txt", "print-camera\nscreenshot " + before +
-                                                        "\norbit 120 -20\nprint-camera\nscreenshot " + after + "\n");
+  const std::string script = env.script(
+      "drag.txt", "print-camera\nscreenshot " + before + "\norbit 120 -20\nprint-camera\nscreenshot " + after + "\n");
   const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(script));
   ASSERT_EQ(r.status, 0) << r.out;
   // Heading turns by 120 px * 0.25 degrees, the pitch rises by 20 * 0.25.
@@ -149,8 +147,9 @@ TEST(ViewCli, HoveringAKnownTrackPointPrintsItsValues) {
   const std::size_t target = 60;
   const auto at = camera.project(render::ecef_from({points[target].lat, points[target].lon, points[target].ele}));
   ASSERT_TRUE(at.has_value());
-  const std::string script = env.script(
-      "hover.txt", "hover " + std::to_string(at->x_px) + " " + std::to_string(at->y_px) + "\nprint-hover\nhover 2 2\nprint-hover\n");
+  const std::string script =
+      env.script("hover.txt", "hover " + std::to_string(at->x_px) + " " + std::to_string(at->y_px) +
+                                  "\nprint-hover\nhover 2 2\nprint-hover\n");
   const auto r = run_view(env, shell_quote(env.hike()) + kWindow + " --script " + shell_quote(script));
   ASSERT_EQ(r.status, 0) << r.out;
   std::smatch m;
@@ -158,7 +157,8 @@ TEST(ViewCli, HoveringAKnownTrackPointPrintsItsValues) {
   const std::size_t point = std::stoul(m[1]);
   EXPECT_LE(point > target ? point - target : target - point, 1u) << "picked the point under the cursor";
   // Its own values: time, altitude, heart rate of that point of the file.
-  EXPECT_NE(r.out.find("time: " + iso8601(kT0 + 10.0 * static_cast<double>(point)).replace(10, 1, " ").substr(0, 19) + " UTC"),
+  EXPECT_NE(r.out.find("time: " + iso8601(kT0 + 10.0 * static_cast<double>(point)).replace(10, 1, " ").substr(0, 19) +
+                       " UTC"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("altitude: " + std::to_string(1000 + 2 * point) + " m"), std::string::npos) << r.out;
@@ -182,18 +182,20 @@ TEST(ViewCli, ReplayMovesTheMarker) {
   EXPECT_NEAR(std::get<0>(markers[1]), 5, 1);  // on point 5, or at the end of the segment before it
   EXPECT_NEAR(std::get<0>(markers[2]), 25, 1);
   // On screen it moves east along the track (to the right in this framing), never back.
-  EXPECT_GT(std::hypot(std::get<1>(markers[1]) - std::get<1>(markers[0]), std::get<2>(markers[1]) - std::get<2>(markers[0])),
-            5.0);
-  EXPECT_GT(std::hypot(std::get<1>(markers[2]) - std::get<1>(markers[1]), std::get<2>(markers[2]) - std::get<2>(markers[1])),
-            20.0);
+  EXPECT_GT(
+      std::hypot(std::get<1>(markers[1]) - std::get<1>(markers[0]), std::get<2>(markers[1]) - std::get<2>(markers[0])),
+      5.0);
+  EXPECT_GT(
+      std::hypot(std::get<1>(markers[2]) - std::get<1>(markers[1]), std::get<2>(markers[2]) - std::get<2>(markers[1])),
+      20.0);
 }
 
 TEST(ViewCli, AFileThatCannotBeReadIsReportedAndTheOthersStay) {
   ViewEnv env;
   const std::string broken = env.script("broken.gpx", "<gpx><trk><trkseg><trkpt lat=\"x\"");
   const std::string out = env.file("view.png");
-  const auto r = run_view(env, shell_quote(env.hike()) + " " + shell_quote(broken) + kWindow + " --screenshot " +
-                                   shell_quote(out));
+  const auto r = run_view(
+      env, shell_quote(env.hike()) + " " + shell_quote(broken) + kWindow + " --screenshot " + shell_quote(out));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("broken.gpx"), std::string::npos) << r.out;
   EXPECT_GT(count_red(read_picture(out)), 500u);
@@ -215,8 +217,8 @@ TEST(ViewCli, WithoutADisplayItSaysHowToGetOne) {
   ViewEnv env;
   std::string command = env.prefix();
   command.replace(command.find(" render "), 8, " view ");
-  const auto r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + command + shell_quote(env.hike()) +
-                             " --terrain none 2>&1");
+  const auto r =
+      run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + command + shell_quote(env.hike()) + " --terrain none 2>&1");
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("no display"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("xvfb-run"), std::string::npos) << r.out;

@@ -82,7 +82,7 @@ TEST_F(SceneStreamingTest, TilesArrivingBetweenFramesAreDrawnByLaterFrames) {
 TEST_F(SceneStreamingTest, HeightsInMemoryComeFromLoadedTilesOnly) {
   GatedSource source;
   SceneRenderer renderer({&source, nullptr});
-  const double east_deg = 1500.0 / (111320.0 * std::cos(kLat * M_PI / 180.0));  // 1.5 km east
+  const double east_deg = 1500.0 / (111320.0 * std::cos(kLat * M_PI / 180.0));       // 1.5 km east
   EXPECT_TRUE(std::isnan(renderer.height_in_memory(kLat + 0.01, kLon + east_deg)));  // nothing loaded
   source.open = true;
   SceneRenderOptions options = viewer_options();

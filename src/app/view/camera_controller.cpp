@@ -128,8 +128,8 @@ void CameraController::orbit(double dx_px, double dy_px) {
   view_.heading_deg = std::fmod(view_.heading_deg - dx_px * controls_.orbit_deg_per_px + 360.0, 360.0);
   if (view_.heading_deg < 0.0) view_.heading_deg += 360.0;
   // Dragging down lifts the camera over the pivot (looks more steeply down).
-  view_.pitch_deg =
-      std::clamp(view_.pitch_deg - dy_px * controls_.orbit_deg_per_px, controls_.min_pitch_deg, controls_.max_pitch_deg);
+  view_.pitch_deg = std::clamp(view_.pitch_deg - dy_px * controls_.orbit_deg_per_px, controls_.min_pitch_deg,
+                               controls_.max_pitch_deg);
   keep_above_ground();
 }
 
@@ -242,8 +242,7 @@ void CameraController::keep_above_ground() {
     const glm::dvec3 target = ecef(view_.target);
     const render::EnuAxes enu = render::enu_axes_at(view_.target.lat_deg, view_.target.lon_deg);
     const double h = view_.heading_deg * kRad, p = view_.pitch_deg * kRad;
-    const glm::dvec3 forward =
-        std::cos(p) * (std::cos(h) * enu.north + std::sin(h) * enu.east) + std::sin(p) * enu.up;
+    const glm::dvec3 forward = std::cos(p) * (std::cos(h) * enu.north + std::sin(h) * enu.east) + std::sin(p) * enu.up;
     const render::GeoPosition at = geodetic(target - view_.distance_m * forward);
     double g = ground_at(at.lat_deg, at.lon_deg);
     if (std::isnan(g)) g = view_.target.height_m;  // unknown ground: the pivot's height

@@ -29,8 +29,7 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
   // Per-track --color counts the command line's tracks; later files take the palette.
   if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
   try {
-    out.tracks = build_viewer_tracks(out.points.files, style,
-                                     {inputs.heights, neutral, inputs.analysis}, warn);
+    out.tracks = build_viewer_tracks(out.points.files, style, {inputs.heights, neutral, inputs.analysis}, warn);
   } catch (const std::exception& e) {
     out.errors.emplace_back(e.what());
     out.tracks.clear();
@@ -43,8 +42,9 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
 }
 
 std::future<LoadedViewerTracks> load_viewer_tracks_async(std::vector<std::string> paths, TrackLoadInputs inputs) {
-  return std::async(std::launch::async,
-                    [paths = std::move(paths), inputs = std::move(inputs)] { return load_viewer_tracks(paths, inputs); });
+  return std::async(std::launch::async, [paths = std::move(paths), inputs = std::move(inputs)] {
+    return load_viewer_tracks(paths, inputs);
+  });
 }
 
 }  // namespace trailray::app::view

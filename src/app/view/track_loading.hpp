@@ -24,7 +24,7 @@ struct TrackLoadInputs {
   track::AnalysisOptions analysis;
   TrackStyle style;
   terrain::HeightSource* heights = nullptr;  // ground heights under the points (may load tiles)
-  double neutral_ground_m = 0.0;  // NaN: the lowest point of the files read
+  double neutral_ground_m = 0.0;             // NaN: the lowest point of the files read
   // Tracks already open: a new file continues the palette after them and, when --color gave
   // one colour per track, gets the palette's colour.
   std::size_t tracks_open = 0;

@@ -15,7 +15,7 @@ using Kind = ScriptCommand::Kind;
 struct Syntax {
   std::string_view name;
   Kind kind;
-  int numbers;     // how many numbers follow (-1: one path)
+  int numbers;  // how many numbers follow (-1: one path)
   bool non_negative;
   std::string_view usage;
 };
@@ -71,9 +71,10 @@ ViewScript parse_view_script(std::string_view text, const std::string& file) {
     for (const Syntax& s : kSyntax)
       if (s.name == w[0]) syntax = &s;
     if (syntax == nullptr)
-      fail(fmt::format("unknown command '{}' (orbit, pan, zoom, select, hover, print-hover, print-marker, "
-                       "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels)",
-                       w[0]));
+      fail(
+          fmt::format("unknown command '{}' (orbit, pan, zoom, select, hover, print-hover, print-marker, "
+                      "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels)",
+                      w[0]));
     ScriptCommand c;
     c.kind = syntax->kind;
     c.line = number;

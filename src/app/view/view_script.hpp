@@ -32,7 +32,22 @@ class ScriptError : public std::runtime_error {
 };
 
 struct ScriptCommand {
-  enum class Kind { orbit, pan, zoom, select, hover, print_hover, print_marker, print_camera, play, speed, wait, screenshot, window_screenshot, hide_panels };
+  enum class Kind {
+    orbit,
+    pan,
+    zoom,
+    select,
+    hover,
+    print_hover,
+    print_marker,
+    print_camera,
+    play,
+    speed,
+    wait,
+    screenshot,
+    window_screenshot,
+    hide_panels
+  };
   Kind kind = Kind::wait;
   double x = 0.0, y = 0.0;  // the numbers (one or two)
   std::string path;         // screenshot

@@ -1,16 +1,16 @@
 #include "app/view/viewer_app.hpp"
 
 #include <GLFW/glfw3.h>
-#include <GeographicLib/Geocentric.hpp>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <GeographicLib/Geocentric.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <limits>
 #include <future>
+#include <limits>
 #include <memory>
 #include <numeric>
 
@@ -85,7 +85,7 @@ class ViewerApp {
   CameraController controller_;
   std::vector<std::future<LoadedViewerTracks>> loading_;
   terrain::LoadProgress progress_;
-  std::string status_;  // a line at the bottom (screenshot written, ...)
+  std::string status_;                       // a line at the bottom (screenshot written, ...)
   std::optional<glm::dvec2> script_cursor_;  // `hover X Y`
   bool panels_ = true;                       // false: `hide-panels`
   std::string window_grab_;                  // `window-screenshot PATH`: after the next frame's UI
@@ -130,7 +130,8 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   if (o.verbose)
     for (const std::string& line : window_.describe()) fmt::print(stderr, "trailray: {}\n", line);
   // Tracks are read before the first frame (like `render`); later files load in the background.
-  LoadedViewerTracks first = load_viewer_tracks(o.tracks, load_inputs(o, sources_.heights.get(), std::numeric_limits<double>::quiet_NaN()));
+  LoadedViewerTracks first =
+      load_viewer_tracks(o.tracks, load_inputs(o, sources_.heights.get(), std::numeric_limits<double>::quiet_NaN()));
   const double lowest = lowest_height(first.points.points);
   neutral_ = std::isnan(lowest) ? 0.0 : lowest;
   points_ = first.points;
@@ -230,7 +231,8 @@ void ViewerApp::fly_to_track(int index) {
   framing.preferred_heading_deg = controller_.view().heading_deg;
   const auto framed = render::frame_points(points, framing);
   if (!framed.ok()) return;
-  double ground = renderer_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
+  double ground =
+      renderer_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
   if (std::isnan(ground)) ground = lowest_height(points);
   if (std::isnan(ground)) ground = neutral_;
   controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
@@ -261,7 +263,8 @@ void ViewerApp::handle_mouse(const render::Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
   if (imgui_.wants_mouse()) return;
   const double x = io.MousePos.x * io.DisplayFramebufferScale.x, y = io.MousePos.y * io.DisplayFramebufferScale.y;
-  const glm::dvec2 delta(io.MouseDelta.x * io.DisplayFramebufferScale.x, io.MouseDelta.y * io.DisplayFramebufferScale.y);
+  const glm::dvec2 delta(io.MouseDelta.x * io.DisplayFramebufferScale.x,
+                         io.MouseDelta.y * io.DisplayFramebufferScale.y);
   if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     if (const auto ground = controller_.ground_point_at(x, y)) {
       render::LookAt to = controller_.view();
@@ -331,8 +334,8 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   const render::Camera camera = controller_.camera();
   if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
 
-  OverlayState overlay{model_, camera, progress_, status_, controller_.view().heading_deg,
-                       scripted ? script_cursor_ : std::nullopt};
+  OverlayState overlay{
+      model_, camera, progress_, status_, controller_.view().heading_deg, scripted ? script_cursor_ : std::nullopt};
   if (panels_ && draw_overlays(overlay)) controller_.reset_north();
 
   if (width > 0 && height > 0) {
@@ -389,9 +392,15 @@ void ViewerApp::run_script(const ViewScript& script) {
     };
     int frames = 1;
     switch (c.kind) {
-      case Kind::orbit: controller_.orbit(c.x, c.y); break;
-      case Kind::pan: controller_.pan(centre.x, centre.y, centre.x + c.x, centre.y + c.y); break;
-      case Kind::zoom: controller_.zoom(c.x, centre.x, centre.y); break;
+      case Kind::orbit:
+        controller_.orbit(c.x, c.y);
+        break;
+      case Kind::pan:
+        controller_.pan(centre.x, centre.y, centre.x + c.x, centre.y + c.y);
+        break;
+      case Kind::zoom:
+        controller_.zoom(c.x, centre.x, centre.y);
+        break;
       case Kind::select:
         if (c.x >= static_cast<double>(model_.tracks.size()) || c.x != std::floor(c.x))
           fail(fmt::format("select {}: there {} {} track{} (0..{})", c.x, model_.tracks.size() == 1 ? "is" : "are",
@@ -401,7 +410,9 @@ void ViewerApp::run_script(const ViewScript& script) {
         fly_to_track(model_.selected_track);
         controller_.update(1e9);  // scripted flights arrive at once
         break;
-      case Kind::hover: script_cursor_ = glm::dvec2(c.x, c.y); break;
+      case Kind::hover:
+        script_cursor_ = glm::dvec2(c.x, c.y);
+        break;
       case Kind::print_hover: {
         const HoverState& h = model_.hover;
         if (h.track < 0) {
@@ -427,8 +438,8 @@ void ViewerApp::run_script(const ViewScript& script) {
       }
       case Kind::print_camera: {
         const render::LookAt& v = controller_.view();
-        fmt::print("camera: pivot {:.6f},{:.6f},{:.1f} distance {:.1f} heading {:.2f} pitch {:.2f}\n",
-                   v.target.lat_deg, v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
+        fmt::print("camera: pivot {:.6f},{:.6f},{:.1f} distance {:.1f} heading {:.2f} pitch {:.2f}\n", v.target.lat_deg,
+                   v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
         break;
       }
       case Kind::play:
@@ -436,11 +447,21 @@ void ViewerApp::run_script(const ViewScript& script) {
         model_.clock.advance(c.x);
         model_.clock.pause();
         break;
-      case Kind::speed: model_.clock.set_speed(c.x); break;
-      case Kind::wait: frames = static_cast<int>(c.x); break;
-      case Kind::screenshot: screenshot(c.path); break;
-      case Kind::window_screenshot: window_grab_ = c.path; break;
-      case Kind::hide_panels: panels_ = false; break;
+      case Kind::speed:
+        model_.clock.set_speed(c.x);
+        break;
+      case Kind::wait:
+        frames = static_cast<int>(c.x);
+        break;
+      case Kind::screenshot:
+        screenshot(c.path);
+        break;
+      case Kind::window_screenshot:
+        window_grab_ = c.path;
+        break;
+      case Kind::hide_panels:
+        panels_ = false;
+        break;
     }
     std::fflush(stdout);
     for (int i = 0; i < frames; ++i) frame(0.0, true);

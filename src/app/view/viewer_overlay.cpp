@@ -10,7 +10,9 @@
 namespace trailray::app::view {
 namespace {
 
-ImU32 colour_of(const glm::vec3& srgb, float alpha = 1.0f) { return ImGui::ColorConvertFloat4ToU32({srgb.r, srgb.g, srgb.b, alpha}); }
+ImU32 colour_of(const glm::vec3& srgb, float alpha = 1.0f) {
+  return ImGui::ColorConvertFloat4ToU32({srgb.r, srgb.g, srgb.b, alpha});
+}
 
 // ImGui draws in window coordinates; the camera's pixels are the framebuffer's.
 ImVec2 to_screen(const glm::dvec2& px) {
@@ -81,7 +83,8 @@ bool compass(double heading_deg) {
     ImDrawList* list = ImGui::GetWindowDrawList();
     list->AddCircle(centre, r, IM_COL32(255, 255, 255, 200), 24, 1.5f);
     const double a = -heading_deg * 3.14159265358979323846 / 180.0;
-    const ImVec2 tip{centre.x + static_cast<float>(std::sin(a)) * (r - 3.0f), centre.y - static_cast<float>(std::cos(a)) * (r - 3.0f)};
+    const ImVec2 tip{centre.x + static_cast<float>(std::sin(a)) * (r - 3.0f),
+                     centre.y - static_cast<float>(std::cos(a)) * (r - 3.0f)};
     list->AddLine(centre, tip, IM_COL32(230, 60, 50, 255), 3.0f);
     list->AddText({tip.x - 4.0f, tip.y - 7.0f}, IM_COL32(255, 255, 255, 255), "N");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("North up (N)");

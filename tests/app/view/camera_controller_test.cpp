@@ -154,7 +154,7 @@ TEST(CameraController, FollowingMovesThePivotAndChaseTurnsTheHeading) {
   EXPECT_DOUBLE_EQ(c.view().target.lat_deg, kLat + 0.01);
   EXPECT_DOUBLE_EQ(c.view().target.height_m, 1500.0);
   EXPECT_NEAR(c.view().heading_deg, 30.0, 1e-9);  // orbit: the heading stays
-  c.follow(marker, -90.0);                         // chase: look west, along the track
+  c.follow(marker, -90.0);                        // chase: look west, along the track
   EXPECT_NEAR(c.view().heading_deg, 270.0, 1e-9);
   const glm::dvec2 centre = pixel_of(c, marker);
   EXPECT_NEAR(centre.x, kLens.width_px / 2.0, 0.5);  // the marker in the middle of the view
