@@ -130,8 +130,7 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
     if (!lowest_in_view) return;
     float lowest = INFINITY;
     for (const auto& t : selection.tiles)
-      if (const auto tile = height_loader_->get(t.id); tile && tile->has_data())
-        lowest = std::min(lowest, tile->min_m);
+      if (const auto tile = height_loader_->get(t.id); tile && tile->has_data()) lowest = std::min(lowest, tile->min_m);
     if (std::isfinite(lowest)) neutral = lowest;
   };
   for (int round = 0; round < kMaxSelectionRounds; ++round) {
