@@ -15,6 +15,7 @@
 #include <numeric>
 
 #include "app/track_legend.hpp"
+#include "app/view/legend_overlay.hpp"
 #include "app/view/camera_controller.hpp"
 #include "app/view/profiler_table.hpp"
 #include "app/view/track_loading.hpp"
@@ -62,6 +63,7 @@ class ViewerApp {
   void adopt(LoadedViewerTracks loaded);
   void sync_track_buffers();
   render::SceneRenderOptions scene_options() const;
+  std::pair<TrackStyle, TrackScene> legend_inputs(const render::TrackSceneSettings& settings) const;
   void update_hover(double x_px, double y_px, const render::Camera& camera);
   void fly_to_track(int index);
   void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
@@ -337,6 +339,10 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   OverlayState overlay{
       model_, camera, progress_, status_, controller_.view().heading_deg, scripted ? script_cursor_ : std::nullopt};
   if (panels_ && draw_overlays(overlay)) controller_.reset_north();
+  if (panels_ && model_.settings.legend) {
+    const auto [style, legend_scene] = legend_inputs(scene_options().track_settings);
+    draw_legend_overlay(color_legend_for(style, legend_scene), track_key_for(style, legend_scene));
+  }
 
   if (width > 0 && height > 0) {
     render::SceneRenderOptions options = scene_options();
@@ -360,6 +366,19 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   window_.swap_buffers();
 }
 
+// What the legend shows, as `render` would decide it for the tracks now visible.
+std::pair<TrackStyle, TrackScene> ViewerApp::legend_inputs(const render::TrackSceneSettings& settings) const {
+  TrackStyle style;
+  style.settings = settings;
+  style.metric = model_.settings.color_by;
+  style.legend = model_.settings.legend;
+  TrackScene scene;
+  scene.range = effective_range(model_.tracks, model_.settings);
+  for (const ViewerTrack& t : model_.tracks)
+    if (t.visible) scene.tracks.push_back({t.name, {}, t.color_srgb, 0});
+  return {style, scene};
+}
+
 // A picture as `render` makes it: the scene once its tiles are in, with the legend.
 void ViewerApp::screenshot(const std::string& path, bool status) {
   sync_track_buffers();
@@ -368,14 +387,7 @@ void ViewerApp::screenshot(const std::string& path, bool status) {
   render::RenderedScene scene = renderer_.render(controller_.camera(), options);
   if (scene.report.timed_out)
     warn(fmt::format("tiles still loading after {} s: the picture has what had arrived", options_.timeout_s));
-  TrackStyle style;
-  style.settings = options.track_settings;
-  style.metric = model_.settings.color_by;
-  style.legend = model_.settings.legend;
-  TrackScene legend_scene;
-  legend_scene.range = effective_range(model_.tracks, model_.settings);
-  for (const ViewerTrack& t : model_.tracks)
-    if (t.visible) legend_scene.tracks.push_back({t.name, {}, t.color_srgb, 0});
+  const auto [style, legend_scene] = legend_inputs(options.track_settings);
   draw_scene_legend(scene.image, style, legend_scene);
   render::write_srgb_png(path, scene.image);
   const std::string wrote = fmt::format("wrote {} ({}x{})", path, scene.image.width, scene.image.height);
