@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -218,7 +219,10 @@ TEST(RenderCli, ProfilePrintsATableOfThePasses) {
                              "--terrain none --camera 46.7,7.85,1500,0,-5 --size 160x90 --time 2024-06-18T11:00:00Z "
                              "--profile --frames 3 -o " +
                              shell_quote(env.out()) + " 2>" + shell_quote(err));
-  ASSERT_EQ(r.status, 0) << r.out;
+  if (r.status != 0) {
+    std::ifstream failed(err);
+    FAIL() << "status " << r.status << ", standard error:\n" << std::string(std::istreambuf_iterator<char>(failed), {});
+  }
   EXPECT_TRUE(std::filesystem::exists(env.out()));
   std::ifstream in(err);
   std::map<std::string, std::vector<std::string>> rows;
