@@ -52,7 +52,9 @@ bool needs_ground(const track::Track& t, const TrackStyle& style) {
   return false;
 }
 
-std::vector<std::vector<double>> ground_heights(const track::Track& t, terrain::HeightSource* heights) {
+}  // namespace
+
+std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, terrain::HeightSource* heights) {
   std::vector<std::vector<double>> out;
   std::unique_ptr<terrain::HeightSampler> sampler;
   if (heights != nullptr) sampler = std::make_unique<terrain::HeightSampler>(*heights);
@@ -69,8 +71,6 @@ std::vector<std::vector<double>> ground_heights(const track::Track& t, terrain::
   return out;
 }
 
-}  // namespace
-
 TrackScene build_track_scene(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
                              const TrackSceneInputs& inputs, const std::function<void(const std::string&)>& warn) {
   if (style.metric == track::ColorMetric::agl && inputs.heights == nullptr)
@@ -78,14 +78,15 @@ TrackScene build_track_scene(const std::vector<LoadedTrackFile>& files, const Tr
   TrackScene scene;
   const bool by_value = style.metric != track::ColorMetric::solid;
   std::vector<std::vector<float>> all_values;
-  track::CleanReport report;
   for (const LoadedTrackFile& loaded : files) {
     for (NamedTrack& named : tracks_of(loaded)) {
       const track::Track& raw = named.track != nullptr ? *named.track : named.route_as_track;
-      const track::Track cleaned = track::clean_track(raw, inputs.analysis.clean, report);
-      const track::TrackMetrics metrics = track::compute_metrics(cleaned, inputs.analysis.metrics);
+      track::CleanReport report;
+      track::Track cleaned = track::clean_track(raw, inputs.analysis.clean, report);
+      track::TrackMetrics metrics = track::compute_metrics(cleaned, inputs.analysis.metrics);
       std::vector<std::vector<double>> ground;
-      if (needs_ground(cleaned, style)) ground = ground_heights(cleaned, inputs.heights);
+      if (needs_ground(cleaned, style) || (inputs.keep_analysis && inputs.heights != nullptr))
+        ground = sample_ground_heights(cleaned, inputs.heights);
       std::vector<std::vector<float>> values;
       if (by_value) values = track::color_values(cleaned, metrics, style.metric, ground.empty() ? nullptr : &ground);
 
@@ -112,6 +113,12 @@ TrackScene build_track_scene(const std::vector<LoadedTrackFile>& files, const Tr
         }
         scene.points += points.size();
         out.geometry.segments.push_back(std::move(line));
+      }
+      if (inputs.keep_analysis) {
+        out.summary = track::summarize_cleaned_track(raw, cleaned, report, metrics, inputs.analysis);
+        if (inputs.heights != nullptr) out.ground_m = std::move(ground);
+        out.cleaned = std::move(cleaned);
+        out.metrics = std::move(metrics);
       }
       scene.tracks.push_back(std::move(out));
     }

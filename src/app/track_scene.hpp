@@ -29,6 +29,12 @@ struct SceneTrack {
   render::TrackGeometry geometry;
   glm::vec3 color_srgb{1.0f, 0.0f, 0.0f};
   std::size_t points_with_value = 0;
+
+  // Only with TrackSceneInputs::keep_analysis (else empty): what the geometry was made from.
+  track::TrackSummary summary;                 // raw and clean statistics, as `trailray stats` prints them
+  track::Track cleaned;                        // after clean_track (every raw segment, maybe emptied)
+  track::TrackMetrics metrics;                 // compute_metrics(cleaned)
+  std::vector<std::vector<double>> ground_m;   // terrain below each cleaned point (NaN: none); empty without terrain
 };
 
 struct TrackScene {
@@ -41,7 +47,14 @@ struct TrackSceneInputs {
   terrain::HeightSource* heights = nullptr;  // nullptr: no terrain (agl impossible)
   double neutral_ground_m = 0.0;             // where there is no terrain height
   track::AnalysisOptions analysis;           // cleaning and metric windows
+  // Keep each track's cleaned points, metrics, summary and ground heights (sampled for every
+  // point when there is terrain) in SceneTrack, for a viewer that inspects them; `render` does
+  // not need them.
+  bool keep_analysis = false;
 };
+
+// The terrain height below every point of `t`, per segment; NaN everywhere without `heights`.
+std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, terrain::HeightSource* heights);
 
 // Throws std::runtime_error for what the user must change (agl without terrain, a --color count
 // that matches neither 1 nor the number of tracks). `warn` gets notes (no values for a metric).

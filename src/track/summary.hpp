@@ -32,4 +32,11 @@ struct TrackSummary {
 
 TrackSummary summarize_track(const Track& track, const AnalysisOptions& options = {});
 
+// The same from a track already cleaned (clean_track(track, options.clean, cleaning)) and
+// measured (compute_metrics(cleaned, options.metrics)): only the raw analysis is left to do.
+// Throws std::invalid_argument when `cleaned` does not have the raw track's segments or
+// `clean_metrics` does not match `cleaned`.
+TrackSummary summarize_cleaned_track(const Track& track, const Track& cleaned, const CleanReport& cleaning,
+                                     const TrackMetrics& clean_metrics, const AnalysisOptions& options = {});
+
 }  // namespace trailray::track

@@ -14,9 +14,11 @@
 #include "app/track_style_options.hpp"
 #include "render/camera.hpp"
 #include "render/colormap.hpp"
+#include "terrain/synthetic_height_source.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
+#include "track/summary.hpp"
 #include "track_cli_support.hpp"
 
 namespace trailray::app {
@@ -282,6 +284,74 @@ TEST(TrackScene, HeightAboveGroundNeedsTerrain) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("--terrain"), std::string::npos) << e.what();
   }
+}
+
+
+// keep_analysis (the viewer): each track's cleaned points, metrics and summary come out with the
+// geometry, the same as cleaning and summarizing the raw track again would give; without it
+// (render) they stay empty.
+TEST(TrackScene, KeptAnalysisIsTheCleanedTrackAndItsSummary) {
+  track::Segment noisy = line(30, 25.0, 5.0, 800.0);
+  noisy.points[10].ele = 5000.0;  // a spike cleaning removes or flattens
+  const track::Track raw = track_of("A", {noisy, track::Segment{}, line(8, 40.0, 5.0, 900.0, 2000.0, kT0 + 900.0)});
+  const auto files = std::vector{file_of("a.gpx", {raw})};
+  TrackSceneInputs inputs;
+  inputs.neutral_ground_m = 900.0;
+  inputs.keep_analysis = true;
+  const TrackScene kept = build_track_scene(files, style_by("speed"), inputs, [](const std::string&) {});
+  ASSERT_EQ(kept.tracks.size(), 1u);
+  const SceneTrack& t = kept.tracks[0];
+
+  track::CleanReport report;
+  const track::Track cleaned = track::clean_track(raw, inputs.analysis.clean, report);
+  ASSERT_EQ(t.cleaned.segments.size(), 3u);  // the empty segment too: indices match the raw track
+  for (std::size_t s = 0; s < 3; ++s) {
+    ASSERT_EQ(t.cleaned.segments[s].points.size(), cleaned.segments[s].points.size()) << s;
+    for (std::size_t i = 0; i < cleaned.segments[s].points.size(); ++i)
+      EXPECT_EQ(t.cleaned.segments[s].points[i].ele, cleaned.segments[s].points[i].ele) << s << " " << i;
+    EXPECT_EQ(t.metrics.segments[s].size(), cleaned.segments[s].points.size()) << s;
+  }
+  const track::TrackSummary expected = track::summarize_track(raw, inputs.analysis);
+  EXPECT_EQ(t.summary.raw.points, expected.raw.points);
+  EXPECT_EQ(t.summary.clean.points, expected.clean.points);
+  EXPECT_DOUBLE_EQ(t.summary.raw.distance_2d_m, expected.raw.distance_2d_m);
+  EXPECT_DOUBLE_EQ(t.summary.clean.distance_2d_m, expected.clean.distance_2d_m);
+  EXPECT_EQ(t.summary.clean.max_elevation_m, expected.clean.max_elevation_m);
+  EXPECT_EQ(t.summary.raw.max_elevation_m, expected.raw.max_elevation_m);
+  EXPECT_DOUBLE_EQ(*t.summary.raw.max_elevation_m, 5000.0);
+  ASSERT_EQ(t.summary.segments.size(), 3u);
+  EXPECT_EQ(t.summary.segments[2].clean.points, expected.segments[2].clean.points);
+  EXPECT_TRUE(t.ground_m.empty()) << "no terrain was given";
+
+  // The drawn points are the kept ones.
+  ASSERT_EQ(t.geometry.segments.size(), 2u);
+  EXPECT_EQ(t.geometry.segments[1].points_ecef.size(), t.cleaned.segments[2].points.size());
+
+  const TrackScene plain = build(files, style_by("speed"), nullptr, true);
+  EXPECT_TRUE(plain.tracks[0].cleaned.segments.empty());
+  EXPECT_TRUE(plain.tracks[0].metrics.segments.empty());
+  EXPECT_EQ(plain.tracks[0].summary.raw.points, 0u);
+}
+
+
+// With terrain the viewer gets the ground below every point, not only where a metric needs it.
+TEST(TrackScene, KeptAnalysisHasTheGroundBelowEveryPointWithTerrain) {
+  test::SyntheticHeightSource heights(65, terrain::SampleLayout::pixel_is_point, 12);
+  const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(6, 30.0, 10.0, 1500.0)})})};
+  TrackSceneInputs inputs;
+  inputs.heights = &heights;
+  inputs.keep_analysis = true;
+  const TrackScene scene = build_track_scene(files, style_of(), inputs, [](const std::string&) {});
+  ASSERT_EQ(scene.tracks.size(), 1u);
+  const SceneTrack& t = scene.tracks[0];
+  ASSERT_EQ(t.ground_m.size(), 1u);
+  ASSERT_EQ(t.ground_m[0].size(), t.cleaned.segments[0].points.size());
+  for (double h : t.ground_m[0]) {
+    EXPECT_TRUE(std::isfinite(h));
+    EXPECT_GT(h, 100.0);  // the synthetic plane rises from 100 m at the world's corner
+  }
+  inputs.keep_analysis = false;
+  EXPECT_TRUE(build_track_scene(files, style_of(), inputs, [](const std::string&) {}).tracks[0].ground_m.empty());
 }
 
 }  // namespace

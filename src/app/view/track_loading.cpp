@@ -28,8 +28,12 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
   TrackStyle style = inputs.style;
   // Per-track --color counts the command line's tracks; later files take the palette.
   if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
+  TrackSceneInputs scene_inputs;
+  scene_inputs.heights = inputs.heights;
+  scene_inputs.neutral_ground_m = neutral;
+  scene_inputs.analysis = inputs.analysis;
   try {
-    out.tracks = build_viewer_tracks(out.points.files, style, {inputs.heights, neutral, inputs.analysis}, warn);
+    out.tracks = build_viewer_tracks(out.points.files, style, scene_inputs, warn);
   } catch (const std::exception& e) {
     out.errors.emplace_back(e.what());
     out.tracks.clear();

@@ -374,8 +374,13 @@ std::pair<TrackStyle, TrackScene> ViewerApp::legend_inputs(const render::TrackSc
   style.legend = model_.settings.legend;
   TrackScene scene;
   scene.range = effective_range(model_.tracks, model_.settings);
-  for (const ViewerTrack& t : model_.tracks)
-    if (t.visible) scene.tracks.push_back({t.name, {}, t.color_srgb, 0});
+  for (const ViewerTrack& t : model_.tracks) {
+    if (!t.visible) continue;
+    SceneTrack named;
+    named.name = t.name;
+    named.color_srgb = t.color_srgb;
+    scene.tracks.push_back(std::move(named));
+  }
   return {style, scene};
 }
 

@@ -75,11 +75,12 @@ struct ViewerTrack {
 void fill_point_arrays(ViewerTrack& track, const std::vector<std::vector<double>>& ground_m = {});
 
 // The viewer's tracks from files: the same names, positions, colours and colour values as
-// build_track_scene (it is called for them), plus each cleaned track, its metrics, its summary and
-// the per-point arrays. `inputs.heights` may be nullptr (ground heights NaN; set_ground_heights
-// fills them in later). Throws what build_track_scene throws.
+// build_track_scene (it is called for them, keeping its analysis), plus each cleaned track, its
+// metrics, its summary and the per-point arrays: every track is cleaned and measured once.
+// `inputs.heights` may be nullptr (ground heights NaN; set_ground_heights fills them in later).
+// Throws what build_track_scene throws.
 std::vector<ViewerTrack> build_viewer_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
-                                             const TrackSceneInputs& inputs,
+                                             TrackSceneInputs inputs,
                                              const std::function<void(const std::string&)>& warn);
 
 // Samples the terrain below every point (may read tiles: call off the frame loop).

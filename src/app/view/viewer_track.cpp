@@ -4,13 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
 #include "app/view/viewer_model.hpp"
-#include "terrain/height_sampler.hpp"
-#include "track/clean.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -18,18 +15,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double as_double(float v) { return std::isnan(v) ? kNaN : static_cast<double>(v); }
-
-// The raw tracks of a file in build_track_scene's order (tracks, then routes as one segment).
-std::vector<track::Track> raw_tracks_of(const track::TrackFile& file) {
-  std::vector<track::Track> out(file.tracks.begin(), file.tracks.end());
-  for (const track::Route& r : file.routes) {
-    track::Track t;
-    t.name = r.name;
-    t.segments.push_back({r.points});
-    out.push_back(std::move(t));
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -90,59 +75,43 @@ void fill_point_arrays(ViewerTrack& t, const std::vector<std::vector<double>>& g
 }
 
 std::vector<ViewerTrack> build_viewer_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
-                                             const TrackSceneInputs& inputs,
+                                             TrackSceneInputs inputs,
                                              const std::function<void(const std::string&)>& warn) {
+  inputs.keep_analysis = true;
   TrackScene scene = build_track_scene(files, style, inputs, warn);
   std::vector<ViewerTrack> out;
   out.reserve(scene.tracks.size());
-  std::unique_ptr<terrain::HeightSampler> sampler;
-  if (inputs.heights != nullptr) sampler = std::make_unique<terrain::HeightSampler>(*inputs.heights);
-  for (const LoadedTrackFile& loaded : files) {
-    for (const track::Track& raw : raw_tracks_of(loaded.file)) {
-      if (out.size() >= scene.tracks.size())
-        throw std::logic_error("build_viewer_tracks: more tracks than build_track_scene made");
-      SceneTrack& drawn = scene.tracks[out.size()];
-      ViewerTrack t;
-      t.name = drawn.name;
-      t.source = loaded.path;
-      t.summary = track::summarize_track(raw, inputs.analysis);
-      track::CleanReport report;
-      t.cleaned = track::clean_track(raw, inputs.analysis.clean, report);
-      t.metrics = track::compute_metrics(t.cleaned, inputs.analysis.metrics);
-      std::vector<std::vector<double>> ground;
-      if (sampler) {
-        for (const auto& s : t.cleaned.segments) {
-          std::vector<geo::LatLon> ll;
-          ll.reserve(s.points.size());
-          for (const auto& p : s.points) ll.push_back({p.lat, p.lon});
-          ground.push_back(sampler->sample(ll));
-        }
-      }
-      fill_point_arrays(t, ground);
-      t.geometry = std::move(drawn.geometry);
-      for (const auto& line : t.geometry.segments)
-        t.ecef.insert(t.ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
-      if (t.ecef.size() != t.point_count())
-        throw std::logic_error(fmt::format("build_viewer_tracks: track '{}' drawn with {} points, measured with {}",
-                                           t.name, t.ecef.size(), t.point_count()));
-      t.color_srgb = drawn.color_srgb;
-      out.push_back(std::move(t));
-    }
+  // build_track_scene's order: each file's tracks, then its routes.
+  std::vector<std::string> sources;
+  for (const LoadedTrackFile& loaded : files)
+    sources.insert(sources.end(), loaded.file.tracks.size() + loaded.file.routes.size(), loaded.path);
+  if (sources.size() != scene.tracks.size())
+    throw std::logic_error(fmt::format("build_viewer_tracks: {} tracks in the files, build_track_scene made {}",
+                                       sources.size(), scene.tracks.size()));
+  for (std::size_t i = 0; i < scene.tracks.size(); ++i) {
+    SceneTrack& drawn = scene.tracks[i];
+    ViewerTrack t;
+    t.name = drawn.name;
+    t.source = sources[i];
+    t.summary = std::move(drawn.summary);
+    t.cleaned = std::move(drawn.cleaned);
+    t.metrics = std::move(drawn.metrics);
+    fill_point_arrays(t, drawn.ground_m);
+    t.geometry = std::move(drawn.geometry);
+    for (const auto& line : t.geometry.segments)
+      t.ecef.insert(t.ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
+    if (t.ecef.size() != t.point_count())
+      throw std::logic_error(fmt::format("build_viewer_tracks: track '{}' drawn with {} points, measured with {}",
+                                         t.name, t.ecef.size(), t.point_count()));
+    t.color_srgb = drawn.color_srgb;
+    out.push_back(std::move(t));
   }
   return out;
 }
 
 void set_ground_heights(ViewerTrack& t, terrain::HeightSource& heights) {
-  terrain::HeightSampler sampler(heights);
-  std::vector<std::vector<double>> ground;
-  for (const auto& s : t.cleaned.segments) {
-    std::vector<geo::LatLon> ll;
-    ll.reserve(s.points.size());
-    for (const auto& p : s.points) ll.push_back({p.lat, p.lon});
-    ground.push_back(sampler.sample(ll));
-  }
   std::size_t flat = 0;
-  for (const auto& g : ground)
+  for (const auto& g : sample_ground_heights(t.cleaned, &heights))
     for (double h : g) t.ground_m.at(flat++) = h;
 }
 
