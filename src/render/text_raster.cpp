@@ -7,13 +7,14 @@
 #include <string>
 #include <type_traits>
 
+#include "geo/utf8.hpp"
 #include "render/embedded_fonts.hpp"
 #include "render/render_error.hpp"
 
 namespace trailray::render {
 namespace {
 
-constexpr char32_t kReplacementCharacter = 0xFFFD;
+using geo::kReplacementCharacter;
 constexpr int kMaxPixelSize = 512;  // far beyond any legend; bounds the glyph bitmaps
 // Light hinting: stems snap to whole pixels vertically only, so letters keep their shapes and
 // spacing at small sizes (FreeType's recommended mode for anti-aliased UI text).
@@ -194,24 +195,7 @@ std::u32string decode_utf8(std::string_view text) {
 std::string encode_utf8(std::u32string_view code_points) {
   std::string out;
   out.reserve(code_points.size());
-  for (char32_t c : code_points) {
-    if (c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) c = kReplacementCharacter;
-    if (c < 0x80) {
-      out.push_back(static_cast<char>(c));
-    } else if (c < 0x800) {
-      out.push_back(static_cast<char>(0xC0 | (c >> 6)));
-      out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-    } else if (c < 0x10000) {
-      out.push_back(static_cast<char>(0xE0 | (c >> 12)));
-      out.push_back(static_cast<char>(0x80 | ((c >> 6) & 0x3F)));
-      out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-    } else {
-      out.push_back(static_cast<char>(0xF0 | (c >> 18)));
-      out.push_back(static_cast<char>(0x80 | ((c >> 12) & 0x3F)));
-      out.push_back(static_cast<char>(0x80 | ((c >> 6) & 0x3F)));
-      out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-    }
-  }
+  for (char32_t c : code_points) geo::append_utf8(out, c);
   return out;
 }
 

@@ -4,25 +4,9 @@
 #include <cctype>
 #include <cstring>
 
-namespace trailray::track {
+#include "geo/utf8.hpp"
 
-void append_utf8(std::string& out, char32_t c) {
-  if (c < 0x80) {
-    out.push_back(static_cast<char>(c));
-  } else if (c < 0x800) {
-    out.push_back(static_cast<char>(0xC0 | (c >> 6)));
-    out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-  } else if (c < 0x10000) {
-    out.push_back(static_cast<char>(0xE0 | (c >> 12)));
-    out.push_back(static_cast<char>(0x80 | ((c >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-  } else {
-    out.push_back(static_cast<char>(0xF0 | (c >> 18)));
-    out.push_back(static_cast<char>(0x80 | ((c >> 12) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | ((c >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (c & 0x3F)));
-  }
-}
+namespace trailray::track {
 
 namespace {
 
@@ -75,23 +59,23 @@ class Utf16Source final : public ConvertingSource {
       char32_t unit = big_ ? (bytes_[0] << 8 | bytes_[1]) : (bytes_[1] << 8 | bytes_[0]);
       if (high_) {
         if (unit >= 0xDC00 && unit <= 0xDFFF) {
-          append_utf8(out, 0x10000 + ((high_ - 0xD800) << 10) + (unit - 0xDC00));
+          geo::append_utf8(out, 0x10000 + ((high_ - 0xD800) << 10) + (unit - 0xDC00));
           high_ = 0;
           continue;
         }
-        append_utf8(out, 0xFFFD);  // unpaired high surrogate
+        geo::append_utf8(out, 0xFFFD);  // unpaired high surrogate
         high_ = 0;
       }
       if (unit >= 0xD800 && unit <= 0xDBFF)
         high_ = unit;
       else if (unit >= 0xDC00 && unit <= 0xDFFF)
-        append_utf8(out, 0xFFFD);
+        geo::append_utf8(out, 0xFFFD);
       else
-        append_utf8(out, unit);
+        geo::append_utf8(out, unit);
     }
   }
   void flush(std::string& out) override {
-    if (high_ || have_) append_utf8(out, 0xFFFD);
+    if (high_ || have_) geo::append_utf8(out, 0xFFFD);
     high_ = 0;
     have_ = 0;
   }
@@ -150,7 +134,7 @@ class SingleByteSource final : public ConvertingSource {
             break;
         }
       }
-      append_utf8(out, c);
+      geo::append_utf8(out, c);
     }
   }
 

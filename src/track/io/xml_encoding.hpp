@@ -11,9 +11,6 @@
 
 namespace trailray::track {
 
-// Appends code point `c` to `out` as UTF-8.
-void append_utf8(std::string& out, char32_t c);
-
 // True when a document starting with `head` is read as it is (UTF-8, ASCII, or no declared
 // encoding): no conversion, so it can be read in independent parts.
 bool is_utf8_document(std::string_view head);

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <vector>
 
+#include "geo/utf8.hpp"
 #include "track/io/xml_encoding.hpp"
 
 namespace trailray::track {
@@ -90,7 +91,7 @@ std::size_t decode_references(std::string_view in, std::string& out, std::string
         error = "character reference '&" + std::string(ref) + ";' is not a character";
         return amp;
       }
-      append_utf8(out, static_cast<char32_t>(c));
+      geo::append_utf8(out, static_cast<char32_t>(c));
     } else {
       error = "undefined entity '&" + std::string(ref.substr(0, 40)) + ";'";
       return amp;
