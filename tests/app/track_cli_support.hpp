@@ -33,6 +33,7 @@ struct GpxPoint {
   double lat = 0.0, lon = 0.0;
   double ele = kNoValue;   // NaN: no <ele>
   double time = kNoValue;  // unix seconds; NaN: no <time>
+  double heart_rate = kNoValue;  // beats per minute in Garmin's TrackPointExtension; NaN: none
 };
 
 struct GpxTrack {
@@ -61,7 +62,8 @@ inline std::string gpx_text(const std::vector<GpxTrack>& tracks) {
   std::ostringstream out;
   out.precision(10);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-         "<gpx version=\"1.1\" creator=\"trailray tests\" xmlns=\"http://www.topografix.com/GPX/1/1\">\n";
+         "<gpx version=\"1.1\" creator=\"trailray tests\" xmlns=\"http://www.topografix.com/GPX/1/1\" "
+         "xmlns:h=\"http://www.garmin.com/xmlschemas/TrackPointExtension/v1\">\n";
   for (const GpxTrack& t : tracks) {
     out << " <trk>\n";
     if (!t.name.empty()) out << "  <name>" << t.name << "</name>\n";
@@ -75,6 +77,9 @@ inline std::string gpx_text(const std::vector<GpxTrack>& tracks) {
         out << "   <trkpt lat=\"" << p.lat << "\" lon=\"" << p.lon << "\">";
         if (!std::isnan(p.ele)) out << "<ele>" << p.ele << "</ele>";
         if (!std::isnan(p.time)) out << "<time>" << iso8601(p.time) << "</time>";
+        if (!std::isnan(p.heart_rate))
+          out << "<extensions><h:TrackPointExtension><h:hr>" << p.heart_rate
+              << "</h:hr></h:TrackPointExtension></extensions>";
         out << "</trkpt>\n";
       }
       out << "  </trkseg>\n";
@@ -142,16 +147,24 @@ inline Picture read_picture(const std::string& path) {
   return {image.width, image.height, terrain::to_rgba8(image)};
 }
 
-// The camera `trailray render` frames these points with when no camera is given (same lens,
-// the framing's defaults, the points' lowest height as the ground).
-inline render::Camera framing_camera(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height) {
+// The framing `trailray render` gives these points when no camera is given and no legend is
+// drawn (same lens, the framing's defaults, the points' lowest height as the ground); with
+// `keep_clear`, the framing around a legend there.
+inline render::Framing framing(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height,
+                               const render::KeptClearCorner& keep_clear = {}) {
   std::vector<render::GeoPosition> positions;
   for (const GpxPoint& p : points) positions.push_back({p.lat, p.lon, p.ele});
   render::FramingOptions options;
   options.lens = {render::kDefaultVerticalFovDeg, width, height};
+  options.keep_clear = keep_clear;
   auto framed = render::frame_points(positions, options);
   if (!framed.ok()) throw std::runtime_error("cannot frame: " + framed.error);
-  return framed.value->camera;
+  return *framed.value;
+}
+
+// Its camera.
+inline render::Camera framing_camera(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height) {
+  return framing(points, width, height).camera;
 }
 
 }  // namespace trailray::test

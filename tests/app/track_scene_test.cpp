@@ -19,42 +19,12 @@
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
 #include "track/summary.hpp"
-#include "track_cli_support.hpp"
+#include "track_model_builders.hpp"
 
 namespace trailray::app {
 namespace {
 
-constexpr double kLat = 46.70, kLon = 7.85;
-constexpr double kT0 = 1718704800.0;  // 2024-06-18T10:00:00Z
-
-// `count` points heading east, `spacing_m` apart, `interval_s` apart in time (NaN: no times).
-track::Segment line(int count, double spacing_m, double interval_s, double ele, double start_east_m = 0.0,
-                    double t0 = kT0) {
-  track::Segment s;
-  for (const auto& g : test::east_line(kLat, kLon, start_east_m, count, spacing_m, t0, interval_s, ele)) {
-    track::TrackPoint p;
-    p.lat = g.lat;
-    p.lon = g.lon;
-    p.ele = g.ele;
-    p.time = std::isnan(interval_s) ? track::kMissing : g.time;
-    s.points.push_back(p);
-  }
-  return s;
-}
-
-track::Track track_of(std::string name, std::vector<track::Segment> segments) {
-  track::Track t;
-  t.name = std::move(name);
-  t.segments = std::move(segments);
-  return t;
-}
-
-LoadedTrackFile file_of(std::string path, std::vector<track::Track> tracks) {
-  LoadedTrackFile f;
-  f.path = std::move(path);
-  f.file.tracks = std::move(tracks);
-  return f;
-}
+using namespace test_tracks;  // line, track_of, file_of, kLat, kLon, kT0
 
 TrackStyle style_of(TrackStyleArgs args = {}) { return parse_track_style(args); }
 

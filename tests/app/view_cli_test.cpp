@@ -29,24 +29,10 @@ std::vector<GpxPoint> bent_hike() {
     GpxPoint p = offset_point(kLat, kLon, 25.0 * i, 300.0 * std::sin(i / 20.0));
     p.ele = 1000.0 + 2.0 * i;
     p.time = kT0 + 10.0 * i;
+    p.heart_rate = 120 + i % 30;
     points.push_back(p);
   }
   return points;
-}
-
-std::string hike_gpx_with_heart_rate(const std::vector<GpxPoint>& points) {
-  std::string text =
-      "<?xml version=\"1.0\"?>\n<gpx version=\"1.1\" creator=\"t\" xmlns=\"http://www.topografix.com/GPX/1/1\" "
-      "xmlns:h=\"http://www.garmin.com/xmlschemas/TrackPointExtension/v1\"><trk><name>Hike</name><trkseg>\n";
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    char line[400];
-    std::snprintf(line, sizeof line,
-                  "<trkpt lat=\"%.9f\" lon=\"%.9f\"><ele>%.1f</ele><time>%s</time><extensions><h:TrackPointExtension>"
-                  "<h:hr>%zu</h:hr></h:TrackPointExtension></extensions></trkpt>\n",
-                  points[i].lat, points[i].lon, points[i].ele, iso8601(points[i].time).c_str(), 120 + i % 30);
-    text += line;
-  }
-  return text + "</trkseg></trk></gpx>\n";
 }
 
 struct ViewEnv : RenderEnv {
@@ -69,11 +55,7 @@ struct ViewEnv : RenderEnv {
     std::ofstream(path, std::ios::binary) << text;
     return path;
   }
-  std::string hike() const {
-    const std::string path = file("hike.gpx");
-    std::ofstream(path, std::ios::binary) << hike_gpx_with_heart_rate(bent_hike());
-    return path;
-  }
+  std::string hike() const { return write_gpx("hike.gpx", {GpxTrack{"Hike", {bent_hike()}}}); }
 };
 
 using Rgb = Picture::Rgb;

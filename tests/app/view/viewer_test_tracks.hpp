@@ -1,6 +1,5 @@
 #pragma once
-// Tracks held in memory for the viewer's tests: straight lines heading east with known spacing,
-// times and elevations, so distances, speeds and positions are known in advance.
+// The viewer's tracks built from the shared in-memory track files (app/track_model_builders.hpp).
 
 #include <cmath>
 #include <functional>
@@ -8,45 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "app/track_cli_support.hpp"
+#include "app/track_model_builders.hpp"
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
 #include "app/view/viewer_model.hpp"
 
 namespace trailray::app::view::test_tracks {
 
-constexpr double kLat = 46.70, kLon = 7.85;
-constexpr double kT0 = 1718704800.0;  // 2024-06-18T10:00:00Z
-constexpr double kNoTime = std::numeric_limits<double>::quiet_NaN();
-
-// `count` points heading east, `spacing_m` apart, `interval_s` apart in time (NaN: no times).
-inline track::Segment line(int count, double spacing_m, double interval_s, double ele, double start_east_m = 0.0,
-                           double t0 = kT0) {
-  track::Segment s;
-  for (const auto& g : trailray::test::east_line(kLat, kLon, start_east_m, count, spacing_m, t0, interval_s, ele)) {
-    track::TrackPoint p;
-    p.lat = g.lat;
-    p.lon = g.lon;
-    p.ele = g.ele;
-    p.time = std::isnan(interval_s) ? track::kMissing : g.time;
-    s.points.push_back(p);
-  }
-  return s;
-}
-
-inline track::Track track_of(std::string name, std::vector<track::Segment> segments) {
-  track::Track t;
-  t.name = std::move(name);
-  t.segments = std::move(segments);
-  return t;
-}
-
-inline LoadedTrackFile file_of(std::string path, std::vector<track::Track> tracks) {
-  LoadedTrackFile f;
-  f.path = std::move(path);
-  f.file.tracks = std::move(tracks);
-  return f;
-}
+using namespace trailray::app::test_tracks;  // line, track_of, file_of, kLat, kLon, kT0, kNoTime
 
 inline std::vector<ViewerTrack> viewer_tracks(const std::vector<LoadedTrackFile>& files, TrackStyleArgs args = {}) {
   return build_viewer_tracks(files, parse_track_style(args), TrackSceneInputs{}, [](const std::string&) {});
