@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "app/view/panel_layout.hpp"
 #include "app/view/profile_chart.hpp"
 #include "app/view/viewer_model.hpp"
 
@@ -98,9 +99,24 @@ void width_controls(ViewerSettings& s) {
   if (ImGui::RadioButton("m", &unit, 1) && pixels) s.width = {10.0, render::TrackWidth::Unit::metres};
 }
 
+// The panels' first placement for the window's size now (later the user's own).
+PanelLayout layout_now(const ViewerModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  return default_panel_layout(display.x, display.y, model.settings.show_menu ? ImGui::GetFrameHeight() : 0.0f);
+}
+
+void place_at(const PanelRect& r) {
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_FirstUseEver);
+  if (r.collapsed) ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+}
+
+void place(const PanelRect& r) {
+  place_at(r);
+  ImGui::SetNextWindowSize(ImVec2(r.width, r.height), ImGuiCond_FirstUseEver);
+}
+
 void track_list_window(ViewerModel& model, PanelActions& actions) {
-  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 330), ImGuiCond_FirstUseEver);
+  place(layout_now(model).tracks);
   if (!ImGui::Begin("Tracks", &model.settings.show_tracks)) {
     ImGui::End();
     return;
@@ -137,8 +153,7 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
 }
 
 void statistics_window(ViewerModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(10, 370), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 230), ImGuiCond_FirstUseEver);
+  place(layout_now(model).statistics);
   if (!ImGui::Begin("Statistics", &model.settings.show_statistics)) {
     ImGui::End();
     return;
@@ -156,7 +171,7 @@ void statistics_window(ViewerModel& model) {
 }
 
 void shading_window(ViewerModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(350, 30), ImGuiCond_FirstUseEver);
+  place_at(layout_now(model).shading);
   if (!ImGui::Begin("Shading", &model.settings.show_shading, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
@@ -186,7 +201,7 @@ void shading_window(ViewerModel& model) {
 }
 
 void occlusion_window(ViewerModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(350, 200), ImGuiCond_FirstUseEver);
+  place_at(layout_now(model).occlusion);
   if (!ImGui::Begin("Occlusion", &model.settings.show_occlusion, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
@@ -206,7 +221,7 @@ void occlusion_window(ViewerModel& model) {
 }
 
 void profiler_window(ViewerModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(350, 330), ImGuiCond_FirstUseEver);
+  place_at(layout_now(model).profiler);
   if (!ImGui::Begin("Profiler", &model.settings.show_profiler, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
@@ -238,9 +253,7 @@ void profiler_window(ViewerModel& model) {
 }
 
 void chart_window(ViewerModel& model) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(350, std::max(10.0f, display.y - 330.0f)), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(std::max(300.0f, display.x - 360.0f), 320.0f), ImGuiCond_FirstUseEver);
+  place(layout_now(model).chart);
   if (ImGui::Begin("Profile", &model.settings.show_chart)) draw_profile_chart(model);
   ImGui::End();
 }
@@ -252,9 +265,7 @@ std::string clock_text(double unix_s) {
 }
 
 void replay_window(ViewerModel& model) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(std::max(10.0f, display.x - 340.0f), 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 170), ImGuiCond_FirstUseEver);
+  place(layout_now(model).replay);
   if (!ImGui::Begin("Replay", &model.settings.show_replay)) {
     ImGui::End();
     return;
