@@ -8,6 +8,7 @@
 #include <limits>
 #include <span>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 
 #include "render/gl_capabilities.hpp"
@@ -62,6 +63,17 @@ void add_ancestors(std::vector<terrain::TileRequest>& requests, int min_zoom) {
       if (!seen.emplace(*up, true).second) break;  // its ancestors are in already
       requests.push_back({*up, kAncestorPriority - up->zoom});
     }
+}
+
+// An RGBA8 texture with its full mipmap chain (upload_imagery_texture).
+std::size_t imagery_texture_bytes(std::uint32_t width, std::uint32_t height) {
+  std::size_t bytes = 0;
+  for (;;) {
+    bytes += std::size_t{width} * height * 4;
+    if (width == 1 && height == 1) return bytes;
+    width = std::max(1u, width / 2);
+    height = std::max(1u, height / 2);
+  }
 }
 
 void add_progress(terrain::LoadProgress& total, const terrain::LoadProgress& p) {
@@ -221,15 +233,15 @@ std::vector<TerrainImagery> SceneRenderer::load_imagery(const std::vector<DrawnT
       image = imagery_loader_->get(*wanted[i]);
     }
     if (!wanted[i] || !image || image->width == 0 || image->height == 0) continue;
-    auto it = imagery_textures_.find(*wanted[i]);
-    if (it == imagery_textures_.end())
-      it =
-          imagery_textures_.emplace(*wanted[i], upload_imagery_texture(image->width, image->height, image->rgba)).first;
+    const Texture* texture = imagery_textures_.find(*wanted[i]);
+    if (texture == nullptr)
+      texture = &imagery_textures_.insert(*wanted[i], upload_imagery_texture(image->width, image->height, image->rgba),
+                                          imagery_texture_bytes(image->width, image->height));
     const int levels_up = tiles[i].id.zoom - wanted[i]->zoom;
     const double scale = std::ldexp(1.0, -levels_up);
     const std::uint32_t mask = (1u << levels_up) - 1u;
     TerrainImagery& t = imagery[i];
-    t.texture = &it->second;
+    t.texture = texture;
     t.scale = glm::vec2(static_cast<float>(scale));
     t.offset = glm::vec2(static_cast<float>((tiles[i].id.x & mask) * scale),
                          static_cast<float>((tiles[i].id.y & mask) * scale));
@@ -266,6 +278,8 @@ double SceneRenderer::height_in_memory(double lat_deg, double lon_deg) const {
 
 RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptions& options) {
   RenderedScene scene;
+  meshes_.begin_frame();
+  imagery_textures_.begin_frame();
   const Clock::time_point deadline = Clock::now() + options.timeout;
   const std::vector<DrawnTile> tiles = load_height_tiles(camera, options, scene.report);
   const std::vector<TerrainImagery> imagery = load_imagery(tiles, options, deadline, scene.report);
@@ -396,6 +410,12 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (profiler != nullptr) profiler->end_frame();
+  // Between frames: the draw lists above point into the caches until here.
+  meshes_.evict_to_budget(options.mesh_budget_bytes);
+  imagery_textures_.set_budget(options.imagery_budget_bytes);
+  imagery_textures_.evict_to_budget();
+  scene.report.gpu_meshes = meshes_.stats();
+  scene.report.gpu_imagery = imagery_textures_.stats();
   return scene;
 }
 

@@ -17,7 +17,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "render/camera.hpp"
@@ -25,6 +24,7 @@
 #include "render/frame_profiler.hpp"
 #include "render/framebuffer_readback.hpp"
 #include "render/gbuffer.hpp"
+#include "render/gpu_resource_cache.hpp"
 #include "render/shadow_maps.hpp"
 #include "render/ssao_pass.hpp"
 #include "render/terrain_mesh.hpp"
@@ -38,6 +38,14 @@ namespace trailray::render {
 // Vertices per side of a tile's mesh (the LOD selection's tile_samples is one less); tiles of the
 // source's finest level get every sample instead (full_resolution_grid).
 inline constexpr std::uint32_t kTerrainGridVertices = 65;
+
+// GPU memory for tiles kept between frames, 512 MiB in all (as much as one TileLoader keeps
+// decoded by default). A view (at most 600 tiles, lod_selection.hpp) takes 20-80 MiB of meshes
+// from a DEM (a 65 x 65 mesh about 280 KiB, a full-resolution one of a 256-sample tile about
+// 4 MiB) and up to 200 MiB of imagery (341 KiB a 256 x 256 image with mipmaps): several views'
+// meshes and at least one view's imagery stay, so turning back costs no upload.
+inline constexpr std::size_t kDefaultMeshBudgetBytes = std::size_t{256} << 20;
+inline constexpr std::size_t kDefaultImageryBudgetBytes = std::size_t{256} << 20;
 
 struct SceneSources {
   terrain::HeightSource* heights = nullptr;   // nullptr: the neutral ground everywhere
@@ -73,6 +81,11 @@ struct SceneRenderOptions {
   bool read_back = true;
   // Copy the frame into the default framebuffer (a window's, which must be the lens's size).
   bool blit_to_default_framebuffer = false;
+  // GPU memory for tile meshes and imagery textures kept between frames (estimated from buffer
+  // and texture sizes). After each frame the least recently used beyond the budget are freed,
+  // never those the frame drew: a view that needs more keeps them and frees them later.
+  std::size_t mesh_budget_bytes = kDefaultMeshBudgetBytes;
+  std::size_t imagery_budget_bytes = kDefaultImageryBudgetBytes;
 };
 
 struct SceneRenderReport {
@@ -87,6 +100,9 @@ struct SceneRenderReport {
   // Height and imagery tiles wanted by this frame and how many of them have arrived (a
   // loading indicator's figures; pending() > 0 only without wait_for_tiles or after a timeout).
   terrain::LoadProgress progress;
+  // The GPU caches after this frame's eviction: held, used by the frame, uploaded, evicted.
+  GpuCacheStats gpu_meshes;
+  GpuCacheStats gpu_imagery;
 };
 
 struct RenderedScene {
@@ -133,8 +149,8 @@ class SceneRenderer {
   ComposePass compose_pass_;
   TrackPass track_pass_;
   std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
-  TerrainMeshCache meshes_;
-  std::unordered_map<terrain::TileId, Texture> imagery_textures_;
+  TerrainMeshCache meshes_{kDefaultMeshBudgetBytes};
+  GpuResourceCache<terrain::TileId, Texture> imagery_textures_{kDefaultImageryBudgetBytes};
 };
 
 }  // namespace trailray::render

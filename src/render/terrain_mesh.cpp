@@ -208,14 +208,26 @@ TerrainTileGpu upload_terrain_mesh(const TerrainMesh& mesh) {
     throw RenderError("uploading the terrain mesh of tile " + geo::to_string(mesh.id) + " failed (GL error " +
                       std::to_string(error) + ")");
   gpu.index_count = static_cast<GLsizei>(mesh.indices.size());
+  gpu.gpu_bytes = mesh.vertices.size() * sizeof(TerrainVertex) + mesh.indices.size() * sizeof(std::uint32_t);
+  gpu.has_holes = std::any_of(mesh.vertices.begin(), mesh.vertices.end(),
+                              [](const TerrainVertex& v) { return v.covered < 1.0f; });
   return gpu;
 }
 
 const TerrainTileGpu& TerrainMeshCache::get_or_upload(const terrain::HeightTile& tile, std::uint32_t grid_vertices,
                                                       float fill_height_m) {
-  const Key key{tile.id, grid_vertices, fill_height_m};
-  if (auto it = tiles_.find(key); it != tiles_.end()) return it->second;
-  return tiles_.emplace(key, upload_terrain_mesh(build_terrain_mesh(tile, grid_vertices, fill_height_m))).first->second;
+  const Key key{tile.id, grid_vertices};
+  const bool in_use = tiles_.used_this_frame(key);
+  if (const Entry* entry = tiles_.find(key)) {
+    if (!entry->gpu.has_holes || entry->fill_height_m == fill_height_m) return entry->gpu;
+    // Replacing it would leave this frame's draw list pointing at a deleted mesh.
+    if (in_use)
+      throw std::logic_error("terrain mesh of tile " + geo::to_string(tile.id) +
+                             " asked for with two fill heights in one frame");
+  }
+  TerrainTileGpu gpu = upload_terrain_mesh(build_terrain_mesh(tile, grid_vertices, fill_height_m));
+  const std::size_t bytes = gpu.gpu_bytes;
+  return tiles_.insert(key, Entry{std::move(gpu), fill_height_m}, bytes).gpu;
 }
 
 }  // namespace trailray::render

@@ -11,12 +11,13 @@
 // Holes (NaN samples) are filled at `fill_height_m` and marked uncovered, so the renderer can
 // draw them as the neutral ground instead of leaving sky-coloured gaps.
 
+#include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "geo/local_frame.hpp"
 #include "render/gl_objects.hpp"
+#include "render/gpu_resource_cache.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::render {
@@ -62,17 +63,37 @@ struct TerrainTileGpu {
   GLsizei index_count = 0;
   geo::Ecef origin;
   double bounding_radius_m = 0.0;  // the farthest vertex (skirts included) from the origin
+  std::size_t gpu_bytes = 0;       // vertex and index buffers (GPU memory budgets)
+  bool has_holes = false;          // some vertices filled (their height depends on the fill height)
 };
 
 // Uploads a mesh (the GL context must be current). Throws RenderError when GL refuses.
 TerrainTileGpu upload_terrain_mesh(const TerrainMesh& mesh);
 
-// Meshes on the GPU by tile, so a tile drawn in several frames is built and uploaded once.
+// Meshes on the GPU by tile, so a tile drawn in several frames is built and uploaded once, under
+// a byte budget (gpu_resource_cache.hpp): begin_frame() before a frame's meshes are asked for,
+// evict_to_budget() after it is drawn.
+//
+// A mesh is kept per tile and grid size. The fill height is not part of the key: a mesh without
+// holes does not depend on it (kept when the neutral ground moves, as it does in the viewer with
+// the lowest terrain in view), and one with holes is rebuilt in place for a new fill height, so
+// meshes for old fill heights do not pile up.
 class TerrainMeshCache {
  public:
-  // The tile's mesh, built and uploaded on first use.
+  explicit TerrainMeshCache(std::size_t budget_bytes) : tiles_(budget_bytes) {}
+
+  void begin_frame() { tiles_.begin_frame(); }
+  // The tile's mesh, built and uploaded on first use (or for another fill height where it has
+  // holes). Valid until evicted, never within the frame. Throws std::logic_error when a mesh
+  // with holes already used in this frame is asked for with another fill height (a frame has one).
   const TerrainTileGpu& get_or_upload(const terrain::HeightTile& tile, std::uint32_t grid_vertices,
                                       float fill_height_m);
+  // Between frames: the least recently used meshes not used in this frame go while over the budget.
+  void evict_to_budget(std::size_t budget_bytes) {
+    tiles_.set_budget(budget_bytes);
+    tiles_.evict_to_budget();
+  }
+  GpuCacheStats stats() const { return tiles_.stats(); }
   std::size_t size() const { return tiles_.size(); }
   void clear() { tiles_.clear(); }
 
@@ -80,15 +101,16 @@ class TerrainMeshCache {
   struct Key {
     terrain::TileId id;
     std::uint32_t grid_vertices;
-    float fill_height_m;
     bool operator==(const Key&) const = default;
   };
   struct KeyHash {
-    std::size_t operator()(const Key& k) const noexcept {
-      return geo::TileIdHash{}(k.id) * 31u + k.grid_vertices * 7u + std::hash<float>{}(k.fill_height_m);
-    }
+    std::size_t operator()(const Key& k) const noexcept { return geo::TileIdHash{}(k.id) * 31u + k.grid_vertices; }
   };
-  std::unordered_map<Key, TerrainTileGpu, KeyHash> tiles_;
+  struct Entry {
+    TerrainTileGpu gpu;
+    float fill_height_m;
+  };
+  GpuResourceCache<Key, Entry, KeyHash> tiles_;
 };
 
 }  // namespace trailray::render
