@@ -1,0 +1,88 @@
+// Picking a track point under the cursor: the nearest projected point within the radius, points
+// of hidden tracks never, and a point in front of the terrain before one hidden behind it.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "app/view/track_picking.hpp"
+#include "render/camera.hpp"
+
+namespace trailray::app::view {
+namespace {
+
+// A camera 2 km above Interlaken looking north and down 20 degrees, 640x360.
+render::Camera test_camera() {
+  render::Lens lens;
+  lens.width_px = 640;
+  lens.height_px = 360;
+  const geo::Ecef eye = render::ecef_from({46.68, 7.86, 2600.0});
+  return render::Camera(eye, 0.0, -20.0, lens, render::DepthRange{1.0, 1.0e6});
+}
+
+// The point `distance_m` from the eye along the ray through pixel (x, y).
+glm::dvec3 along(const render::Camera& camera, double x, double y, double distance_m) {
+  const render::Ray ray = camera.ray_through_pixel(x, y);
+  return render::to_dvec3(ray.origin) + distance_m * ray.direction;
+}
+
+ViewerTrack track_at(std::vector<glm::dvec3> points) {
+  ViewerTrack t;
+  t.ecef = std::move(points);
+  return t;
+}
+
+TEST(TrackPicking, TheNearestPointWithinTheRadius) {
+  const render::Camera camera = test_camera();
+  const std::vector<ViewerTrack> tracks = {
+      track_at({along(camera, 300, 200, 3000.0), along(camera, 306, 200, 3000.0), along(camera, 100, 50, 3000.0)})};
+  HoverState h = pick_track_point(tracks, camera, 304.0, 200.0);
+  EXPECT_EQ(h.track, 0);
+  EXPECT_EQ(h.point, 1u);  // 2 px away, the other 4 px
+  h = pick_track_point(tracks, camera, 200.0, 120.0);
+  EXPECT_EQ(h.track, -1) << "nothing within " << kPickRadiusPx << " px";
+}
+
+TEST(TrackPicking, HiddenTracksAreNotPicked) {
+  const render::Camera camera = test_camera();
+  std::vector<ViewerTrack> tracks = {track_at({along(camera, 300, 200, 3000.0)}),
+                                     track_at({along(camera, 303, 200, 2000.0)})};
+  EXPECT_EQ(pick_track_point(tracks, camera, 303.0, 200.0).track, 1);
+  tracks[1].visible = false;
+  EXPECT_EQ(pick_track_point(tracks, camera, 303.0, 200.0).track, 0);
+}
+
+// A track passes in front of a ridge (1500 m away) and again behind it (4000 m): with the cursor
+// exactly on the far pass and the near pass 5 px off, the near pass is what the user sees there.
+TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
+  const render::Camera camera = test_camera();
+  const std::vector<ViewerTrack> tracks = {
+      track_at({along(camera, 320, 180, 4000.0), along(camera, 325, 180, 1500.0)})};
+  const auto depth = [&](const glm::dvec3& p) { return camera.project(render::to_ecef(p))->depth_m; };
+  const double ridge_depth = depth(along(camera, 320, 180, 2500.0));
+
+  // Without terrain the nearest in pixels wins: the far pass.
+  EXPECT_EQ(pick_track_point(tracks, camera, 320.0, 180.0).point, 0u);
+  // The ridge hides the far pass: the near one wins although it is farther from the cursor.
+  EXPECT_EQ(pick_track_point(tracks, camera, 320.0, 180.0, kPickRadiusPx, ridge_depth).point, 1u);
+  // Terrain beyond both: nothing hidden, the nearest in pixels again.
+  EXPECT_EQ(pick_track_point(tracks, camera, 320.0, 180.0, kPickRadiusPx, depth(tracks[0].ecef[0]) + 500.0).point, 0u);
+  // A hidden point is still picked when it is the only one (the pass draws it as a ghost).
+  const std::vector<ViewerTrack> far_only = {track_at({tracks[0].ecef[0]})};
+  const HoverState ghost = pick_track_point(far_only, camera, 320.0, 180.0, kPickRadiusPx, ridge_depth);
+  EXPECT_EQ(ghost.track, 0);
+  EXPECT_EQ(ghost.point, 0u);
+}
+
+// A point lying on the ground is not hidden by the ground it lies on.
+TEST(TrackPicking, APointOnTheGroundIsNotHiddenByIt) {
+  const render::Camera camera = test_camera();
+  const std::vector<ViewerTrack> tracks = {
+      track_at({along(camera, 320, 180, 5000.0), along(camera, 324, 180, 5002.0)})};
+  const double ground = camera.project(render::to_ecef(tracks[0].ecef[0]))->depth_m;
+  // Both count as visible: the nearer one in pixels wins (the one 2 m behind the ground is not
+  // demoted).
+  EXPECT_EQ(pick_track_point(tracks, camera, 323.0, 180.0, kPickRadiusPx, ground).point, 1u);
+}
+
+}  // namespace
+}  // namespace trailray::app::view
