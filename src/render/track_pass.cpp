@@ -15,7 +15,8 @@ namespace trailray::render {
 namespace {
 
 // Texture units of the track programs.
-constexpr GLuint kPointsUnit = 0, kBlocksUnit = 1, kColormapUnit = 2, kTerrainDistanceUnit = 3, kDropsUnit = 4;
+constexpr GLuint kPointsUnit = 0, kBlocksUnit = 1, kColormapUnit = 2, kTerrainDistanceUnit = 3, kDropsUnit = 4,
+                 kTerrainNormalUnit = 5;
 // The quad's margin for the anti-aliased fringe (pixels), and the shadow quad's (texels).
 constexpr float kFringeMarginPx = 1.0f;  // the fringe reaches half a pixel past the silhouette
 constexpr float kShadowMarginTexels = 1.0f;
@@ -60,6 +61,12 @@ void set_width_uniforms(const ShaderProgram& program, const Camera& camera, cons
   program.set_float("u_pixel_angle", pixel_angle(camera));
   const glm::vec3 forward(camera.axes().forward);
   set_vec3(program, "u_camera_forward", forward);
+}
+
+// A 24-bit depth buffer resolves about d^2 / (near * 2^24) metres at distance d (camera.hpp): k
+// of the shaders' "d * d * k", doubled for the rounding of the depth written and the one tested.
+float depth_step_k(const Camera& camera) {
+  return static_cast<float>(2.0 / (camera.depth_range().near_m * 16777216.0));
 }
 
 void set_color_uniforms(const ShaderProgram& program, const TrackDraw& draw, const TrackSceneSettings& settings) {
@@ -196,8 +203,46 @@ void TrackPass::prepare(std::span<const TrackDraw> tracks, const Camera& camera)
     if (draw.buffer != nullptr) const_cast<TrackBuffer*>(draw.buffer)->set_eye(to_dvec3(camera.position()));
 }
 
+void TrackPass::copy_terrain(const GBuffer& gbuffer) const {
+  TerrainCopy& copy = terrain_copy_;
+  const int width = gbuffer.width(), height = gbuffer.height();
+  if (!copy.target || copy.width != width || copy.height != height || copy.packed != gbuffer.packed_distance()) {
+    copy = TerrainCopy{};
+    copy.distance = make_texture_2d(gbuffer.packed_distance() ? GL_RGBA8 : GL_R32F, width, height);
+    copy.normal = make_texture_2d(GL_RGB10_A2, width, height);
+    copy.source = Framebuffer::create();
+    copy.target = Framebuffer::create();
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy.target.id());
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, copy.distance.id(), 0);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, copy.normal.id(), 0);
+    check_framebuffer_complete(GL_DRAW_FRAMEBUFFER, "track pass terrain copy");
+    copy.width = width;
+    copy.height = height;
+    copy.packed = gbuffer.packed_distance();
+  }
+  // The G-buffer's textures are attached anew each frame: the renderer may hand a different one.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, copy.source.id());
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, gbuffer.distance().id(), 0);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, gbuffer.normal().id(), 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy.target.id());
+  // One attachment at a time: a blit copies its read buffer into every draw buffer.
+  for (const GLenum attachment : {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1}) {
+    glReadBuffer(attachment);
+    const std::array<GLenum, 2> draw{attachment == GL_COLOR_ATTACHMENT0 ? attachment : GL_NONE,
+                                     attachment == GL_COLOR_ATTACHMENT1 ? attachment : GL_NONE};
+    glDrawBuffers(static_cast<GLsizei>(draw.size()), draw.data());
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  // Detach the G-buffer's textures, so no framebuffer but the G-buffer's own keeps them.
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  check_gl("copying the terrain's distance and normal for the track pass");
+}
+
 void TrackPass::draw_visible(const GBuffer& gbuffer, const Camera& camera, std::span<const TrackDraw> tracks,
                              const TrackSceneSettings& settings) const {
+  copy_terrain(gbuffer);
   gbuffer.bind();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -210,6 +255,11 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const Camera& camera, std::
   const std::array<float, 9> rotation = to_float_mat3(camera.view_rotation());
   visible_.set_mat3("u_view_rotation", std::span<const float, 9>(rotation));
   visible_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  visible_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+  visible_.set_int("u_terrain_normal", static_cast<int>(kTerrainNormalUnit));
+  visible_.set_float("u_depth_step_k", depth_step_k(camera));
+  bind_texture(kTerrainDistanceUnit, terrain_copy_.distance);
+  bind_texture(kTerrainNormalUnit, terrain_copy_.normal);
   visible_.set_int("u_orthographic", 0);
   visible_.set_float("u_margin_px", 0.0f);
   visible_.set_int("u_colormap", static_cast<int>(kColormapUnit));
@@ -240,6 +290,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   const glm::vec3 up(enu_axes_at(at.lat_deg, at.lon_deg).up);
   const glm::vec3 sun(glm::normalize(lighting.sun_direction_ecef));
   bind_texture(kTerrainDistanceUnit, gbuffer.distance());
+  bind_texture(kTerrainNormalUnit, gbuffer.normal());
   bind_colormap(settings.colormap, kColormapUnit);
   glBindVertexArray(quads_.id());
 
@@ -277,12 +328,13 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   overlay_.set_int("u_colormap", static_cast<int>(kColormapUnit));
   overlay_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
   overlay_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  overlay_.set_int("u_terrain_normal", static_cast<int>(kTerrainNormalUnit));
+  const std::array<float, 9> rotation = to_float_mat3(camera.view_rotation());
+  overlay_.set_mat3("u_view_rotation", std::span<const float, 9>(rotation));
   overlay_.set_int("u_show_occluded", settings.occlusion.enabled ? 1 : 0);
   overlay_.set_float("u_occluded_alpha", settings.occlusion.alpha);
   overlay_.set_vec2("u_fade", settings.occlusion.fade_near_m, settings.occlusion.fade_far_m);
-  // A 24-bit depth buffer resolves about d^2 / (near * 2^24) metres at distance d (camera.hpp).
-  overlay_.set_float("u_depth_step_k",
-                     static_cast<float>(2.0 / (camera.depth_range().near_m * 16777216.0)));
+  overlay_.set_float("u_depth_step_k", depth_step_k(camera));
   set_vec3(overlay_, "u_sun", sun);
   set_vec3(overlay_, "u_up", up);
   set_vec3(overlay_, "u_sun_radiance", lighting.sun_radiance);

@@ -12,6 +12,9 @@
 // Three draws per frame, each over every segment:
 //   visible  into the G-buffer (albedo, normal, distance, depth-tested against the terrain), so
 //            the sun, the shadows and SSAO light the tracks like the terrain;
+//            where the terrain passes through a tube (a track lying on the ground) it does not
+//            hide it: those hits are drawn here too, in front of the terrain (track_trace.glsl,
+//            terrain_inside_tube), from a copy of the terrain's distances and normals;
 //   overlay  into the overlay target (premultiplied RGBA8 + depth): hits behind the terrain as
 //            translucent "ghosts" (constant alpha down to fade_near_m behind the terrain, fading
 //            to 0 at fade_far_m), the anti-aliased silhouette fringe of visible tubes, and the
@@ -92,7 +95,8 @@ class TrackPass {
   // Rewrites each buffer's block origins for the camera (call once per frame, before drawing).
   static void prepare(std::span<const TrackDraw> tracks, const Camera& camera);
 
-  // Into the bound G-buffer (as TerrainPass left it: the terrain's depth in the depth buffer).
+  // Into the G-buffer (as TerrainPass left it: the terrain's depth in the depth buffer, no
+  // tracks yet); binds it.
   void draw_visible(const GBuffer& gbuffer, const Camera& camera, std::span<const TrackDraw> tracks,
                     const TrackSceneSettings& settings) const;
 
@@ -121,6 +125,17 @@ class TrackPass {
   mutable Texture colormap_;  // 256x1 SRGB8_ALPHA8, remade when the map changes
   mutable std::optional<Colormap> colormap_loaded_;
   void bind_colormap(Colormap map, GLuint unit) const;
+  // The terrain's distance and normal, copied out of the G-buffer for draw_visible, which reads
+  // them while it writes the G-buffer (sampling an attached texture would be a feedback loop).
+  // Remade when the frame's size or distance encoding changes.
+  struct TerrainCopy {
+    Texture distance, normal;
+    Framebuffer source, target;  // reads the G-buffer's textures; draws into the copies
+    int width = 0, height = 0;
+    bool packed = false;
+  };
+  mutable TerrainCopy terrain_copy_;
+  void copy_terrain(const GBuffer& gbuffer) const;
 };
 
 }  // namespace trailray::render

@@ -3,7 +3,8 @@
 // premultiplied target with its own depth and no blending, so each pixel keeps only the nearest
 // track surface and is blended over the frame exactly once:
 //   - hits the terrain hides: a translucent "ghost", constant alpha down to u_fade.x metres
-//     behind the terrain, fading to 0 at u_fade.y (thesis §3.2.4);
+//     behind the terrain, fading to 0 at u_fade.y (thesis §3.2.4); not where the terrain passes
+//     through the tube (terrain_inside_tube): track_visible.frag draws those hits opaque;
 //   - visible hits: transparent, but with their depth, so nothing behind them shows through;
 //   - the anti-aliased fringe just outside a tube's silhouette (pushed back by the radius, so a
 //     neighbouring tube's surface always wins over it).
@@ -18,6 +19,8 @@ precision highp int;
 #include "track_trace.glsl"
 
 uniform highp sampler2D u_terrain_distance;  // the G-buffer's distance before the tracks
+uniform highp sampler2D u_terrain_normal;    // and its normal
+uniform mat3 u_view_rotation;                // ECEF directions -> view space
 uniform bool u_packed_distance;
 uniform bool u_show_occluded;
 uniform float u_occluded_alpha;
@@ -49,13 +52,23 @@ float visibility_alpha(float t, float terrain) {
   return u_occluded_alpha * (1.0 - fade);
 }
 
+// visibility_alpha, but 1 where the terrain passes through the tube (the same test with the same
+// inputs as track_visible.frag's, which draws the tube there: each pixel once).
+float tube_alpha(vec3 direction, float terrain, float t) {
+  float alpha = visibility_alpha(t, terrain);
+  if (alpha >= 1.0 || !terrain_near_tube(terrain, t)) return alpha;
+  vec3 terrain_normal =
+      transpose(u_view_rotation) * decode_normal(texelFetch(u_terrain_normal, ivec2(gl_FragCoord.xy), 0));
+  return terrain_inside_tube(direction, terrain, terrain_normal) ? 1.0 : alpha;
+}
+
 void main() {
   vec3 direction = normalize(v_position);
   CapsuleHit hit = trace_capsule(vec3(0.0), direction, true);
   if (hit.clipped) discard;
   float terrain = read_distance(u_terrain_distance, ivec2(gl_FragCoord.xy), u_packed_distance);
   if (hit.hit) {
-    float alpha = visibility_alpha(hit.t, terrain);
+    float alpha = tube_alpha(direction, terrain, hit.t);
     gl_FragDepth = window_depth(hit.position);
     if (alpha >= 1.0) {
       overlay = vec4(0.0);  // in the G-buffer already: only its depth matters here
@@ -66,18 +79,9 @@ void main() {
     return;
   }
   // The fringe: how far the ray passes outside the tube, in pixels at that distance.
-  vec3 axis = v_x2 - v_x1;
+  vec3 on_axis = axis_nearest_ray(direction);
   float shift = dot(0.5 * (v_x1 + v_x2), direction);
   vec3 o = direction * shift;  // the ray's point nearest the segment's middle
-  // Closest approach of the ray (o + t d) and the segment: minimise over the segment parameter.
-  float length2 = dot(axis, axis);
-  float s = 0.0;
-  if (length2 > 0.0) {
-    vec3 axis_across = axis - direction * dot(axis, direction);
-    float across2 = dot(axis_across, axis_across);
-    s = across2 > 1.0e-12 * length2 ? clamp(dot(o - v_x1, axis_across) / across2, 0.0, 1.0) : 0.0;
-  }
-  vec3 on_axis = v_x1 + axis * s;
   float t_local = dot(on_axis - o, direction);
   vec3 on_ray = o + direction * t_local;
   float t = shift + t_local;
@@ -91,7 +95,7 @@ void main() {
   vec3 normal = outward / miss;
   vec3 edge = on_axis + normal * radius;
   if (clipped_by_joints(edge)) discard;
-  float alpha = coverage * visibility_alpha(t, terrain);
+  float alpha = coverage * tube_alpha(direction, terrain, t);
   if (alpha <= 0.0) discard;
   gl_FragDepth = window_depth(edge + direction * radius);
   overlay = vec4(lit(track_albedo(edge), normal) * alpha, alpha);

@@ -116,6 +116,53 @@ CapsuleHit trace_capsule(vec3 origin, vec3 direction, bool in_front_only) {
   return result;
 }
 
+// The point of this capsule's axis segment nearest the ray from the camera along unit
+// `direction`: where the pixel's ray passes through the tube's middle (or, outside it, closest).
+vec3 axis_nearest_ray(vec3 direction) {
+  vec3 axis = v_x2 - v_x1;
+  float shift = dot(0.5 * (v_x1 + v_x2), direction);
+  vec3 o = direction * shift;  // the ray's point nearest the segment's middle
+  // Closest approach of the ray (o + t d) and the segment: minimise over the segment parameter.
+  float length2 = dot(axis, axis);
+  float s = 0.0;
+  if (length2 > 0.0) {
+    vec3 axis_across = axis - direction * dot(axis, direction);
+    float across2 = dot(axis_across, axis_across);
+    s = across2 > 1.0e-12 * length2 ? clamp(dot(o - v_x1, axis_across) / across2, 0.0, 1.0) : 0.0;
+  }
+  return v_x1 + axis * s;
+}
+
+// --- terrain inside the tube ---
+// A track lying on the ground (a hike whose heights are the DEM's, a track without heights on
+// the neutral ground) has the lower half of its tube below the surface; seen obliquely, the rays
+// near its near-side silhouette meet the ground first, in front of the tube, then the tube
+// underground. Terrain that passes through the tube is not what the occlusion is about (a ridge
+// in front, a forest canopy above a hike: thesis section 3.2.4), so it does not hide the tube.
+// The test: the terrain's tangent plane where this pixel sees it (distance and normal from the
+// G-buffer) passes within the tube's radius of the axis point where the pixel's ray passes
+// through the tube (axis_nearest_ray). The surface point itself is rarely that close (on flat
+// ground the ray meets it up to r / sin(incidence) from the axis), but the plane through it cuts
+// the tube exactly when the ground does. Where a track runs into a slope, this shows the tube
+// whole as long as the slope cuts its cross-section, i.e. until it is buried. The tangent plane
+// is only a local model of the terrain, so a ray that runs more than kMaxUndergroundRadii radii
+// below the surface before it meets the tube (terrain_near_tube) keeps it hidden (for a tube
+// centred on flat ground that happens only where the view grazes the ground at under 3 degrees).
+// Camera-relative positions throughout: the terrain point and the axis are both near the tube,
+// and their difference keeps its precision at any distance from the ECEF origin.
+const float kMaxUndergroundRadii = 20.0;
+
+// Whether terrain_inside_tube can hold at all: terrain there, and the tube not too far below it
+// (checked first, so that a track far behind a ridge skips the normal's fetch).
+bool terrain_near_tube(float terrain, float t) {
+  return terrain > 0.0 && t - terrain <= kMaxUndergroundRadii * v_radii.y;
+}
+
+bool terrain_inside_tube(vec3 direction, float terrain, vec3 terrain_normal) {
+  float height = dot(axis_nearest_ray(direction) - direction * terrain, terrain_normal);
+  return abs(height) <= v_radii.y;
+}
+
 // Window depth of a camera-relative point (for gl_FragDepth), clamped to the depth range.
 float window_depth(vec3 p) {
   vec4 clip = u_view_projection * vec4(p, 1.0);

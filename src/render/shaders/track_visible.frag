@@ -3,6 +3,11 @@
 // view-space normal, distance from the camera), with gl_FragDepth from the hit, so terrain and
 // tracks hide each other per pixel and the compose pass lights them with the sun, the shadows
 // and SSAO.
+// Where the terrain passes through the tube (terrain_inside_tube: a track lying on the ground),
+// a hit below the surface is drawn too: its depth is pulled just in front of the terrain's so
+// the depth test keeps it, and its distance is the terrain's, so the lighting (shadows, SSAO,
+// haze) sees the surface the tube lies in rather than a point under the ground, which the
+// terrain itself would shadow.
 precision highp float;
 precision highp int;
 
@@ -12,16 +17,38 @@ precision highp int;
 
 uniform mat3 u_view_rotation;  // ECEF directions -> view space
 uniform bool u_packed_distance;
+// The terrain's distance and normal: copies of the G-buffer's (TrackPass::draw_visible makes
+// them), as this pass writes the G-buffer itself.
+uniform highp sampler2D u_terrain_distance;
+uniform highp sampler2D u_terrain_normal;
+uniform float u_depth_step_k;  // depth-buffer resolution at distance d: d * d * k metres
 
 layout(location = 0) out vec4 g_albedo;
 layout(location = 1) out vec4 g_normal;
 layout(location = 2) out vec4 g_distance;
 
 void main() {
-  CapsuleHit hit = trace_capsule(vec3(0.0), normalize(v_position), true);
+  vec3 direction = normalize(v_position);
+  CapsuleHit hit = trace_capsule(vec3(0.0), direction, true);
   if (!hit.hit) discard;
+  float distance_m = hit.t;
+  float depth = window_depth(hit.position);
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float terrain = read_distance(u_terrain_distance, pixel, u_packed_distance);
+  // Two depth steps and a little more than the packed distance's rounding: in front of the
+  // terrain by this much, the depth test keeps the tube whatever the rounding of either depth.
+  // Also wider than the overlay's margin (visibility_alpha), so that wherever the overlay asks
+  // whether the terrain is inside the tube, this pass has asked it too.
+  float margin = 0.1 + 2.0 * terrain * terrain * u_depth_step_k;
+  if (hit.t > terrain - margin && terrain_near_tube(terrain, hit.t)) {
+    vec3 terrain_normal = transpose(u_view_rotation) * decode_normal(texelFetch(u_terrain_normal, pixel, 0));
+    if (terrain_inside_tube(direction, terrain, terrain_normal)) {
+      distance_m = min(hit.t, terrain);
+      depth = min(depth, window_depth(direction * (terrain - margin)));
+    }
+  }
   g_albedo = vec4(track_albedo(hit.position), 0.0);  // alpha 0: a track (compose.frag: less haze)
   g_normal = encode_normal(normalize(u_view_rotation * hit.normal));
-  g_distance = u_packed_distance ? pack_distance(hit.t) : vec4(hit.t, 0.0, 0.0, 1.0);
-  gl_FragDepth = window_depth(hit.position);
+  g_distance = u_packed_distance ? pack_distance(distance_m) : vec4(distance_m, 0.0, 0.0, 1.0);
+  gl_FragDepth = depth;
 }
