@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace trailray::render {
 namespace {
@@ -27,22 +30,22 @@ struct PanelMetrics {
   int usable_width, usable_height;  // what the panel may take: the image less margins and reserve
 };
 
-PanelMetrics panel_metrics(const RgbaImage& image, const LegendOptions& options) {
-  const int font_px = options.font_px > 0 ? options.font_px : legend_font_px(image.height);
+PanelMetrics panel_metrics(std::uint32_t image_width, std::uint32_t image_height, const LegendOptions& options) {
+  const int font_px = options.font_px > 0 ? options.font_px : legend_font_px(image_height);
   const int margin = scaled(font_px, 0.8f, 2);
   return {font_px,
           margin,
           scaled(font_px, 0.6f, 2),
           scaled(font_px, 0.4f, 1),
-          static_cast<int>(image.width) - 2 * margin,
-          static_cast<int>(image.height) - 2 * margin - std::max(options.reserved_bottom, 0)};
+          static_cast<int>(image_width) - 2 * margin,
+          static_cast<int>(image_height) - 2 * margin - std::max(options.reserved_bottom, 0)};
 }
 
 // The panel's rectangle: content of the given size plus padding, in the bottom-left corner.
-PixelRect place_panel(const RgbaImage& image, const PanelMetrics& m, const LegendOptions& options, int content_width,
-                      int content_height) {
+PixelRect place_panel(std::uint32_t image_height, const PanelMetrics& m, const LegendOptions& options,
+                      int content_width, int content_height) {
   const int width = content_width + 2 * m.padding, height = content_height + 2 * m.padding;
-  return {m.margin, static_cast<int>(image.height) - m.margin - std::max(options.reserved_bottom, 0) - height, width,
+  return {m.margin, static_cast<int>(image_height) - m.margin - std::max(options.reserved_bottom, 0) - height, width,
           height};
 }
 
@@ -64,6 +67,95 @@ void draw_frame(RgbaImage& image, const PixelRect& inner, int thickness, glm::u8
   fill_rect(image, {inner.right(), inner.y, thickness, inner.height}, color);
 }
 
+// Where everything of a colour legend goes, measured but not drawn: draw_color_legend paints
+// it, color_legend_panel reports its panel (so a picture can be framed around the legend that
+// will be drawn, not around a guess of its size).
+struct ColorLegendGeometry {
+  PanelMetrics m;
+  int frame, title_gap, bar_height, tick_length, tick_width, label_gap;
+  TextExtent min_extent, max_extent, title_extent;
+  int bar_width, content_width;
+  std::string title;  // ellipsized to the panel
+  PixelRect panel;
+};
+
+std::optional<ColorLegendGeometry> color_legend_geometry(std::uint32_t image_width, std::uint32_t image_height,
+                                                         TextRasterizer& text, const ColorLegend& legend,
+                                                         const LegendOptions& options) {
+  ColorLegendGeometry g;
+  g.m = panel_metrics(image_width, image_height, options);
+  const int f = g.m.font_px;
+  g.frame = scaled(f, 1.0f / 20.0f, 1);
+  g.title_gap = scaled(f, 0.4f, 1);
+  g.bar_height = scaled(f, 0.8f, 3);
+  g.tick_length = scaled(f, 0.3f, 2);
+  g.tick_width = scaled(f, 1.0f / 14.0f, 1);
+  g.label_gap = scaled(f, 0.15f, 1);
+
+  g.min_extent = text.measure(legend.min_label, f);
+  g.max_extent = text.measure(legend.max_label, f);
+  g.title_extent = text.measure(legend.title, f, FontWeight::bold);
+  const bool has_title = !legend.title.empty();
+  // The bar spans the panel; it is wide enough to set the two range labels apart.
+  const int labels_width = g.min_extent.width + g.max_extent.width + f;
+  g.bar_width = std::min(std::max({scaled(f, 12.0f, 1), labels_width, g.title_extent.width - 2 * g.frame}),
+                         g.m.usable_width - 2 * g.m.padding - 2 * g.frame);
+  g.content_width = g.bar_width + 2 * g.frame;
+  const int content_height = (has_title ? g.title_extent.height() + g.title_gap : 0) + g.bar_height + 2 * g.frame +
+                             g.tick_length + g.label_gap + g.min_extent.height();
+  if (g.bar_width < labels_width || content_height + 2 * g.m.padding > g.m.usable_height) return std::nullopt;
+  g.title = text.ellipsize(legend.title, std::numeric_limits<std::size_t>::max(), g.content_width, f, FontWeight::bold);
+  g.panel = place_panel(image_height, g.m, options, g.content_width, content_height);
+  return g;
+}
+
+// The same for a key of track names.
+struct TrackKeyGeometry {
+  PanelMetrics m;
+  int swatch_width, swatch_thickness, swatch_gap;
+  TextExtent line;
+  int row_height;
+  std::size_t listed = 0, hidden = 0;
+  std::vector<std::string> names;  // the listed names, ellipsized
+  std::string more;                // "+N more", or empty
+  int row_count;
+  PixelRect panel;
+};
+
+std::optional<TrackKeyGeometry> track_key_geometry(std::uint32_t image_width, std::uint32_t image_height,
+                                                   TextRasterizer& text, const std::vector<TrackKeyEntry>& entries,
+                                                   const LegendOptions& options) {
+  if (entries.empty()) return std::nullopt;
+  TrackKeyGeometry g;
+  g.m = panel_metrics(image_width, image_height, options);
+  const int f = g.m.font_px;
+  g.swatch_width = scaled(f, 1.6f, 4);
+  g.swatch_thickness = scaled(f, 0.35f, 2);
+  g.swatch_gap = scaled(f, 0.5f, 2);
+  g.line = text.measure("", f);
+  g.row_height = g.line.height() + scaled(f, 0.3f, 1);
+  const int max_name_width = g.m.usable_width - 2 * g.m.padding - g.swatch_width - g.swatch_gap;
+  const int rows_that_fit = (g.m.usable_height - 2 * g.m.padding) / g.row_height;
+  const int rows = std::min(rows_that_fit, static_cast<int>(kMaxTrackKeyRows));
+  if (max_name_width < 2 * f || rows < 1) return std::nullopt;
+
+  g.listed = entries.size() <= static_cast<std::size_t>(rows) ? entries.size() : static_cast<std::size_t>(rows - 1);
+  g.hidden = entries.size() - g.listed;
+  int names_width = 0;
+  for (std::size_t i = 0; i < g.listed; ++i) {
+    g.names.push_back(text.ellipsize(entries[i].name, kMaxTrackNameCodePoints, max_name_width, f));
+    names_width = std::max(names_width, text.measure(g.names.back(), f).width);
+  }
+  g.more = g.hidden > 0 ? text.ellipsize("+" + std::to_string(g.hidden) + " more", kMaxTrackNameCodePoints,
+                                         max_name_width + g.swatch_width + g.swatch_gap, f)
+                        : std::string();
+  const int more_width = text.measure(g.more, f).width;
+  const int content_width = std::max(g.swatch_width + g.swatch_gap + names_width, more_width);
+  g.row_count = static_cast<int>(g.listed) + (g.hidden > 0 ? 1 : 0);
+  g.panel = place_panel(image_height, g.m, options, content_width, g.row_count * g.row_height);
+  return g;
+}
+
 }  // namespace
 
 int legend_font_px(std::uint32_t image_height) { return std::clamp(static_cast<int>(image_height / 45), 11, 40); }
@@ -83,41 +175,38 @@ std::string format_legend_value(double value, double span) {
   return text;
 }
 
+PixelRect color_legend_panel(std::uint32_t image_width, std::uint32_t image_height, TextRasterizer& text,
+                             const ColorLegend& legend, const LegendOptions& options) {
+  const auto g = color_legend_geometry(image_width, image_height, text, legend, options);
+  return g ? g->panel : PixelRect{};
+}
+
+PixelRect track_key_panel(std::uint32_t image_width, std::uint32_t image_height, TextRasterizer& text,
+                          const std::vector<TrackKeyEntry>& entries, const LegendOptions& options) {
+  const auto g = track_key_geometry(image_width, image_height, text, entries, options);
+  return g ? g->panel : PixelRect{};
+}
+
 LegendLayout draw_color_legend(RgbaImage& image, TextRasterizer& text, const ColorLegend& legend,
                                const LegendOptions& options) {
-  const PanelMetrics m = panel_metrics(image, options);
-  const int f = m.font_px;
-  const int frame = scaled(f, 1.0f / 20.0f, 1);
-  const int title_gap = scaled(f, 0.4f, 1), bar_height = scaled(f, 0.8f, 3);
-  const int tick_length = scaled(f, 0.3f, 2), tick_width = scaled(f, 1.0f / 14.0f, 1);
-  const int label_gap = scaled(f, 0.15f, 1);
-
-  const TextExtent min_extent = text.measure(legend.min_label, f), max_extent = text.measure(legend.max_label, f);
-  const TextExtent title_extent = text.measure(legend.title, f, FontWeight::bold);
-  const bool has_title = !legend.title.empty();
-  // The bar spans the panel; it is wide enough to set the two range labels apart.
-  const int labels_width = min_extent.width + max_extent.width + f;
-  const int bar_width = std::min(std::max({scaled(f, 12.0f, 1), labels_width, title_extent.width - 2 * frame}),
-                                 m.usable_width - 2 * m.padding - 2 * frame);
-  const int content_width = bar_width + 2 * frame;
-  const int content_height = (has_title ? title_extent.height() + title_gap : 0) + bar_height + 2 * frame +
-                             tick_length + label_gap + min_extent.height();
-  if (bar_width < labels_width || content_height + 2 * m.padding > m.usable_height) return {};
-  const std::string title =
-      text.ellipsize(legend.title, std::numeric_limits<std::size_t>::max(), content_width, f, FontWeight::bold);
+  const auto geometry = color_legend_geometry(image.width, image.height, text, legend, options);
+  if (!geometry) return {};
+  const ColorLegendGeometry& g = *geometry;
+  const int f = g.m.font_px, frame = g.frame, bar_width = g.bar_width, bar_height = g.bar_height;
+  const int tick_length = g.tick_length, tick_width = g.tick_width, content_width = g.content_width;
 
   LegendLayout layout;
   layout.drawn = true;
   layout.font_px = f;
-  layout.panel = place_panel(image, m, options, content_width, content_height);
-  fill_rounded_rect(image, layout.panel, m.radius, kPanelColor);
-  const int left = layout.panel.x + m.padding;
-  int top = layout.panel.y + m.padding;
+  layout.panel = g.panel;
+  fill_rounded_rect(image, layout.panel, g.m.radius, kPanelColor);
+  const int left = layout.panel.x + g.m.padding;
+  int top = layout.panel.y + g.m.padding;
 
-  if (has_title) {
+  if (!legend.title.empty()) {
     layout.text_boxes.push_back(
-        text.draw(image, title, left, top + title_extent.ascent, {f, FontWeight::bold, kTextColor}));
-    top += title_extent.height() + title_gap;
+        text.draw(image, g.title, left, top + g.title_extent.ascent, {f, FontWeight::bold, kTextColor}));
+    top += g.title_extent.height() + g.title_gap;
   }
 
   layout.bar = {left + frame, top + frame, bar_width, bar_height};
@@ -131,8 +220,8 @@ LegendLayout draw_color_legend(RgbaImage& image, TextRasterizer& text, const Col
 
   // Ticks hang from the frame at the ends and at the inner labels; the labels sit under them.
   const int tick_top = layout.bar.bottom() + frame;
-  const int label_top = tick_top + tick_length + label_gap;
-  const int baseline = label_top + min_extent.ascent;
+  const int label_top = tick_top + tick_length + g.label_gap;
+  const int baseline = label_top + g.min_extent.ascent;
   const auto tick_x = [&](double position) {
     return layout.bar.x + static_cast<int>(std::lround(std::clamp(position, 0.0, 1.0) * (bar_width - 1)));
   };
@@ -145,7 +234,7 @@ LegendLayout draw_color_legend(RgbaImage& image, TextRasterizer& text, const Col
   const TextStyle label_style{f, FontWeight::regular, kTextColor};
   layout.text_boxes.push_back(text.draw(image, legend.min_label, left, baseline, label_style));
   layout.text_boxes.push_back(
-      text.draw(image, legend.max_label, left + content_width - max_extent.width, baseline, label_style));
+      text.draw(image, legend.max_label, left + content_width - g.max_extent.width, baseline, label_style));
 
   // Inner labels, centred on their ticks, kept when they clear every label already placed by
   // half an em (overlapping numbers would be unreadable).
@@ -168,56 +257,36 @@ LegendLayout draw_color_legend(RgbaImage& image, TextRasterizer& text, const Col
 
 LegendLayout draw_track_key(RgbaImage& image, TextRasterizer& text, const std::vector<TrackKeyEntry>& entries,
                             const LegendOptions& options) {
-  if (entries.empty()) return {};
-  const PanelMetrics m = panel_metrics(image, options);
-  const int f = m.font_px;
-  const int swatch_width = scaled(f, 1.6f, 4), swatch_thickness = scaled(f, 0.35f, 2);
-  const int swatch_gap = scaled(f, 0.5f, 2);
-  const TextExtent line = text.measure("", f);
-  const int row_height = line.height() + scaled(f, 0.3f, 1);
-  const int max_name_width = m.usable_width - 2 * m.padding - swatch_width - swatch_gap;
-  const int rows_that_fit = (m.usable_height - 2 * m.padding) / row_height;
-  const int rows = std::min(rows_that_fit, static_cast<int>(kMaxTrackKeyRows));
-  if (max_name_width < 2 * f || rows < 1) return {};
+  const auto geometry = track_key_geometry(image.width, image.height, text, entries, options);
+  if (!geometry) return {};
+  const TrackKeyGeometry& g = *geometry;
+  const int f = g.m.font_px;
 
   LegendLayout layout;
-  const auto listed =
-      entries.size() <= static_cast<std::size_t>(rows) ? entries.size() : static_cast<std::size_t>(rows - 1);
-  layout.hidden_entries = entries.size() - listed;
-  std::vector<std::string> names;
-  int names_width = 0;
-  for (std::size_t i = 0; i < listed; ++i) {
-    names.push_back(text.ellipsize(entries[i].name, kMaxTrackNameCodePoints, max_name_width, f));
-    names_width = std::max(names_width, text.measure(names.back(), f).width);
-  }
-  const std::string more = layout.hidden_entries > 0
-                               ? text.ellipsize("+" + std::to_string(layout.hidden_entries) + " more",
-                                                kMaxTrackNameCodePoints, max_name_width + swatch_width + swatch_gap, f)
-                               : std::string();
-  const int more_width = text.measure(more, f).width;
-  const int content_width = std::max(swatch_width + swatch_gap + names_width, more_width);
-  const int row_count = static_cast<int>(listed) + (layout.hidden_entries > 0 ? 1 : 0);
-
+  layout.hidden_entries = g.hidden;
   layout.drawn = true;
   layout.font_px = f;
-  layout.panel = place_panel(image, m, options, content_width, row_count * row_height);
-  fill_rounded_rect(image, layout.panel, m.radius, kPanelColor);
-  const int left = layout.panel.x + m.padding;
+  layout.panel = g.panel;
+  fill_rounded_rect(image, layout.panel, g.m.radius, kPanelColor);
+  const int left = layout.panel.x + g.m.padding;
   const TextStyle name_style{f, FontWeight::regular, kTextColor};
-  for (int row = 0; row < row_count; ++row) {
-    const int baseline = layout.panel.y + m.padding + row * row_height + (row_height - line.height()) / 2 + line.ascent;
-    if (static_cast<std::size_t>(row) == listed) {
-      layout.text_boxes.push_back(text.draw(image, more, left, baseline, {f, FontWeight::regular, kQuietTextColor}));
+  for (int row = 0; row < g.row_count; ++row) {
+    const int baseline =
+        layout.panel.y + g.m.padding + row * g.row_height + (g.row_height - g.line.height()) / 2 + g.line.ascent;
+    if (static_cast<std::size_t>(row) == g.listed) {
+      layout.text_boxes.push_back(text.draw(image, g.more, left, baseline, {f, FontWeight::regular, kQuietTextColor}));
       break;
     }
     // A short thick line, as the track itself looks, centred on the lower-case letters' middle.
-    const glm::vec3 requested = entries[row].color_srgb;
+    const glm::vec3 requested = entries[static_cast<std::size_t>(row)].color_srgb;
     const glm::vec3 safe = glm::any(glm::isnan(requested)) ? kMissingValueColorSrgb : requested;
     const glm::vec3 color = glm::round(glm::clamp(safe, 0.0f, 1.0f) * 255.0f);
-    const PixelRect swatch{left, baseline - scaled(f, 0.32f, 1) - swatch_thickness / 2, swatch_width, swatch_thickness};
-    fill_rounded_rect(image, swatch, swatch_thickness / 2, glm::u8vec4(glm::u8vec3(color), 255));
+    const PixelRect swatch{left, baseline - scaled(f, 0.32f, 1) - g.swatch_thickness / 2, g.swatch_width,
+                           g.swatch_thickness};
+    fill_rounded_rect(image, swatch, g.swatch_thickness / 2, glm::u8vec4(glm::u8vec3(color), 255));
     layout.swatches.push_back(swatch);
-    layout.text_boxes.push_back(text.draw(image, names[row], left + swatch_width + swatch_gap, baseline, name_style));
+    layout.text_boxes.push_back(text.draw(image, g.names[static_cast<std::size_t>(row)],
+                                          left + g.swatch_width + g.swatch_gap, baseline, name_style));
   }
   return layout;
 }

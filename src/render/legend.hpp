@@ -80,4 +80,12 @@ LegendLayout draw_color_legend(RgbaImage& image, TextRasterizer& text, const Col
 LegendLayout draw_track_key(RgbaImage& image, TextRasterizer& text, const std::vector<TrackKeyEntry>& entries,
                             const LegendOptions& options = {});
 
+// The panel the functions above would draw in an image of that size, measured by the same
+// layout code without drawing anything (so the picture can be framed around the legend before
+// it is rendered); empty where they would draw nothing.
+PixelRect color_legend_panel(std::uint32_t image_width, std::uint32_t image_height, TextRasterizer& text,
+                             const ColorLegend& legend, const LegendOptions& options = {});
+PixelRect track_key_panel(std::uint32_t image_width, std::uint32_t image_height, TextRasterizer& text,
+                          const std::vector<TrackKeyEntry>& entries, const LegendOptions& options = {});
+
 }  // namespace trailray::render

@@ -52,6 +52,12 @@ void expect_changes_only_inside(const RgbaImage& before, const RgbaImage& after,
       }
 }
 
+void expect_same_rect(const PixelRect& a, const PixelRect& b) {
+  EXPECT_TRUE(a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height)
+      << a.x << "," << a.y << " " << a.width << "x" << a.height << " is not " << b.x << "," << b.y << " " << b.width
+      << "x" << b.height;
+}
+
 bool inside_image(const PixelRect& rect, const RgbaImage& image) {
   return PixelRect{0, 0, int(image.width), int(image.height)}.contains(rect);
 }
@@ -310,6 +316,8 @@ TEST(Legends, StayInsideTheImageForManySizesAndVanishWhenTheyCannotFit) {
     const RgbaImage before = filled(size.x, size.y, kForest);
     RgbaImage image = before;
     const LegendLayout bar = draw_color_legend(image, text, speed_legend());
+    // Measured without drawing: the same panel (what the framing keeps clear), or none.
+    expect_same_rect(color_legend_panel(size.x, size.y, text, speed_legend()), bar.drawn ? bar.panel : PixelRect{});
     if (bar.drawn) {
       EXPECT_TRUE(inside_image(bar.panel, image));
       expect_changes_only_inside(before, image, bar.panel);
@@ -318,6 +326,7 @@ TEST(Legends, StayInsideTheImageForManySizesAndVanishWhenTheyCannotFit) {
     }
     image = before;
     const LegendLayout key = draw_track_key(image, text, tracks(15));
+    expect_same_rect(track_key_panel(size.x, size.y, text, tracks(15)), key.drawn ? key.panel : PixelRect{});
     if (key.drawn) {
       EXPECT_TRUE(inside_image(key.panel, image));
       expect_changes_only_inside(before, image, key.panel);
