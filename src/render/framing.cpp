@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -23,6 +24,9 @@ constexpr double kShortAxisTie = 1e-6;
 // Bisection on the distance stops at this relative precision.
 constexpr double kDistanceTolerance = 1e-4;
 constexpr int kCentringRounds = 6;
+// A framing clear of the kept-clear corner must be this much closer than one that moves the
+// points less to be preferred.
+constexpr double kCloserBy = 0.01;
 
 std::string number(double v) {
   std::ostringstream s;
@@ -106,14 +110,24 @@ double short_axis_heading(const std::vector<Point2>& hull, double preferred_deg)
   return best;
 }
 
-// Where the points land in the image of a camera: their pixel bounds, and whether all are in
-// front of it.
+// A rectangle of the image in pixels (x right, y down from the top-left corner).
+struct PixelBox {
+  double left = 0.0, top = 0.0, right = 0.0, bottom = 0.0;
+  bool contains(double x, double y) const { return x >= left && x <= right && y >= top && y <= bottom; }
+  double width() const { return right - left; }
+  double height() const { return bottom - top; }
+};
+
+// Where the points land in the image of a camera: their pixel bounds, whether all are in front
+// of it, and whether any falls into `clear` (when given).
 struct PixelBounds {
   double min_x = std::numeric_limits<double>::infinity(), max_x = -std::numeric_limits<double>::infinity();
   double min_y = std::numeric_limits<double>::infinity(), max_y = -std::numeric_limits<double>::infinity();
   bool all_in_front = true;
+  bool enters_clear = false;
 };
-PixelBounds pixel_bounds(const Camera& camera, const std::vector<glm::dvec3>& points) {
+PixelBounds pixel_bounds(const Camera& camera, const std::vector<glm::dvec3>& points,
+                         const std::optional<PixelBox>& clear = std::nullopt) {
   // project() for every point, with the matrices taken once.
   const glm::dmat3 rotation = camera.view_rotation();
   const glm::dmat4 projection = camera.projection();
@@ -131,8 +145,53 @@ PixelBounds pixel_bounds(const Camera& camera, const std::vector<glm::dvec3>& po
     const double y = 0.5 * (1.0 - projection[1][1] * v.y / depth) * height;
     b.min_x = std::min(b.min_x, x), b.max_x = std::max(b.max_x, x);
     b.min_y = std::min(b.min_y, y), b.max_y = std::max(b.max_y, y);
+    if (clear && clear->contains(x, y)) b.enters_clear = true;
   }
   return b;
+}
+
+// What a framing aims for: the points inside `box`, their image centred in it, none in `clear`.
+struct FramingGoal {
+  PixelBox box;
+  std::optional<PixelBox> clear;
+};
+
+// The rectangle of a kept-clear corner in the image.
+PixelBox corner_box(const KeptClearCorner& corner, double width, double height) {
+  const bool left = corner.corner == ImageCorner::top_left || corner.corner == ImageCorner::bottom_left;
+  const bool top = corner.corner == ImageCorner::top_left || corner.corner == ImageCorner::top_right;
+  return {left ? 0.0 : width - corner.width_px, top ? 0.0 : height - corner.height_px, left ? corner.width_px : width,
+          top ? corner.height_px : height};
+}
+
+// Where the points may go when the centred framing puts some into the kept-clear corner, in the
+// order of preference (the least moved first): the whole image, points kept out one by one
+// (which only moves them further away); then the box's edge next to the corner moved a third,
+// two thirds and all the way past it, vertically (the points above or below the corner) and
+// horizontally (beside it). Boxes too thin to hold anything, or whose centre lies in the corner
+// (shrinking towards it never clears the corner), are left out.
+std::vector<PixelBox> clearing_boxes(const PixelBox& margins, const PixelBox& clear, ImageCorner corner) {
+  const bool left = corner == ImageCorner::top_left || corner == ImageCorner::bottom_left;
+  const bool top = corner == ImageCorner::top_left || corner == ImageCorner::top_right;
+  std::vector<PixelBox> boxes{margins};
+  for (const double fraction : {1.0 / 3.0, 2.0 / 3.0, 1.0}) {
+    PixelBox vertical = margins, horizontal = margins;
+    if (top)
+      vertical.top = std::max(margins.top, margins.top + fraction * (clear.bottom - margins.top));
+    else
+      vertical.bottom = std::min(margins.bottom, margins.bottom - fraction * (margins.bottom - clear.top));
+    if (left)
+      horizontal.left = std::max(margins.left, margins.left + fraction * (clear.right - margins.left));
+    else
+      horizontal.right = std::min(margins.right, margins.right - fraction * (margins.right - clear.left));
+    boxes.push_back(vertical);
+    boxes.push_back(horizontal);
+  }
+  std::erase_if(boxes, [&](const PixelBox& b) {
+    return !(b.width() >= 1.0 && b.height() >= 1.0) ||
+           clear.contains(0.5 * (b.left + b.right), 0.5 * (b.top + b.bottom));
+  });
+  return boxes;
 }
 
 class Framer {
@@ -148,40 +207,43 @@ class Framer {
     return *c.value;
   }
 
-  bool fits(const LookAt& look_at) const {
-    const PixelBounds b = pixel_bounds(camera(look_at), points_);
-    const double mx = options_.margin_fraction * options_.lens.width_px;
-    const double my = options_.margin_fraction * options_.lens.height_px;
-    return b.all_in_front && b.min_x >= mx && b.max_x <= options_.lens.width_px - mx && b.min_y >= my &&
-           b.max_y <= options_.lens.height_px - my;
+  bool fits(const LookAt& look_at, const FramingGoal& goal) const {
+    const PixelBounds b = pixel_bounds(camera(look_at), points_, goal.clear);
+    return b.all_in_front && !b.enters_clear && b.min_x >= goal.box.left && b.max_x <= goal.box.right &&
+           b.min_y >= goal.box.top && b.max_y <= goal.box.bottom;
+  }
+
+  bool enters(const LookAt& look_at, const PixelBox& clear) const {
+    return pixel_bounds(camera(look_at), points_, clear).enters_clear;
   }
 
   // The smallest distance (not below `min_distance`) at which the points fit; nullopt if none.
-  std::optional<double> fitting_distance(LookAt look_at, double min_distance) const {
+  std::optional<double> fitting_distance(LookAt look_at, double min_distance, const FramingGoal& goal) const {
     look_at.distance_m = min_distance;
-    if (fits(look_at)) return min_distance;
+    if (fits(look_at, goal)) return min_distance;
     double inside = min_distance, outside = min_distance;
-    for (int i = 0; i < 64 && !fits(look_at); ++i) {
+    for (int i = 0; i < 64 && !fits(look_at, goal); ++i) {
       outside = look_at.distance_m;
       look_at.distance_m *= 2.0;
     }
-    if (!fits(look_at)) return std::nullopt;
+    if (!fits(look_at, goal)) return std::nullopt;
     inside = look_at.distance_m;
     while (inside - outside > kDistanceTolerance * inside) {
       look_at.distance_m = 0.5 * (inside + outside);
-      (fits(look_at) ? inside : outside) = look_at.distance_m;
+      (fits(look_at, goal) ? inside : outside) = look_at.distance_m;
     }
     return inside;
   }
 
-  // The target moved so that the points' image is centred (seen from the same distance).
-  GeoPosition centred_target(const LookAt& look_at) const {
+  // The target moved so that the points' image is centred in the goal's box (seen from the same
+  // distance).
+  GeoPosition centred_target(const LookAt& look_at, const FramingGoal& goal) const {
     const Camera c = camera(look_at);
     const PixelBounds b = pixel_bounds(c, points_);
     const double metres_per_px = 2.0 * look_at.distance_m *
                                  std::tan(0.5 * options_.lens.vertical_fov_deg * kRadPerDeg) / options_.lens.height_px;
-    const double dx = 0.5 * (b.min_x + b.max_x) - 0.5 * options_.lens.width_px;
-    const double dy = 0.5 * (b.min_y + b.max_y) - 0.5 * options_.lens.height_px;
+    const double dx = 0.5 * (b.min_x + b.max_x) - 0.5 * (goal.box.left + goal.box.right);
+    const double dy = 0.5 * (b.min_y + b.max_y) - 0.5 * (goal.box.top + goal.box.bottom);
     const glm::dvec3 target = to_dvec3(ecef_from(look_at.target)) + (dx * metres_per_px) * c.axes().right -
                               (dy * metres_per_px) * c.axes().up;
     GeoPosition moved;
@@ -190,11 +252,25 @@ class Framer {
     return moved;
   }
 
-  double centring_error_px(const LookAt& look_at) const {
+  double centring_error_px(const LookAt& look_at, const FramingGoal& goal) const {
     const PixelBounds b = pixel_bounds(camera(look_at), points_);
-    return std::max(std::abs(b.min_x + b.max_x - options_.lens.width_px),
-                    std::abs(b.min_y + b.max_y - options_.lens.height_px)) *
+    return std::max(std::abs(b.min_x + b.max_x - (goal.box.left + goal.box.right)),
+                    std::abs(b.min_y + b.max_y - (goal.box.top + goal.box.bottom))) *
            0.5;
+  }
+
+  // The closest view (not nearer than `min_distance`) reaching the goal, from `look_at`'s
+  // heading and pitch: the fitting distance, then the target moved to centre the points, a few
+  // rounds (each move changes the perspective a little). Whatever round it ends in, the points
+  // fit. nullopt when no distance fits them.
+  std::optional<LookAt> frame(LookAt look_at, double min_distance, const FramingGoal& goal) const {
+    for (int round = 0;; ++round) {
+      const std::optional<double> distance = fitting_distance(look_at, min_distance, goal);
+      if (!distance) return std::nullopt;
+      look_at.distance_m = *distance;
+      if (round == kCentringRounds || centring_error_px(look_at, goal) < 0.5) return look_at;
+      look_at.target = centred_target(look_at, goal);
+    }
   }
 
   double nearest_point_distance(const Camera& c) const {
@@ -220,6 +296,10 @@ std::optional<std::string> options_problem(const FramingOptions& o) {
   if (!std::isfinite(o.preferred_heading_deg)) return "framing preferred heading is not finite";
   if (!(o.min_view_width_m > 0.0 && std::isfinite(o.min_view_width_m))) {
     return "framing minimum view width " + number(o.min_view_width_m) + " m is not above 0";
+  }
+  const KeptClearCorner& k = o.keep_clear;
+  if (!(k.width_px >= 0.0 && std::isfinite(k.width_px) && k.height_px >= 0.0 && std::isfinite(k.height_px))) {
+    return "framing kept-clear corner " + number(k.width_px) + " x " + number(k.height_px) + " px is not a size";
   }
   return std::nullopt;
 }
@@ -278,12 +358,24 @@ Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingO
   const Framer framer(std::move(ecef), options, ground);
   const double tan_h = std::tan(0.5 * options.lens.vertical_fov_deg * kRadPerDeg) * options.lens.aspect();
   const double min_distance = 0.5 * options.min_view_width_m / tan_h;
-  for (int round = 0;; ++round) {
-    const std::optional<double> distance = framer.fitting_distance(look_at, min_distance);
-    if (!distance) return {std::nullopt, "framing: no camera distance fits the points in the image"};
-    look_at.distance_m = *distance;
-    if (round == kCentringRounds || framer.centring_error_px(look_at) < 0.5) break;
-    look_at.target = framer.centred_target(look_at);
+  const double width = options.lens.width_px, height = options.lens.height_px;
+  const double mx = options.margin_fraction * width, my = options.margin_fraction * height;
+  const PixelBox margins{mx, my, width - mx, height - my};
+  const std::optional<LookAt> centred = framer.frame(look_at, min_distance, {margins, std::nullopt});
+  if (!centred) return {std::nullopt, "framing: no camera distance fits the points in the image"};
+  look_at = *centred;
+  if (!options.keep_clear.empty()) {
+    const PixelBox clear = corner_box(options.keep_clear, width, height);
+    if (framer.enters(look_at, clear)) {
+      // The closest of the goals that keep the corner clear; a nearly equal distance does not
+      // pay for moving the points further from the centre.
+      std::optional<LookAt> best;
+      for (const PixelBox& box : clearing_boxes(margins, clear, options.keep_clear.corner)) {
+        const std::optional<LookAt> candidate = framer.frame(*centred, min_distance, {box, clear});
+        if (candidate && (!best || candidate->distance_m < best->distance_m * (1.0 - kCloserBy))) best = candidate;
+      }
+      if (best) look_at = *best;
+    }
   }
 
   Camera camera = framer.camera(look_at);

@@ -8,7 +8,11 @@
 //   - pitch: fixed, -45 degrees by default (an oblique view that shows relief and height);
 //   - distance: the smallest that keeps every point inside the image with the margin (found by
 //     bisection on the exact projection, earth curvature included), the points' image centred,
-//     and at least a minimum width of terrain in view.
+//     and at least a minimum width of terrain in view;
+//   - a corner kept clear (where a legend will be drawn over the picture): when the centred
+//     framing puts a point there, the points are moved out of it, centred in the band above (or
+//     below) it or beside it, or further away, whichever shows them largest; the heading and
+//     pitch stay, only the target moves (and the distance grows as little as it must).
 // Framing knows no terrain: where peaks rise between the camera and the track, the caller may
 // choose a steeper pitch.
 
@@ -19,6 +23,17 @@
 
 namespace trailray::render {
 
+enum class ImageCorner { top_left, top_right, bottom_left, bottom_right };
+
+// A rectangle in a corner of the image, `width_px` x `height_px` from the corner, that no framed
+// point may project into (a legend's panel and the gap wanted around it). Either size 0: none.
+struct KeptClearCorner {
+  ImageCorner corner = ImageCorner::bottom_left;
+  double width_px = 0.0, height_px = 0.0;
+
+  bool empty() const { return !(width_px > 0.0) || !(height_px > 0.0); }
+};
+
 struct FramingOptions {
   Lens lens;
   double pitch_deg = -45.0;            // within [-90, -5]
@@ -28,10 +43,13 @@ struct FramingOptions {
   // The terrain height under the points, for the depth range and for points without a height;
   // NaN: the lowest point's height.
   double ground_height_m = std::numeric_limits<double>::quiet_NaN();
+  // Where the points must not go. When they cannot be kept out of it (a corner nearly as large
+  // as the image), the framing is the one without it.
+  KeptClearCorner keep_clear;
 };
 
 struct Framing {
-  LookAt look_at;  // target (the centre of the points' image), distance, heading and pitch
+  LookAt look_at;  // target (the image's centre), distance, heading and pitch
   Camera camera;
 };
 

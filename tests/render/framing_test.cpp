@@ -8,6 +8,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "test_support.hpp"
@@ -254,6 +255,102 @@ TEST(Framing, OtherPitchesAndPortraitImages) {
   const Framing f = framed(track, options);
   EXPECT_NEAR(f.camera.pitch_deg(), -70.0, 0.1);
   expect_inside_with_margin(f.camera, track, options.margin_fraction);
+}
+
+// Kept-clear corners (a legend drawn over the picture)
+
+// The corner's rectangle in pixels: left, top, right, bottom.
+struct CornerBox {
+  double left, top, right, bottom;
+};
+CornerBox corner_box(const KeptClearCorner& k, const Lens& lens) {
+  const double w = lens.width_px, h = lens.height_px;
+  const bool left = k.corner == ImageCorner::top_left || k.corner == ImageCorner::bottom_left;
+  const bool top = k.corner == ImageCorner::top_left || k.corner == ImageCorner::top_right;
+  return {left ? 0.0 : w - k.width_px, top ? 0.0 : h - k.height_px, left ? k.width_px : w, top ? k.height_px : h};
+}
+
+// How many of the points project into the corner.
+std::size_t points_in_corner(const Camera& camera, const std::vector<GeoPosition>& points, const KeptClearCorner& k) {
+  const CornerBox box = corner_box(k, camera.lens());
+  std::size_t n = 0;
+  for (const GeoPosition& p : points) {
+    const auto s = camera.project(ecef_from(p));
+    if (s && s->x_px >= box.left && s->x_px <= box.right && s->y_px >= box.top && s->y_px <= box.bottom) ++n;
+  }
+  return n;
+}
+
+TEST(Framing, KeptClearCornerGetsNoPointWhileAllStayInTheImage) {
+  // An L: 2 km north, then 2 km east. Seen across its long side (from the south-east), its
+  // start is near and on the left: low left in the picture, where a legend goes.
+  std::vector<GeoPosition> hike;
+  for (int i = 0; i <= 200; ++i) hike.push_back(offset_point(46.69, 7.86, 0.0, 10.0 * i - 2000.0, 900.0));
+  for (int i = 1; i <= 200; ++i) hike.push_back(offset_point(46.69, 7.86, 10.0 * i, 0.0, 900.0));
+  // A flight climbing 5 km on a 9 km line: its start is low on the left.
+  std::vector<GeoPosition> flight;
+  for (int i = 0; i < 600; ++i) {
+    const double t = i / 600.0;
+    flight.push_back(offset_point(47.0, 11.0, 9000.0 * t, 200.0 * std::sin(10.0 * t), 800.0 + 5000.0 * t));
+  }
+  const Lens lens{kDefaultVerticalFovDeg, 1280, 720};
+  for (const auto& [name, track] : {std::pair{"hike", hike}, std::pair{"flight", flight}})
+    for (const ImageCorner corner :
+         {ImageCorner::bottom_left, ImageCorner::bottom_right, ImageCorner::top_left, ImageCorner::top_right}) {
+      SCOPED_TRACE(std::string(name) + " corner " + std::to_string(static_cast<int>(corner)));
+      FramingOptions options;
+      options.lens = lens;
+      const Framing before = framed(track, options);
+      options.keep_clear = {corner, 0.3 * lens.width_px, 0.3 * lens.height_px};
+      const Framing after = framed(track, options);
+      // Without the corner kept clear, the centred framing would have put points into it.
+      const std::size_t hidden = points_in_corner(before.camera, track, options.keep_clear);
+      if (corner == ImageCorner::bottom_left) {
+        EXPECT_GT(hidden, 0u) << "a test that cannot fail";
+      }
+      if (hidden == 0) {
+        EXPECT_EQ(after.look_at.distance_m, before.look_at.distance_m) << "moved without need";
+        continue;
+      }
+      EXPECT_EQ(points_in_corner(after.camera, track, options.keep_clear), 0u);
+      const ImageSpan span = expect_inside_with_margin(after.camera, track, options.margin_fraction);
+      // The same look direction, the points moved away from the corner rather than shrunk to a dot.
+      EXPECT_DOUBLE_EQ(after.look_at.heading_deg, before.look_at.heading_deg);
+      EXPECT_DOUBLE_EQ(after.look_at.pitch_deg, before.look_at.pitch_deg);
+      EXPECT_LT(after.look_at.distance_m, 1.5 * before.look_at.distance_m);
+      const bool left = corner == ImageCorner::top_left || corner == ImageCorner::bottom_left;
+      const bool top = corner == ImageCorner::top_left || corner == ImageCorner::top_right;
+      const double moved_x = 0.5 * (span.min_x + span.max_x) - 0.5 * lens.width_px;
+      const double moved_y = 0.5 * (span.min_y + span.max_y) - 0.5 * lens.height_px;
+      EXPECT_GE(left ? moved_x : -moved_x, -1.0);
+      EXPECT_GE(top ? moved_y : -moved_y, -1.0);
+      EXPECT_GT(std::abs(moved_x) + std::abs(moved_y), 10.0) << "the points' image did not move";
+    }
+}
+
+TEST(Framing, KeptClearCornerChangesNothingWhenNoPointIsThereOrItCannotBeCleared) {
+  // A straight track seen from the side lies across the middle of the picture.
+  const std::vector<GeoPosition> track = straight_track(46.69, 7.86, 0.0, 10000.0, 800.0);
+  FramingOptions options;
+  const Framing plain = framed(track, options);
+  options.keep_clear = {ImageCorner::bottom_left, 400.0, 250.0};
+  ASSERT_EQ(points_in_corner(plain.camera, track, options.keep_clear), 0u);
+  Framing f = framed(track, options);
+  EXPECT_EQ(f.look_at.distance_m, plain.look_at.distance_m);
+  EXPECT_EQ(f.look_at.target.lat_deg, plain.look_at.target.lat_deg);
+  EXPECT_EQ(f.look_at.target.lon_deg, plain.look_at.target.lon_deg);
+
+  // A corner as large as the picture cannot be kept clear: the framing without it.
+  options.keep_clear = {ImageCorner::bottom_left, 1920.0, 1080.0};
+  f = framed(track, options);
+  EXPECT_EQ(f.look_at.distance_m, plain.look_at.distance_m);
+  EXPECT_EQ(f.look_at.target.lat_deg, plain.look_at.target.lat_deg);
+
+  // A size that is none.
+  options.keep_clear = {ImageCorner::bottom_left, -5.0, 100.0};
+  EXPECT_NE(frame_points(track, options).error.find("kept-clear corner"), std::string::npos);
+  options.keep_clear = {ImageCorner::bottom_left, std::nan(""), 100.0};
+  EXPECT_FALSE(frame_points(track, options).ok());
 }
 
 // Real flights from ../shared/data: B records of IGC files (latitude, longitude, GPS altitude).
