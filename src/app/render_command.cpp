@@ -76,19 +76,23 @@ int run_render(const RenderArgs& a) {
 
   const TerrainSources sources = open_terrain_sources(a.terrain, warn);
   terrain::HeightSource* const heights = sources.heights.get();
-  // The camera, and the neutral ground's height: the tracks' lowest point (DESIGN.md), else the
-  // lowest terrain in view (NaN asks the renderer for it).
+  // The neutral ground's height: the tracks' lowest point (DESIGN.md), else the lowest terrain in
+  // view (NaN asks the renderer for it).
   const double neutral = lowest_height(tracks.points);
-  const std::optional<render::Camera> camera = initial_camera(camera_request, lens, tracks, heights);
+  // The tracks: cleaned and coloured (their range sets the legend's labels, hence its size).
+  const TrackScene track_scene =
+      build_track_scene(tracks.files, style, {heights, std::isnan(neutral) ? 0.0 : neutral, a.analysis}, warn);
+  // The camera: framed with the tracks out of the legend's way.
+  const render::KeptClearCorner legend_corner =
+      legend_clearance(scene_legend_panel(lens.width_px, lens.height_px, style, track_scene), lens.height_px);
+  const std::optional<render::Camera> camera = initial_camera(camera_request, lens, tracks, heights, legend_corner);
 
   render::GlContext gl = render::GlContext::create_headless();
   if (a.verbose)
     for (const std::string& line : gl.describe()) fmt::print(stderr, "trailray: {}\n", line);
   render::SceneRenderer renderer({heights, sources.imagery.get()});
   render::SceneRenderOptions options;
-  // The tracks: cleaned, coloured, on the GPU (their buffers live as long as the renderer's use).
-  const TrackScene track_scene = build_track_scene(
-      tracks.files, style, {heights, std::isnan(neutral) ? 0.0 : neutral, a.analysis}, warn);
+  // The tracks on the GPU (their buffers live as long as the renderer's use).
   std::vector<render::TrackBuffer> track_buffers;
   track_buffers.reserve(track_scene.tracks.size());
   for (const SceneTrack& t : track_scene.tracks) track_buffers.emplace_back(t.geometry);

@@ -15,6 +15,7 @@
 #include "app/terrain_options.hpp"
 #include "app/track_scene.hpp"
 #include "render/camera.hpp"
+#include "render/framing.hpp"
 #include "terrain/tile_source.hpp"
 #include "track/io/load.hpp"
 
@@ -80,10 +81,10 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, const WarnFun
 // The terrain height at a place from the source (NaN where it has none, or without a source).
 double ground_height_at(terrain::HeightSource* source, double lat, double lon);
 
-// The first camera: the request's, else one framing the tracks' points. Throws
-// CLI::ValidationError for a camera the options make impossible, std::runtime_error when the
-// tracks cannot be framed.
+// The first camera: the request's (never changed), else one framing the tracks' points out of
+// `keep_clear` (where the legend will be drawn). Throws CLI::ValidationError for a camera the
+// options make impossible, std::runtime_error when the tracks cannot be framed.
 render::Camera initial_camera(const CameraRequest& request, const render::Lens& lens, const TrackPoints& tracks,
-                              terrain::HeightSource* heights);
+                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear = {});
 
 }  // namespace trailray::app

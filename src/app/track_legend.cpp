@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "render/text_raster.hpp"
 
 namespace trailray::app {
@@ -37,6 +39,29 @@ void draw_scene_legend(render::RgbaImage& image, const TrackStyle& style, const 
   render::TextRasterizer text;
   if (legend) render::draw_color_legend(image, text, *legend);
   if (!key.empty()) render::draw_track_key(image, text, key);
+}
+
+render::PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const TrackStyle& style,
+                                     const TrackScene& scene) {
+  if (!style.legend) return {};
+  const auto legend = color_legend_for(style, scene);
+  const auto key = track_key_for(style, scene);
+  // As draw_scene_legend: a colour bar or a key, never both (one is for a metric, the other for
+  // solid colours).
+  render::TextRasterizer text;
+  if (legend) return render::color_legend_panel(width, height, text, *legend);
+  if (!key.empty()) return render::track_key_panel(width, height, text, key);
+  return {};
+}
+
+render::KeptClearCorner legend_clearance(const render::PixelRect& panel, std::uint32_t height) {
+  if (panel.empty()) return {};
+  // The gaps the panel keeps from the left and bottom edges, kept again between it and the
+  // tracks: a track drawn right up to the panel's edge would look tucked under it.
+  const int left_gap = std::max(panel.x, 0);
+  const int bottom_gap = std::max(static_cast<int>(height) - panel.bottom(), 0);
+  return {render::ImageCorner::bottom_left, static_cast<double>(panel.right() + left_gap),
+          static_cast<double>(static_cast<int>(height) - panel.y + bottom_gap)};
 }
 
 }  // namespace trailray::app

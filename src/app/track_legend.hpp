@@ -4,12 +4,14 @@
 // the metric prints them, and a "0" tick for signed metrics; for several solid tracks, a key of
 // their names and colours. Drawing is render/legend.hpp's; this file only decides the content.
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
 #include "render/framebuffer_readback.hpp"
+#include "render/framing.hpp"
 #include "render/legend.hpp"
 
 namespace trailray::app {
@@ -22,5 +24,15 @@ std::vector<render::TrackKeyEntry> track_key_for(const TrackStyle& style, const 
 
 // Draws the legend the scene calls for into `image` (nothing with --legend off).
 void draw_scene_legend(render::RgbaImage& image, const TrackStyle& style, const TrackScene& scene);
+
+// The panel draw_scene_legend will draw into a `width` x `height` picture, measured by the
+// legend's own layout; empty when it draws nothing.
+render::PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const TrackStyle& style,
+                                     const TrackScene& scene);
+
+// What the framing keeps the tracks out of for a legend `panel` in the bottom-left corner of a
+// picture `height` pixels tall: the panel with, above and to its right, the gap it keeps from
+// the picture's edges. Nothing for an empty panel.
+render::KeptClearCorner legend_clearance(const render::PixelRect& panel, std::uint32_t height);
 
 }  // namespace trailray::app

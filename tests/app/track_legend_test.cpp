@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -196,6 +197,43 @@ TEST(TrackLegend, DrawnInTheBottomLeftOnlyWhenOn) {
         }
     EXPECT_GT(changed, 1000u) << metric << ": a panel with text";
   }
+}
+
+// What the framing keeps clear: the panel draw_scene_legend draws (measured, not drawn), and
+// around it the gap it keeps from the edges; nothing with --legend off or without a legend.
+TEST(TrackLegend, ClearanceIsTheDrawnPanelWithItsGap) {
+  const auto files = files_with({doubling_speed_track()});
+  const auto several = files_with({east_track("A", 0.0), east_track("B", 300.0)});
+  for (const char* metric : {"speed", "solid"}) {
+    SCOPED_TRACE(metric);
+    const TrackStyle on = style_of(metric), off = style_of(metric, {}, "off");
+    const TrackScene scene = scene_of(std::string(metric) == "solid" ? several : files, on);
+    render::RgbaImage image = grey_image(640, 360);
+    const render::RgbaImage blank = image;
+    draw_scene_legend(image, on, scene);
+    // The smallest rectangle around the changed pixels lies inside the measured panel.
+    const render::PixelRect panel = scene_legend_panel(640, 360, on, scene);
+    ASSERT_FALSE(panel.empty());
+    int min_x = 640, max_x = -1, min_y = 360, max_y = -1;
+    for (std::uint32_t y = 0; y < 360; ++y)
+      for (std::uint32_t x = 0; x < 640; ++x)
+        if (image.pixel(x, y) != blank.pixel(x, y)) {
+          min_x = std::min(min_x, int(x)), max_x = std::max(max_x, int(x));
+          min_y = std::min(min_y, int(y)), max_y = std::max(max_y, int(y));
+        }
+    EXPECT_TRUE(panel.contains(render::PixelRect{min_x, min_y, max_x - min_x + 1, max_y - min_y + 1}));
+    EXPECT_LE(panel.width - (max_x - min_x + 1), 2);
+    EXPECT_LE(panel.height - (max_y - min_y + 1), 2);
+
+    const render::KeptClearCorner clear = legend_clearance(panel, 360);
+    EXPECT_EQ(clear.corner, render::ImageCorner::bottom_left);
+    EXPECT_DOUBLE_EQ(clear.width_px, panel.right() + panel.x);
+    EXPECT_DOUBLE_EQ(clear.height_px, 360 - panel.y + (360 - panel.bottom()));
+    EXPECT_TRUE(scene_legend_panel(640, 360, off, scene).empty());
+    EXPECT_TRUE(legend_clearance(scene_legend_panel(640, 360, off, scene), 360).empty());
+  }
+  const TrackStyle solid = style_of("solid");
+  EXPECT_TRUE(scene_legend_panel(640, 360, solid, scene_of(files_with({east_track("Alone", 0.0)}), solid)).empty());
 }
 
 TEST(TrackLegend, OneSolidTrackDrawsNoLegend) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -263,9 +264,9 @@ TEST(TrackRenderCli, SpeedThatDoublesShowsBothEndsOfTheColormap) {
   EXPECT_GT(fast.r, fast.g + 0.2);
 }
 
-// The panel the legend of these tracks takes in a kWidth x kHeight picture, computed by drawing
-// the same legend on a blank image.
-render::PixelRect legend_panel(const std::string& gpx, const std::vector<std::string>& style_args) {
+// Where the legend of these tracks goes in a kWidth x kHeight picture, found by drawing the same
+// legend on a blank image.
+render::LegendLayout legend_layout(const std::string& gpx, const std::vector<std::string>& style_args) {
   app::TrackStyleArgs args;
   for (std::size_t i = 0; i + 1 < style_args.size(); i += 2)
     if (style_args[i] == "--color-by") args.color_by = style_args[i + 1];
@@ -281,7 +282,22 @@ render::PixelRect legend_panel(const std::string& gpx, const std::vector<std::st
   else
     layout = render::draw_track_key(blank, text, app::track_key_for(style, scene));
   EXPECT_TRUE(layout.drawn) << "the legend fits a " << kWidth << "x" << kHeight << " picture";
-  return layout.panel;
+  return layout;
+}
+
+// The panel it takes.
+render::PixelRect legend_panel(const std::string& gpx, const std::vector<std::string>& style_args) {
+  return legend_layout(gpx, style_args).panel;
+}
+
+// The options of an explicit camera where the framing without a legend puts it. The legend never
+// moves an explicit camera, so pictures with and without it differ in its panel only.
+std::string camera_options(const std::vector<GpxPoint>& points) {
+  const render::LookAt l = framing(points, kWidth, kHeight).look_at;
+  char text[256];
+  std::snprintf(text, sizeof text, " --look-at %.9f,%.9f,%.3f --distance %.3f --heading %.6f --pitch %.6f",
+                l.target.lat_deg, l.target.lon_deg, l.target.height_m, l.distance_m, l.heading_deg, l.pitch_deg);
+  return text;
 }
 
 // Pixels that differ between two pictures: how many inside `panel`, how many outside.
@@ -307,7 +323,8 @@ Difference compare(const Picture& on, const Picture& off, const render::PixelRec
 TEST(TrackRenderCli, LegendTakesTheBottomLeftPanelOnly) {
   RenderEnv env;
   const std::string gpx = env.write_gpx("doubling.gpx", {{"Doubling", {doubling_speed_hike()}}});
-  const std::string common = shell_quote(gpx) + kPicture + " --color-by speed --legend ";
+  const std::string common =
+      shell_quote(gpx) + kPicture + camera_options(doubling_speed_hike()) + " --color-by speed --legend ";
   const Picture on = render_to(env, common + "on", "legend_on.png");
   const Picture off = render_to(env, common + "off", "legend_off.png");
   ASSERT_EQ(on.width, kWidth);
@@ -332,7 +349,9 @@ TEST(TrackRenderCli, SeveralSolidTracksGetPaletteColoursAndAKey) {
   for (int i = 0; i < 3; ++i) lines.push_back(east_line(kLat, kLon, 0.0, 61, 25.0, kT0, 10.0, 1000.0, 400.0 * i));
   const std::string gpx =
       env.write_gpx("three.gpx", {{"Alpha", {lines[0]}}, {"Beta", {lines[1]}}, {"Gamma", {lines[2]}}});
-  const std::string common = shell_quote(gpx) + kPicture + " --width 8px --legend ";
+  std::vector<GpxPoint> all;
+  for (const auto& l : lines) all.insert(all.end(), l.begin(), l.end());
+  const std::string common = shell_quote(gpx) + kPicture + camera_options(all) + " --width 8px --legend ";
   const Picture on = render_to(env, common + "on", "three_on.png");
   const Picture off = render_to(env, common + "off", "three_off.png");
   ASSERT_EQ(on.width, kWidth);
@@ -340,8 +359,6 @@ TEST(TrackRenderCli, SeveralSolidTracksGetPaletteColoursAndAKey) {
   keep(env, "three_on.png");
 
   // Each track, away from the legend, in its palette colour rather than another's.
-  std::vector<GpxPoint> all;
-  for (const auto& l : lines) all.insert(all.end(), l.begin(), l.end());
   const render::Camera camera = framing_camera(all, kWidth, kHeight);
   const render::PixelRect panel = legend_panel(gpx, {});
   for (std::size_t t = 0; t < 3; ++t) {
@@ -362,6 +379,63 @@ TEST(TrackRenderCli, SeveralSolidTracksGetPaletteColoursAndAKey) {
   const Difference d = compare(on, off, panel);
   EXPECT_EQ(d.outside, 0u);
   EXPECT_GT(d.inside, std::size_t(panel.width) * std::size_t(panel.height) / 2);
+}
+
+// Two red tracks, a long one and a short one south of its west end: the framing without a legend
+// (looking north) puts the short one low left, where the key of their names goes. Framed for
+// the key, they stay out of its panel, whole in the picture and as large as without it.
+TEST(TrackRenderCli, FramingKeepsTheTracksOutOfTheLegend) {
+  RenderEnv env;
+  const auto north = east_line(kLat, kLon, 0.0, 61, 50.0, kT0, 10.0, 1000.0);
+  const auto south = east_line(kLat, kLon, 0.0, 21, 25.0, kT0, 10.0, 1000.0, -1500.0);
+  const std::string gpx = env.write_gpx("two.gpx", {{"North", {north}}, {"South", {south}}});
+  const std::string common = shell_quote(gpx) + kPicture + " --color '#ff0000' --width 6px --legend ";
+  const Picture on = render_to(env, common + "on", "clear_on.png");
+  const Picture off = render_to(env, common + "off", "clear_off.png");
+  ASSERT_EQ(on.width, kWidth);
+  ASSERT_EQ(off.width, kWidth);
+  keep(env, "clear_on.png");
+  keep(env, "clear_off.png");
+  const render::LegendLayout key = legend_layout(gpx, {});
+  ASSERT_EQ(key.swatches.size(), 2u);
+
+  // Without the legend in mind, the south track would lie under the key: this test can fail.
+  std::vector<GpxPoint> all = north;
+  all.insert(all.end(), south.begin(), south.end());
+  const render::Camera centred = framing_camera(all, kWidth, kHeight);
+  std::size_t under = 0;
+  for (const GpxPoint& p : south) {
+    const auto at = project(centred, p);
+    if (at && key.panel.contains(int(at->x_px), int(at->y_px))) ++under;
+  }
+  ASSERT_GT(under, 3u) << "the tracks do not reach the key's corner: the test proves nothing";
+
+  // Nothing of the tracks in the key's panel: no red seen through it, the red swatches aside.
+  const auto in_swatch = [&](std::uint32_t x, std::uint32_t y) {
+    return std::any_of(key.swatches.begin(), key.swatches.end(), [&](const render::PixelRect& r) {
+      return render::PixelRect{r.x - 1, r.y - 1, r.width + 2, r.height + 2}.contains(int(x), int(y));
+    });
+  };
+  std::size_t red_in_panel = 0, red_outside = 0, red_on_edge = 0;
+  for (std::uint32_t y = 0; y < on.height; ++y)
+    for (std::uint32_t x = 0; x < on.width; ++x) {
+      const Rgb p = on.at(x, y);
+      if (key.panel.contains(int(x), int(y))) {
+        red_in_panel += reddish(p) && !in_swatch(x, y) ? 1 : 0;
+        continue;
+      }
+      red_outside += red(p) ? 1 : 0;
+      if (x < 2 || y < 2 || x + 2 >= on.width || y + 2 >= on.height) red_on_edge += red(p) ? 1 : 0;
+    }
+  EXPECT_EQ(red_in_panel, 0u) << "track pixels under the legend";
+  // Whole in the picture, at about the size the picture without the legend shows them: none of
+  // their pixels lost (a track under the panel would lose a fifth of them here); a few more are
+  // fine (the camera moved, so the tubes' shading and perspective changed a little).
+  EXPECT_EQ(red_on_edge, 0u) << "a track runs off the picture";
+  const std::size_t red_off = count(off, red);
+  EXPECT_GT(red_off, 400u);
+  EXPECT_GT(double(red_outside), 0.9 * double(red_off));
+  EXPECT_LT(double(red_outside), 1.25 * double(red_off));
 }
 
 TEST(TrackRenderCli, OneSolidTrackHasNoKey) {
