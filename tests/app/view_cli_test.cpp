@@ -4,12 +4,15 @@
 // Small windows (480x270) keep the whole set to a few seconds per test on llvmpipe.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
 #include <string>
 #include <vector>
 
+#include "render/legend.hpp"
+#include "render/text_raster.hpp"
 #include "track_cli_support.hpp"
 
 namespace trailray::test {
@@ -101,6 +104,52 @@ TEST(ViewCli, TheWindowShowsTheTrackWhereItsPointsProject) {
     EXPECT_TRUE(red_near(picture, at->x_px, at->y_px, 3)) << "point " << i << " at " << at->x_px << "," << at->y_px;
   }
   EXPECT_GT(projected, 20u);
+  EXPECT_GT(count_red(picture), 500u);
+}
+
+// Two red tracks, the short one south of the long one's west end and 500 m lower: framed without
+// a legend, it would lie low left under the key of their names. The viewer's first view keeps it
+// out of the key (seen in a screenshot, which has the key as `render` draws it), whole in the
+// picture.
+TEST(ViewCli, TheFirstViewKeepsTheTracksOutOfTheLegend) {
+  ViewEnv env;
+  const auto north = east_line(kLat, kLon, 0.0, 61, 50.0, kT0, 10.0, 1000.0);
+  const auto south = east_line(kLat, kLon, 0.0, 21, 25.0, kT0, 10.0, 500.0, -1500.0);
+  const std::string gpx = env.write_gpx("two.gpx", {{"North", {north}}, {"South", {south}}});
+  const std::string out = env.file("two.png");
+  const auto r = run_view(env, shell_quote(gpx) + kWindow + " --screenshot " + shell_quote(out));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Picture picture = read_picture(out);
+  ASSERT_EQ(picture.width, kWidth);
+  render::RgbaImage blank{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t{kWidth} * kHeight * 4, 128)};
+  render::TextRasterizer text;
+  const render::LegendLayout key =
+      render::draw_track_key(blank, text, {{"North", {1.0f, 0.0f, 0.0f}}, {"South", {1.0f, 0.0f, 0.0f}}});
+  ASSERT_TRUE(key.drawn);
+
+  std::vector<GpxPoint> all = north;
+  all.insert(all.end(), south.begin(), south.end());
+  const render::Camera centred = framing_camera(all, kWidth, kHeight);
+  std::size_t under = 0;
+  for (const GpxPoint& p : south) {
+    const auto at = centred.project(render::ecef_from({p.lat, p.lon, p.ele}));
+    if (at && key.panel.contains(int(at->x_px), int(at->y_px))) ++under;
+  }
+  ASSERT_GT(under, 3u) << "the tracks do not reach the key's corner: the test proves nothing";
+
+  std::size_t red_in_panel = 0, red_on_edge = 0;
+  for (std::uint32_t y = 0; y < picture.height; ++y)
+    for (std::uint32_t x = 0; x < picture.width; ++x) {
+      const Rgb p = picture.at(x, y);
+      const bool in_swatch = std::any_of(key.swatches.begin(), key.swatches.end(), [&](const render::PixelRect& s) {
+        return render::PixelRect{s.x - 1, s.y - 1, s.width + 2, s.height + 2}.contains(int(x), int(y));
+      });
+      // Red seen through the dark panel: dimmed, still far redder than green or blue.
+      if (key.panel.contains(int(x), int(y)) && !in_swatch && p.r > p.g + 30 && p.r > p.b + 30) ++red_in_panel;
+      if ((x < 2 || y < 2 || x + 2 >= picture.width || y + 2 >= picture.height) && red(p)) ++red_on_edge;
+    }
+  EXPECT_EQ(red_in_panel, 0u) << "track pixels under the legend";
+  EXPECT_EQ(red_on_edge, 0u) << "a track runs off the picture";
   EXPECT_GT(count_red(picture), 500u);
 }
 

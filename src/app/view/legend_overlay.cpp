@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <string>
 
 #include "render/colormap.hpp"
@@ -18,13 +20,85 @@ constexpr float kMargin = 12.0f, kPadding = 8.0f;
 const ImU32 kPanel = IM_COL32(20, 22, 26, 240);
 const ImU32 kText = IM_COL32(255, 255, 255, 255);
 
+// Text measured with the interface's font, as ImGui::CalcTextSize does inside a frame, but also
+// before the first one (the viewer frames its first view before it draws anything).
+struct OverlayText {
+  ImFont* font = nullptr;
+  float size = 0.0f;  // the line height, ImGui::GetTextLineHeight()
+
+  float width(const std::string& text) const {
+    if (text.empty()) return 0.0f;
+    return std::floor(font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str()).x + 0.99999f);
+  }
+};
+
+OverlayText overlay_text() {
+  ImGuiIO& io = ImGui::GetIO();
+  if (!io.Fonts->IsBuilt()) {
+    // What the OpenGL backend does on its first frame; it finds the atlas built then.
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+  }
+  ImFont* font = io.FontDefault != nullptr ? io.FontDefault : io.Fonts->Fonts[0];
+  return {font, io.FontGlobalScale * font->FontSize * font->Scale};
+}
+
+// The sizes of everything in the legend window, shared by drawing it and by reporting where it
+// is (for the framing to keep the tracks out of it).
+struct OverlayLayout {
+  float line = 0.0f;
+  float bar_width = 0.0f, bar_height = 0.0f;
+  float legend_width = 0.0f, legend_height = 0.0f;  // the colour bar's panel
+  float swatch = 0.0f, key_width = 0.0f, key_height = 0.0f, key_row = 0.0f;
+  float width = 0.0f, height = 0.0f;  // the whole window
+};
+
+OverlayLayout overlay_layout(const std::optional<render::ColorLegend>& legend,
+                             const std::vector<render::TrackKeyEntry>& key, float display_width,
+                             const OverlayText& text) {
+  OverlayLayout l;
+  l.line = text.size;
+  if (legend) {
+    l.bar_width = std::min(220.0f, display_width * 0.4f);
+    l.bar_height = l.line * 0.8f;
+    l.legend_width = std::max(l.bar_width, text.width(legend->title)) + 2.0f * kPadding;
+    l.legend_height = 3.0f * l.line + l.bar_height + 2.0f * kPadding;
+    l.height += l.legend_height + 0.5f * kMargin;
+    l.width = std::max(l.width, l.legend_width);
+  }
+  if (!key.empty()) {
+    float names = 0.0f;
+    for (const auto& entry : key) names = std::max(names, text.width(entry.name));
+    l.swatch = 1.6f * l.line;
+    l.key_row = l.line * 1.2f;
+    l.key_width = names + l.swatch + 3.0f * kPadding;
+    l.key_height = static_cast<float>(key.size()) * l.key_row + 2.0f * kPadding;
+    l.height += l.key_height;
+    l.width = std::max(l.width, l.key_width);
+  }
+  return l;
+}
+
 }  // namespace
+
+render::PixelRect legend_overlay_rect(const std::optional<render::ColorLegend>& legend,
+                                      const std::vector<render::TrackKeyEntry>& key, float display_width,
+                                      float display_height) {
+  if (!legend && key.empty()) return {};
+  const OverlayLayout l = overlay_layout(legend, key, display_width, overlay_text());
+  // Whole pixels that cover the window.
+  const float top = display_height - kMargin - l.height;
+  return {static_cast<int>(std::floor(kMargin)), static_cast<int>(std::floor(top)),
+          static_cast<int>(std::ceil(kMargin + l.width) - std::floor(kMargin)),
+          static_cast<int>(std::ceil(display_height - kMargin) - std::floor(top))};
+}
 
 void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
                          const std::vector<render::TrackKeyEntry>& key) {
   if (!legend && key.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float line = ImGui::GetTextLineHeight();
+  const OverlayLayout l = overlay_layout(legend, key, display.x, overlay_text());
   // A window of its own (no title, sized to its content), first in the bottom-left corner: it
   // stacks with the panels and can be moved out of their way.
   ImGui::SetNextWindowPos(ImVec2(kMargin, display.y - kMargin), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
@@ -43,14 +117,12 @@ void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float line = l.line;
   float top = origin.y;
-  float total_width = 0.0f;
   if (legend) {
-    const float bar_width = std::min(220.0f, display.x * 0.4f), bar_height = line * 0.8f;
-    const float width = std::max(bar_width, ImGui::CalcTextSize(legend->title.c_str()).x) + 2.0f * kPadding;
-    const float height = 3.0f * line + bar_height + 2.0f * kPadding;
+    const float bar_width = l.bar_width, bar_height = l.bar_height;
     const ImVec2 corner(origin.x, top);
-    draw->AddRectFilled(corner, ImVec2(corner.x + width, corner.y + height), kPanel, 6.0f);
+    draw->AddRectFilled(corner, ImVec2(corner.x + l.legend_width, corner.y + l.legend_height), kPanel, 6.0f);
     draw->AddText(ImVec2(corner.x + kPadding, corner.y + kPadding), kText, legend->title.c_str());
     // The bar from the same table the track pass samples, a step per entry.
     const render::ColormapTable& table = render::colormap_table(legend->map);
@@ -71,29 +143,21 @@ void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
       const float w = ImGui::CalcTextSize(tick.label.c_str()).x;
       draw->AddText(ImVec2(x - 0.5f * w, label_y), kText, tick.label.c_str());
     }
-    top += height + 0.5f * kMargin;
-    total_width = std::max(total_width, width);
+    top += l.legend_height + 0.5f * kMargin;
   }
   if (!key.empty()) {
-    float width = 0.0f;
-    for (const auto& entry : key) width = std::max(width, ImGui::CalcTextSize(entry.name.c_str()).x);
-    const float swatch = 1.6f * line;
-    width += swatch + 3.0f * kPadding;
-    const float height = static_cast<float>(key.size()) * line * 1.2f + 2.0f * kPadding;
     const ImVec2 corner(origin.x, top);
-    draw->AddRectFilled(corner, ImVec2(corner.x + width, corner.y + height), kPanel, 6.0f);
+    draw->AddRectFilled(corner, ImVec2(corner.x + l.key_width, corner.y + l.key_height), kPanel, 6.0f);
     float y = corner.y + kPadding;
     for (const auto& entry : key) {
       const float mid = y + 0.5f * line;
-      draw->AddLine(ImVec2(corner.x + kPadding, mid), ImVec2(corner.x + kPadding + swatch, mid),
+      draw->AddLine(ImVec2(corner.x + kPadding, mid), ImVec2(corner.x + kPadding + l.swatch, mid),
                     to_imgui(entry.color_srgb), 0.35f * line);
-      draw->AddText(ImVec2(corner.x + 2.0f * kPadding + swatch, y), kText, entry.name.c_str());
-      y += line * 1.2f;
+      draw->AddText(ImVec2(corner.x + 2.0f * kPadding + l.swatch, y), kText, entry.name.c_str());
+      y += l.key_row;
     }
-    top += height;
-    total_width = std::max(total_width, width);
   }
-  ImGui::Dummy(ImVec2(total_width, top - origin.y));  // the window's size
+  ImGui::Dummy(ImVec2(l.width, l.height));  // the window's size
   ImGui::End();
 }
 

@@ -14,4 +14,11 @@ namespace trailray::app::view {
 void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
                          const std::vector<render::TrackKeyEntry>& key);
 
+// Where draw_legend_overlay first puts its window in a display of that size (the bottom-left
+// corner), from the same layout, in whole pixels covering it; empty when it shows nothing. Needs
+// an ImGui context, not a frame (the atlas is built if it is not yet).
+render::PixelRect legend_overlay_rect(const std::optional<render::ColorLegend>& legend,
+                                      const std::vector<render::TrackKeyEntry>& key, float display_width,
+                                      float display_height);
+
 }  // namespace trailray::app::view

@@ -64,6 +64,7 @@ class ViewerApp {
   void sync_track_buffers();
   render::SceneRenderOptions scene_options() const;
   std::pair<TrackStyle, TrackScene> legend_inputs(const render::TrackSceneSettings& settings) const;
+  render::KeptClearCorner legend_corner(const render::Lens& lens) const;
   void update_hover(double x_px, double y_px, const render::Camera& camera);
   void fly_to_track(int index);
   void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
@@ -102,13 +103,14 @@ render::WindowOptions window_options(const ViewerOptions& o) {
   return w;
 }
 
-// The first view: the options' camera, else framed on the tracks; the pivot on the ground.
+// The first view: the options' camera, else framed on the tracks out of the legend's corner;
+// the pivot on the ground.
 CameraController first_view(const ViewerOptions& o, const TrackPoints& points, terrain::HeightSource* heights,
-                            double neutral) {
+                            double neutral, const render::KeptClearCorner& legend) {
   if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
   if (points.points.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
-  const render::Camera camera = initial_camera(o.camera, o.lens, points, heights);
+  const render::Camera camera = initial_camera(o.camera, o.lens, points, heights, legend);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
   return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
 }
@@ -144,9 +146,10 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.settings.snow = {o.effects.snow, o.effects.snowline_m};
   model_.settings.sun_time_unix = sun_time(o.effects.time, points_);
   model_.analysis = o.analysis;
-  controller_ = first_view(o, points_, sources_.heights.get(), neutral_);
-  controller_.set_ground([this](double lat, double lon) { return renderer_.height_in_memory(lat, lon); });
+  // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
+  controller_ = first_view(o, points_, sources_.heights.get(), neutral_, legend_corner(o.lens));
+  controller_.set_ground([this](double lat, double lon) { return renderer_.height_in_memory(lat, lon); });
 }
 
 double ViewerApp::sun_unix_time() const {
@@ -231,6 +234,7 @@ void ViewerApp::fly_to_track(int index) {
   render::FramingOptions framing;
   framing.lens = controller_.lens();
   framing.preferred_heading_deg = controller_.view().heading_deg;
+  framing.keep_clear = legend_corner(framing.lens);
   const auto framed = render::frame_points(points, framing);
   if (!framed.ok()) return;
   double ground =
@@ -382,6 +386,25 @@ std::pair<TrackStyle, TrackScene> ViewerApp::legend_inputs(const render::TrackSc
     scene.tracks.push_back(std::move(named));
   }
   return {style, scene};
+}
+
+// The corner a framing keeps the tracks out of: the legend's, large enough for the legend window
+// (where it first appears, in the bottom-left corner) and for the legend of screenshots (drawn
+// there too), whichever is larger. Nothing when no legend is shown.
+render::KeptClearCorner ViewerApp::legend_corner(const render::Lens& lens) const {
+  if (!model_.settings.legend) return {};
+  // The scene's colour settings (not scene_options(): the first view is framed before the tracks
+  // have GPU buffers).
+  const auto [style, legend_scene] = legend_inputs(track_scene_settings(model_.tracks, model_.settings));
+  const render::KeptClearCorner picture =
+      legend_clearance(scene_legend_panel(lens.width_px, lens.height_px, style, legend_scene), lens.height_px);
+  if (!panels_) return picture;  // `hide-panels`: no legend window
+  const render::KeptClearCorner window =
+      legend_clearance(legend_overlay_rect(color_legend_for(style, legend_scene), track_key_for(style, legend_scene),
+                                           static_cast<float>(lens.width_px), static_cast<float>(lens.height_px)),
+                       lens.height_px);
+  return {render::ImageCorner::bottom_left, std::max(picture.width_px, window.width_px),
+          std::max(picture.height_px, window.height_px)};
 }
 
 // A picture as `render` makes it: the scene once its tiles are in, with the legend.

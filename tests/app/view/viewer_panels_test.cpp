@@ -9,7 +9,10 @@
 #include <imgui_internal.h>
 
 #include <cmath>
+#include <optional>
+#include <vector>
 
+#include "app/view/legend_overlay.hpp"
 #include "app/view/profile_chart.hpp"
 #include "app/view/profiler_table.hpp"
 #include "app/view/viewer_model.hpp"
@@ -208,6 +211,35 @@ TEST_F(HeadlessImGui, HoveringTheChartSetsHoverAndDraggingSelectsARange) {
   io.MouseDown[0] = false;
   frame(model);
   EXPECT_EQ(model.selection.track, -1);
+}
+
+// Where the viewer frames the tracks around the legend window: the rectangle it reports is the
+// window ImGui shows, for a colour bar and for a key.
+TEST_F(HeadlessImGui, LegendOverlayRectIsTheLegendWindow) {
+  const render::ColorLegend bar{"Vertical speed (m/s)", render::Colormap::diverging, "\u22123.2", "3.2", {}};
+  const std::vector<render::TrackKeyEntry> key{{"Morning flight", {1.0f, 0.0f, 0.0f}}, {"B", {0.0f, 0.0f, 1.0f}}};
+  for (const bool with_bar : {true, false}) {
+    SCOPED_TRACE(with_bar ? "colour bar" : "key");
+    ImGui::DestroyContext();
+    SetUp();
+    const std::optional<render::ColorLegend> legend = with_bar ? std::optional(bar) : std::nullopt;
+    const std::vector<render::TrackKeyEntry> names = with_bar ? std::vector<render::TrackKeyEntry>{} : key;
+    const render::PixelRect rect = legend_overlay_rect(legend, names, 1280.0f, 720.0f);
+    for (int i = 0; i < 3; ++i) {  // an auto-sized window takes its size over the first frames
+      ImGui::NewFrame();
+      draw_legend_overlay(legend, names);
+      ImGui::Render();
+    }
+    const ImGuiWindow* window = ImGui::FindWindowByName("Legend");
+    ASSERT_NE(window, nullptr);
+    EXPECT_GT(rect.width, 50);
+    EXPECT_GT(rect.height, 20);
+    EXPECT_NEAR(window->Pos.x, rect.x, 1.0);
+    EXPECT_NEAR(window->Pos.y, rect.y, 1.0);
+    EXPECT_NEAR(window->Pos.x + window->Size.x, rect.right(), 1.0);
+    EXPECT_NEAR(window->Pos.y + window->Size.y, rect.bottom(), 1.0);
+  }
+  EXPECT_TRUE(legend_overlay_rect(std::nullopt, {}, 1280.0f, 720.0f).empty());
 }
 
 TEST(ProfilerTable, RowsForPassesThatRanAndFps) {
