@@ -141,7 +141,8 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon) {
 }
 
 render::Camera initial_camera(const CameraRequest& request, const render::Lens& lens, const TrackPoints& tracks,
-                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear) {
+                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear,
+                              const std::optional<render::ImageArea>& area) {
   // The neutral ground's height: the tracks' lowest point (DESIGN.md), else sea level.
   const double neutral = lowest_height(tracks.points);
   if (request.placement || request.look_at) {
@@ -156,6 +157,7 @@ render::Camera initial_camera(const CameraRequest& request, const render::Lens& 
   render::FramingOptions framing;
   framing.lens = lens;
   framing.keep_clear = keep_clear;
+  framing.area = area;
   auto framed = render::frame_points(tracks.points, framing);
   if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
   return framed.value->camera;

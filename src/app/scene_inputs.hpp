@@ -82,9 +82,11 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, const WarnFun
 double ground_height_at(terrain::HeightSource* source, double lat, double lon);
 
 // The first camera: the request's (never changed), else one framing the tracks' points out of
-// `keep_clear` (where the legend will be drawn). Throws CLI::ValidationError for a camera the
-// options make impossible, std::runtime_error when the tracks cannot be framed.
+// `keep_clear` (where the legend will be drawn), into `area` of the image (nullopt: all of it).
+// Throws CLI::ValidationError for a camera the options make impossible, std::runtime_error when
+// the tracks cannot be framed.
 render::Camera initial_camera(const CameraRequest& request, const render::Lens& lens, const TrackPoints& tracks,
-                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear = {});
+                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear = {},
+                              const std::optional<render::ImageArea>& area = std::nullopt);
 
 }  // namespace trailray::app

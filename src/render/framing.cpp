@@ -297,6 +297,21 @@ std::optional<std::string> options_problem(const FramingOptions& o) {
   if (!(o.min_view_width_m > 0.0 && std::isfinite(o.min_view_width_m))) {
     return "framing minimum view width " + number(o.min_view_width_m) + " m is not above 0";
   }
+  if (o.area) {
+    const ImageArea& a = *o.area;
+    const bool inside = a.left_px >= 0.0 && a.top_px >= 0.0 && a.right_px <= o.lens.width_px &&
+                        a.bottom_px <= o.lens.height_px && a.right_px - a.left_px >= 16.0 &&
+                        a.bottom_px - a.top_px >= 16.0;  // also false for NaN
+    // The framing moves the camera away until the points fit: their image shrinks toward the
+    // image's centre, so an area without the centre is never reached that way.
+    const double cx = 0.5 * o.lens.width_px, cy = 0.5 * o.lens.height_px;
+    const bool centred = a.left_px < cx && a.right_px > cx && a.top_px < cy && a.bottom_px > cy;
+    if (!inside || !centred)
+      return "framing area " + number(a.left_px) + "," + number(a.top_px) + " to " + number(a.right_px) + "," +
+             number(a.bottom_px) + " px is not a rectangle of at least 16x16 px within the " +
+             std::to_string(o.lens.width_px) + "x" + std::to_string(o.lens.height_px) +
+             " image holding its centre";
+  }
   const KeptClearCorner& k = o.keep_clear;
   if (!(k.width_px >= 0.0 && std::isfinite(k.width_px) && k.height_px >= 0.0 && std::isfinite(k.height_px))) {
     return "framing kept-clear corner " + number(k.width_px) + " x " + number(k.height_px) + " px is not a size";
@@ -359,8 +374,11 @@ Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingO
   const double tan_h = std::tan(0.5 * options.lens.vertical_fov_deg * kRadPerDeg) * options.lens.aspect();
   const double min_distance = 0.5 * options.min_view_width_m / tan_h;
   const double width = options.lens.width_px, height = options.lens.height_px;
-  const double mx = options.margin_fraction * width, my = options.margin_fraction * height;
-  const PixelBox margins{mx, my, width - mx, height - my};
+  const PixelBox area = options.area ? PixelBox{options.area->left_px, options.area->top_px, options.area->right_px,
+                                                options.area->bottom_px}
+                                     : PixelBox{0.0, 0.0, width, height};
+  const double mx = options.margin_fraction * area.width(), my = options.margin_fraction * area.height();
+  const PixelBox margins{area.left + mx, area.top + my, area.right - mx, area.bottom - my};
   const std::optional<LookAt> centred = framer.frame(look_at, min_distance, {margins, std::nullopt});
   if (!centred) return {std::nullopt, "framing: no camera distance fits the points in the image"};
   look_at = *centred;

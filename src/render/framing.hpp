@@ -9,6 +9,8 @@
 //   - distance: the smallest that keeps every point inside the image with the margin (found by
 //     bisection on the exact projection, earth curvature included), the points' image centred,
 //     and at least a minimum width of terrain in view;
+//   - an area of the image (where a viewer's panels leave the view free): the points are framed
+//     into it as into a whole image;
 //   - a corner kept clear (where a legend will be drawn over the picture): when the centred
 //     framing puts a point there, the points are moved out of it, centred in the band above (or
 //     below) it or beside it, or further away, whichever shows them largest; the heading and
@@ -17,6 +19,7 @@
 // choose a steeper pitch.
 
 #include <limits>
+#include <optional>
 #include <span>
 
 #include "render/camera.hpp"
@@ -34,6 +37,11 @@ struct KeptClearCorner {
   bool empty() const { return !(width_px > 0.0) || !(height_px > 0.0); }
 };
 
+// A rectangle of the image in pixels (x right, y down from the top-left corner).
+struct ImageArea {
+  double left_px = 0.0, top_px = 0.0, right_px = 0.0, bottom_px = 0.0;
+};
+
 struct FramingOptions {
   Lens lens;
   double pitch_deg = -45.0;            // within [-90, -5]
@@ -46,6 +54,10 @@ struct FramingOptions {
   // Where the points must not go. When they cannot be kept out of it (a corner nearly as large
   // as the image), the framing is the one without it.
   KeptClearCorner keep_clear;
+  // The part of the image the points are framed into, with the margin inside it (a viewer's
+  // panels cover the rest); nullopt: the whole image. It must lie within the image and hold its
+  // centre.
+  std::optional<ImageArea> area;
 };
 
 struct Framing {

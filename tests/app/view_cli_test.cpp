@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/view/panel_layout.hpp"
 #include "render/legend.hpp"
 #include "render/text_raster.hpp"
 #include "track_cli_support.hpp"
@@ -151,6 +152,36 @@ TEST(ViewCli, TheFirstViewKeepsTheTracksOutOfTheLegend) {
   EXPECT_EQ(red_in_panel, 0u) << "track pixels under the legend";
   EXPECT_EQ(red_on_edge, 0u) << "a track runs off the picture";
   EXPECT_GT(count_red(picture), 500u);
+}
+
+// At 1280x720 the panels open as a column on the left and the chart along the bottom: the first
+// view puts the track in the part of the window they leave free (seen in a screenshot of the
+// scene, which has no panels), whole.
+TEST(ViewCli, TheFirstViewPutsTheTrackWhereThePanelsLeaveTheWindowFree) {
+  ViewEnv env;
+  const std::string out = env.file("wide.png");
+  const auto r = run_view(env, shell_quote(env.hike()) +
+                                   " --terrain none --no-ssao --no-atmosphere --size 1280x720 --time "
+                                   "2024-06-18T10:00:00Z --color '#ff0000' --screenshot " + shell_quote(out));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Picture picture = read_picture(out);
+  ASSERT_EQ(picture.width, 1280u);
+  using app::view::PanelLayout, app::view::default_panel_layout, app::view::kPanelTitleBarHeight;
+  const PanelLayout panels = default_panel_layout(1280.0f, 720.0f, kPanelTitleBarHeight);
+  std::size_t covered = 0, free = 0, on_edge = 0;
+  for (std::uint32_t y = 0; y < picture.height; ++y)
+    for (std::uint32_t x = 0; x < picture.width; ++x) {
+      if (!red(picture.at(x, y))) continue;
+      const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
+      const bool under_column = fx < panels.tracks.right();
+      const bool under_chart = fy > panels.chart.y;
+      const bool under_replay = fx > panels.replay.x && fy < panels.replay.bottom();
+      (under_column || under_chart || under_replay ? covered : free) += 1;
+      if (x == 0 || y == 0 || x + 1 == picture.width || y + 1 == picture.height) ++on_edge;
+    }
+  EXPECT_EQ(covered, 0u) << "track pixels where a panel opens";
+  EXPECT_EQ(on_edge, 0u) << "the track runs off the picture";
+  EXPECT_GT(free, 2000u) << "the track is drawn large in the free part";
 }
 
 TEST(ViewCli, AScriptedDragChangesTheView) {

@@ -353,6 +353,53 @@ TEST(Framing, KeptClearCornerChangesNothingWhenNoPointIsThereOrItCannotBeCleared
   EXPECT_FALSE(frame_points(track, options).ok());
 }
 
+// A viewer's panels leave part of the window free: the points are framed into that area as into
+// a whole image (margin inside it, centred in it, spread across it), seen from the same side.
+TEST(Framing, AnAreaOfTheImageTakesThePointsAsTheWholeImageWould) {
+  const std::vector<GeoPosition> track = loop_track(46.69, 7.86, 30.0, 6000.0, 2500.0, 1200.0);
+  FramingOptions options;
+  options.lens = {kDefaultVerticalFovDeg, 1280, 720};
+  const Framing whole = framed(track, options);
+  options.area = ImageArea{350.0, 30.0, 1270.0, 490.0};  // right of a panel column, above a chart
+  const Framing f = framed(track, options);
+  const ImageArea& a = *options.area;
+  const double mx = options.margin_fraction * (a.right_px - a.left_px);
+  const double my = options.margin_fraction * (a.bottom_px - a.top_px);
+  ImageSpan span;
+  for (const GeoPosition& p : track) {
+    const auto s = f.camera.project(ecef_from(p));
+    ASSERT_TRUE(s);
+    span.min_x = std::min(span.min_x, s->x_px), span.max_x = std::max(span.max_x, s->x_px);
+    span.min_y = std::min(span.min_y, s->y_px), span.max_y = std::max(span.max_y, s->y_px);
+  }
+  EXPECT_GE(span.min_x, a.left_px + mx - 0.5);
+  EXPECT_LE(span.max_x, a.right_px - mx + 0.5);
+  EXPECT_GE(span.min_y, a.top_px + my - 0.5);
+  EXPECT_LE(span.max_y, a.bottom_px - my + 0.5);
+  EXPECT_NEAR(span.min_x + span.max_x, a.left_px + a.right_px, 2.0);
+  EXPECT_NEAR(span.min_y + span.max_y, a.top_px + a.bottom_px, 2.0);
+  // Fitted tightly to the area, from the same heading and pitch, further away than for the whole
+  // image (the area is smaller).
+  EXPECT_TRUE(span.max_x - span.min_x > (a.right_px - a.left_px) - 2.0 * mx - 2.0 ||
+              span.max_y - span.min_y > (a.bottom_px - a.top_px) - 2.0 * my - 2.0);
+  EXPECT_DOUBLE_EQ(f.look_at.heading_deg, whole.look_at.heading_deg);
+  EXPECT_DOUBLE_EQ(f.look_at.pitch_deg, whole.look_at.pitch_deg);
+  EXPECT_GT(f.look_at.distance_m, whole.look_at.distance_m);
+
+  // The whole image as the area is the framing without one.
+  options.area = ImageArea{0.0, 0.0, 1280.0, 720.0};
+  const Framing same = framed(track, options);
+  EXPECT_DOUBLE_EQ(same.look_at.distance_m, whole.look_at.distance_m);
+
+  // An area outside the image, empty, NaN, or without the image's centre is an error naming it.
+  for (const ImageArea bad : {ImageArea{-10.0, 0.0, 700.0, 500.0}, ImageArea{0.0, 0.0, 1300.0, 500.0},
+                              ImageArea{400.0, 300.0, 400.0, 600.0}, ImageArea{std::nan(""), 0.0, 700.0, 500.0},
+                              ImageArea{700.0, 0.0, 1280.0, 720.0}, ImageArea{0.0, 400.0, 1280.0, 720.0}}) {
+    options.area = bad;
+    EXPECT_NE(frame_points(track, options).error.find("framing area"), std::string::npos);
+  }
+}
+
 // Real flights from ../shared/data: B records of IGC files (latitude, longitude, GPS altitude).
 std::vector<GeoPosition> igc_fixes(const std::filesystem::path& file) {
   std::vector<GeoPosition> fixes;

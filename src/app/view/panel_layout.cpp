@@ -27,8 +27,8 @@ PanelLayout default_panel_layout(float width, float height, float menu_height) {
   l.statistics = {kMargin, l.tracks.bottom() + kMargin, column, 230.0f, small};
 
   // Four rows (play and clock, speed, scrub bar, camera follow) and no more: it sits in the sky.
-  const float replay_width = std::min(290.0f, std::max(200.0f, width - l.chart.x - kMargin));
-  l.replay = {std::max(l.chart.x, width - replay_width - kMargin), top, replay_width, 128.0f, small};
+  const float replay_width = std::min(330.0f, std::max(200.0f, width - l.chart.x - kMargin));
+  l.replay = {std::max(l.chart.x, width - replay_width - kMargin), top, replay_width, 140.0f, small};
 
   // Opened from the menu: to the right of the column, below the menu.
   l.shading = {l.chart.x, top, 0.0f, 0.0f, false};

@@ -16,6 +16,7 @@
 
 #include "app/track_legend.hpp"
 #include "app/view/legend_overlay.hpp"
+#include "app/view/panel_layout.hpp"
 #include "app/view/camera_controller.hpp"
 #include "app/view/profiler_table.hpp"
 #include "app/view/track_loading.hpp"
@@ -48,6 +49,12 @@ std::string frame_time_summary(const std::string& what, std::vector<double> ms) 
                      median > 0.0 ? 1000.0 / median : 0.0);
 }
 
+// Where a framing may put the tracks: out of a corner, within an area of the window.
+struct FramingRoom {
+  render::KeptClearCorner keep_clear;
+  std::optional<render::ImageArea> area;
+};
+
 class ViewerApp {
  public:
   explicit ViewerApp(const ViewerOptions& options);
@@ -65,6 +72,7 @@ class ViewerApp {
   render::SceneRenderOptions scene_options() const;
   std::pair<TrackStyle, TrackScene> legend_inputs(const render::TrackSceneSettings& settings) const;
   render::KeptClearCorner legend_corner(const render::Lens& lens) const;
+  FramingRoom framing_room(const render::Lens& lens) const;
   void update_hover(double x_px, double y_px, const render::Camera& camera);
   void fly_to_track(int index);
   void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
@@ -103,14 +111,14 @@ render::WindowOptions window_options(const ViewerOptions& o) {
   return w;
 }
 
-// The first view: the options' camera, else framed on the tracks out of the legend's corner;
-// the pivot on the ground.
+// The first view: the options' camera, else framed on the tracks where the panels and the
+// legend leave the window free; the pivot on the ground.
 CameraController first_view(const ViewerOptions& o, const TrackPoints& points, terrain::HeightSource* heights,
-                            double neutral, const render::KeptClearCorner& legend) {
+                            double neutral, const FramingRoom& room) {
   if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
   if (points.points.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
-  const render::Camera camera = initial_camera(o.camera, o.lens, points, heights, legend);
+  const render::Camera camera = initial_camera(o.camera, o.lens, points, heights, room.keep_clear, room.area);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
   return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
 }
@@ -148,7 +156,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.analysis = o.analysis;
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
-  controller_ = first_view(o, points_, sources_.heights.get(), neutral_, legend_corner(o.lens));
+  controller_ = first_view(o, points_, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return renderer_.height_in_memory(lat, lon); });
 }
 
@@ -217,7 +225,12 @@ void ViewerApp::take_dropped_files() {
 }
 
 void ViewerApp::update_hover(double x_px, double y_px, const render::Camera& camera) {
-  const HoverState picked = pick_track_point(model_.tracks, camera, x_px, y_px);
+  // The terrain under the cursor (from the tiles in memory): a track point behind it loses to
+  // one in front.
+  std::optional<double> ground_depth_m;
+  if (const auto ground = controller_.ground_point_at(x_px, y_px))
+    if (const auto seen = camera.project(render::ecef_from(*ground))) ground_depth_m = seen->depth_m;
+  const HoverState picked = pick_track_point(model_.tracks, camera, x_px, y_px, kPickRadiusPx, ground_depth_m);
   if (picked.track >= 0 || !model_.hover.from_chart) model_.hover = picked;
 }
 
@@ -234,7 +247,9 @@ void ViewerApp::fly_to_track(int index) {
   render::FramingOptions framing;
   framing.lens = controller_.lens();
   framing.preferred_heading_deg = controller_.view().heading_deg;
-  framing.keep_clear = legend_corner(framing.lens);
+  const FramingRoom room = framing_room(framing.lens);
+  framing.keep_clear = room.keep_clear;
+  framing.area = room.area;
   const auto framed = render::frame_points(points, framing);
   if (!framed.ok()) return;
   double ground =
@@ -405,6 +420,30 @@ render::KeptClearCorner ViewerApp::legend_corner(const render::Lens& lens) const
                        lens.height_px);
   return {render::ImageCorner::bottom_left, std::max(picture.width_px, window.width_px),
           std::max(picture.height_px, window.height_px)};
+}
+
+// With the panels shown, the part of the window their first layout leaves free (right of the
+// panel column, below the menu, above the chart), clear of the replay panel's corner; the legend
+// window lies under the column, outside that area (if a wide key reaches into it, the area ends
+// above it). Without panels (`hide-panels`), the whole window clear of the legend.
+FramingRoom ViewerApp::framing_room(const render::Lens& lens) const {
+  const render::KeptClearCorner legend = legend_corner(lens);
+  if (!panels_) return {legend, std::nullopt};
+  const ViewerSettings& s = model_.settings;
+  const auto w = static_cast<float>(lens.width_px), h = static_cast<float>(lens.height_px);
+  const float menu = s.show_menu ? kPanelTitleBarHeight : 0.0f;
+  const PanelLayout l = default_panel_layout(w, h, menu);
+  render::ImageArea area{0.0, menu, w, h};
+  if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right();
+  if (s.show_chart) area.bottom_px = l.chart.y;
+  if (!legend.empty() && legend.width_px > area.left_px)
+    area.bottom_px = std::min(area.bottom_px, static_cast<double>(h) - legend.height_px);
+  // A window too small for the panels and a view (the free part misses the window's centre,
+  // which framing needs): frame on all of it.
+  if (!(area.left_px < 0.5 * w && area.bottom_px > 0.5 * h)) return {legend, std::nullopt};
+  render::KeptClearCorner replay;
+  if (s.show_replay) replay = {render::ImageCorner::top_right, w - l.replay.x, l.replay.bottom()};
+  return {replay, area};
 }
 
 // A picture as `render` makes it: the scene once its tiles are in, with the legend.

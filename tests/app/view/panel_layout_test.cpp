@@ -39,10 +39,10 @@ TEST_P(PanelLayoutAt, InsideTheWindowApartAndTheMiddleFree) {
   for (std::size_t i = 0; i < panels.size(); ++i)
     for (std::size_t j = i + 1; j < panels.size(); ++j)
       EXPECT_FALSE(overlap(panels[i].second, panels[j].second)) << panels[i].first << " and " << panels[j].first;
-  // The middle of the free view (right of the column, above the chart) is not covered.
+  // The middle third of the free view (right of the column, above the chart) is not covered.
   const float free_left = l.tracks.right(), free_bottom = l.chart.y;
-  const PanelRect middle{free_left + (w - free_left) * 0.3f, kMenu + (free_bottom - kMenu) * 0.3f,
-                         (w - free_left) * 0.4f, (free_bottom - kMenu) * 0.4f, false};
+  const PanelRect middle{free_left + (w - free_left) / 3.0f, kMenu + (free_bottom - kMenu) / 3.0f,
+                         (w - free_left) / 3.0f, (free_bottom - kMenu) / 3.0f, false};
   for (const auto& [name, r] : panels) EXPECT_FALSE(overlap(r, middle)) << name << " covers the middle";
   EXPECT_GT(middle.width, w * 0.2f);
   EXPECT_GT(middle.height, h * 0.15f);
