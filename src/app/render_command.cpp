@@ -149,6 +149,10 @@ int run_render(const RenderArgs& a) {
         sun.elevation_deg);
     fmt::print(stderr, "trailray: {} tiles drawn ({} with terrain, {} with imagery), {} selection rounds\n",
                r.tiles_drawn, r.tiles_with_data, r.imagery_tiles_used, r.selection_rounds);
+    constexpr double kMiB = 1024.0 * 1024.0;
+    fmt::print(stderr, "trailray: GPU memory for terrain: meshes {:.1f} MiB ({} tiles), imagery {:.1f} MiB ({} tiles)\n",
+               static_cast<double>(r.gpu_meshes.bytes) / kMiB, r.gpu_meshes.entries,
+               static_cast<double>(r.gpu_imagery.bytes) / kMiB, r.gpu_imagery.entries);
   }
   draw_scene_legend(scene.image, style, track_scene);
   render::write_srgb_png(a.output, scene.image);

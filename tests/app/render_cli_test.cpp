@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -208,6 +209,15 @@ TEST(RenderCli, ImageryFromATmsFolderDrapesTheDem) {
   };
   EXPECT_GT(imagery_tiles(tms.out), 0) << tms.out;
   EXPECT_EQ(imagery_tiles(xyz.out), 0) << xyz.out;  // read as XYZ the rows land elsewhere: no imagery here
+  // --verbose also says what the terrain holds on the GPU: meshes for every tile drawn, and
+  // textures for the imagery tiles.
+  const std::regex gpu(R"(GPU memory for terrain: meshes ([0-9.]+) MiB \(([0-9]+) tiles\), imagery ([0-9.]+) MiB \(([0-9]+) tiles\))");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(tms.out, m, gpu)) << tms.out;
+  EXPECT_GT(std::stod(m[1]), 0.0);
+  EXPECT_GT(std::stoi(m[2]), 0);
+  EXPECT_GT(std::stod(m[3]), 0.0);
+  EXPECT_GE(std::stoi(m[4]), imagery_tiles(tms.out) > 0 ? 1 : 0);
 }
 
 // --profile --frames 3: the picture, and on standard error a table with a row per pass of the

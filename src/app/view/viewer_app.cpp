@@ -373,6 +373,10 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     progress_ = scene.report.progress;
     model_.loading = progress_.pending() > 0;
     model_.profile = profiler_table(profiler_, wall_s);
+    model_.profile.mesh_bytes = scene.report.gpu_meshes.bytes;
+    model_.profile.mesh_budget_bytes = scene.report.gpu_meshes.budget_bytes;
+    model_.profile.imagery_bytes = scene.report.gpu_imagery.bytes;
+    model_.profile.imagery_budget_bytes = scene.report.gpu_imagery.budget_bytes;
     glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
   }
   imgui_.render();

@@ -228,6 +228,8 @@ struct ProfilerTable {
   std::vector<ProfilerRow> rows;
   double fps = 0.0;
   double frame_ms = 0.0;
+  // Terrain on the GPU (held now, and the budgets least recently used tiles are freed down to).
+  std::size_t mesh_bytes = 0, mesh_budget_bytes = 0, imagery_bytes = 0, imagery_budget_bytes = 0;
 };
 
 struct ViewerModel {

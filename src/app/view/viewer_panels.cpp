@@ -228,6 +228,10 @@ void profiler_window(ViewerModel& model) {
   }
   const ProfilerTable& p = model.profile;
   ImGui::Text("%.1f FPS (%.2f ms per frame)", p.fps, p.frame_ms);
+  constexpr double kMiB = 1024.0 * 1024.0;
+  ImGui::Text("GPU terrain: meshes %.0f of %.0f MiB, imagery %.0f of %.0f MiB", static_cast<double>(p.mesh_bytes) / kMiB,
+              static_cast<double>(p.mesh_budget_bytes) / kMiB, static_cast<double>(p.imagery_bytes) / kMiB,
+              static_cast<double>(p.imagery_budget_bytes) / kMiB);
   if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     ImGui::TableSetupColumn("pass");
     ImGui::TableSetupColumn("CPU ms");
