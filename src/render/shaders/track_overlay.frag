@@ -25,7 +25,6 @@ uniform bool u_packed_distance;
 uniform bool u_show_occluded;
 uniform float u_occluded_alpha;
 uniform vec2 u_fade;           // metres behind the terrain: constant alpha until x, 0 at y
-uniform float u_depth_step_k;  // depth-buffer resolution at distance d: d * d * k metres
 uniform vec3 u_sun;            // unit, towards the sun, ECEF
 uniform vec3 u_up;             // unit, local vertical at the camera, ECEF
 uniform vec3 u_sun_radiance;
@@ -52,14 +51,13 @@ float visibility_alpha(float t, float terrain) {
   return u_occluded_alpha * (1.0 - fade);
 }
 
-// visibility_alpha, but 1 where the terrain passes through the tube (the same test with the same
-// inputs as track_visible.frag's, which draws the tube there: each pixel once).
-float tube_alpha(vec3 direction, float terrain, float t) {
-  float alpha = visibility_alpha(t, terrain);
-  if (alpha >= 1.0 || !terrain_near_tube(terrain, t)) return alpha;
-  vec3 terrain_normal =
-      transpose(u_view_rotation) * decode_normal(texelFetch(u_terrain_normal, ivec2(gl_FragCoord.xy), 0));
-  return terrain_inside_tube(direction, terrain, terrain_normal) ? 1.0 : alpha;
+// Whether the terrain passes through the tube where the ray passes nearest `on_axis`, at `t`:
+// the same test with the same inputs as track_visible.frag's, which draws the tube there (each
+// pixel once).
+bool inside_tube(vec3 on_axis, vec3 direction, float terrain, float t) {
+  if (!terrain_near_tube(terrain, t)) return false;
+  vec4 normal_texel = texelFetch(u_terrain_normal, ivec2(gl_FragCoord.xy), 0);
+  return terrain_inside_tube(on_axis, direction, terrain, terrain_normal_ecef(u_view_rotation, normal_texel));
 }
 
 void main() {
@@ -67,24 +65,32 @@ void main() {
   CapsuleHit hit = trace_capsule(vec3(0.0), direction, true);
   if (hit.clipped) discard;
   float terrain = read_distance(u_terrain_distance, ivec2(gl_FragCoord.xy), u_packed_distance);
-  if (hit.hit) {
-    float alpha = tube_alpha(direction, terrain, hit.t);
-    gl_FragDepth = window_depth(hit.position);
-    if (alpha >= 1.0) {
-      overlay = vec4(0.0);  // in the G-buffer already: only its depth matters here
-      return;
-    }
-    if (alpha <= 0.0) discard;
-    overlay = vec4(lit(track_albedo(hit.position), hit.normal) * alpha, alpha);
-    return;
-  }
-  // The fringe: how far the ray passes outside the tube, in pixels at that distance.
+  // Where the ray passes nearest the axis: the fringe's geometry, and where the terrain is asked
+  // whether it runs through the tube, once for a hit or a fringe (llvmpipe runs both branches).
   vec3 on_axis = axis_nearest_ray(direction);
   float shift = dot(0.5 * (v_x1 + v_x2), direction);
   vec3 o = direction * shift;  // the ray's point nearest the segment's middle
   float t_local = dot(on_axis - o, direction);
+  float t = hit.hit ? hit.t : shift + t_local;
+  float visibility = visibility_alpha(t, terrain);
+  bool inside = visibility < 1.0 && inside_tube(hit.hit ? hit.on_axis : on_axis, direction, terrain, t);
+  if (inside) visibility = 1.0;
+  if (hit.hit) {
+    float depth = window_depth(hit.position);
+    // Drawn by track_visible.frag in front of the terrain: the same depth here, so that no other
+    // track's ghost behind the terrain shows over it.
+    if (inside) depth = min(depth, window_depth(direction * (terrain - terrain_margin(terrain))));
+    gl_FragDepth = depth;
+    if (visibility >= 1.0) {
+      overlay = vec4(0.0);  // in the G-buffer already: only its depth matters here
+      return;
+    }
+    if (visibility <= 0.0) discard;
+    overlay = vec4(lit(track_albedo(hit.position), hit.normal) * visibility, visibility);
+    return;
+  }
+  // The fringe: how far the ray passes outside the tube, in pixels at that distance.
   vec3 on_ray = o + direction * t_local;
-  float t = shift + t_local;
   if (t <= 0.0) discard;
   vec3 outward = on_ray - on_axis;
   float miss = length(outward);
@@ -95,7 +101,7 @@ void main() {
   vec3 normal = outward / miss;
   vec3 edge = on_axis + normal * radius;
   if (clipped_by_joints(edge)) discard;
-  float alpha = coverage * tube_alpha(direction, terrain, t);
+  float alpha = coverage * visibility;
   if (alpha <= 0.0) discard;
   gl_FragDepth = window_depth(edge + direction * radius);
   overlay = vec4(lit(track_albedo(edge), normal) * alpha, alpha);

@@ -20,9 +20,12 @@ uniform mat4 u_view_projection;
 // closest approach to it (the axis line, a sphere's centre), where the quadratic has no large
 // terms: a textbook form such as |oa|^2 |ba|^2 - (oa.ba)^2 - r^2 |ba|^2 subtracts numbers of
 // 1e15 to find one of 1e9 for a kilometre-long segment, and float arithmetic loses the radius
-// (ragged edges). The caller puts o near the capsule.
-bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t) {
+// (ragged edges). The caller puts o near the capsule. `on_axis`: the point of the axis segment
+// the line passes nearest (of the entered end sphere's centre when the line runs along the axis).
+bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t, out vec3 on_axis) {
   t = 0.0;
+  on_axis = a;
+  bool across = false;
   vec3 ba = b - a;
   float len = length(ba);
   if (len > 0.0) {
@@ -31,8 +34,10 @@ bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t) {
     vec3 d_across = d - u * dot(d, u);
     float dd = dot(d_across, d_across);
     if (dd > 1.0e-10) {
+      across = true;
       vec3 oa_across = oa - u * dot(oa, u);
       float closest = -dot(oa_across, d_across) / dd;  // the ray's point nearest the axis line
+      on_axis = a + u * clamp(dot(oa + d * closest, u), 0.0, len);
       vec3 miss = oa_across + d_across * closest;
       float miss2 = dot(miss, miss);
       if (miss2 > r * r) return false;
@@ -53,7 +58,10 @@ bool capsule_entry(vec3 o, vec3 d, vec3 a, vec3 b, float r, out float t) {
     float miss2 = dot(miss, miss);
     if (miss2 > r * r) continue;
     float entry = closest - sqrt(r * r - miss2);
-    if (!hit || entry < best) best = entry;
+    if (!hit || entry < best) {
+      best = entry;
+      if (!across) on_axis = centre;
+    }
     hit = true;
   }
   t = best;
@@ -88,6 +96,7 @@ struct CapsuleHit {
   float t;         // along the ray
   vec3 position;   // camera-relative ECEF
   vec3 normal;     // unit, ECEF
+  vec3 on_axis;    // the axis point the ray passes nearest (capsule_entry), camera-relative
 };
 
 // The ray from `origin` along unit `direction` against this fragment's capsule, with the joints
@@ -99,10 +108,12 @@ CapsuleHit trace_capsule(vec3 origin, vec3 direction, bool in_front_only) {
   result.t = 0.0;
   result.position = vec3(0.0);
   result.normal = vec3(0.0, 0.0, 1.0);
+  result.on_axis = vec3(0.0);
   float shift = dot(0.5 * (v_x1 + v_x2) - origin, direction);
   vec3 near_origin = origin + direction * shift;
   float t;
-  if (!capsule_entry(near_origin, direction, v_x1, v_x2, v_radii.y, t)) return result;
+  vec3 on_axis;
+  if (!capsule_entry(near_origin, direction, v_x1, v_x2, v_radii.y, t, on_axis)) return result;
   if (in_front_only && shift + t <= 0.0) return result;
   vec3 p = near_origin + direction * t;
   if (clipped_by_joints(p)) {
@@ -113,11 +124,13 @@ CapsuleHit trace_capsule(vec3 origin, vec3 direction, bool in_front_only) {
   result.t = shift + t;
   result.position = p;
   result.normal = normalize(p - closest_on_segment(p, v_x1, v_x2));
+  result.on_axis = on_axis;
   return result;
 }
 
 // The point of this capsule's axis segment nearest the ray from the camera along unit
-// `direction`: where the pixel's ray passes through the tube's middle (or, outside it, closest).
+// `direction`: where the pixel's ray passes closest to the tube's middle (a hit has it as
+// CapsuleHit::on_axis).
 vec3 axis_nearest_ray(vec3 direction) {
   vec3 axis = v_x2 - v_x1;
   float shift = dot(0.5 * (v_x1 + v_x2), direction);
@@ -140,28 +153,47 @@ vec3 axis_nearest_ray(vec3 direction) {
 // underground. Terrain that passes through the tube is not what the occlusion is about (a ridge
 // in front, a forest canopy above a hike: thesis section 3.2.4), so it does not hide the tube.
 // The test: the terrain's tangent plane where this pixel sees it (distance and normal from the
-// G-buffer) passes within the tube's radius of the axis point where the pixel's ray passes
-// through the tube (axis_nearest_ray). The surface point itself is rarely that close (on flat
-// ground the ray meets it up to r / sin(incidence) from the axis), but the plane through it cuts
-// the tube exactly when the ground does. Where a track runs into a slope, this shows the tube
-// whole as long as the slope cuts its cross-section, i.e. until it is buried. The tangent plane
-// is only a local model of the terrain, so a ray that runs more than kMaxUndergroundRadii radii
-// below the surface before it meets the tube (terrain_near_tube) keeps it hidden (for a tube
-// centred on flat ground that happens only where the view grazes the ground at under 3 degrees).
-// Camera-relative positions throughout: the terrain point and the axis are both near the tube,
-// and their difference keeps its precision at any distance from the ECEF origin.
+// G-buffer) passes within the tube's radius of the axis point the pixel's ray passes nearest
+// (CapsuleHit::on_axis for a hit, axis_nearest_ray for the fringe). The surface point itself is
+// rarely that close (on flat ground the ray meets it up to r / sin(incidence) from the axis),
+// but the plane through it cuts the tube exactly when the ground does. Where a track runs into a
+// slope, this shows the tube whole as long as the slope cuts its cross-section, i.e. until it
+// is buried. The tangent plane is only a local model of the terrain, so a ray that runs more
+// than kMaxUndergroundRadii radii below the surface before it meets the tube keeps it hidden
+// (terrain_near_tube; for a tube centred on flat ground that happens only where the view grazes
+// the ground at under 3 degrees). Camera-relative positions throughout: the terrain point and
+// the axis are both near the tube, and their difference keeps its precision at any distance
+// from the ECEF origin.
 const float kMaxUndergroundRadii = 20.0;
 
-// Whether terrain_inside_tube can hold at all: terrain there, and the tube not too far below it
-// (checked first, so that a track far behind a ridge skips the normal's fetch).
+// Whether terrain_inside_tube can hold at all for the tube's point `t` along the ray: terrain
+// there, and the tube not too far below it (asked first: a GPU then skips the normal's fetch
+// for a track far behind a ridge; llvmpipe runs both sides of a branch anyway).
 bool terrain_near_tube(float terrain, float t) {
   return terrain > 0.0 && t - terrain <= kMaxUndergroundRadii * v_radii.y;
 }
 
-bool terrain_inside_tube(vec3 direction, float terrain, vec3 terrain_normal) {
-  float height = dot(axis_nearest_ray(direction) - direction * terrain, terrain_normal);
-  return abs(height) <= v_radii.y;
+// The terrain's normal in ECEF from its G-buffer texel (gbuffer.glsl's encoding) and the view
+// rotation (ECEF -> view). Not normalised: the 10-bit rounding changes its length, and the
+// test's height, by well under a percent.
+vec3 terrain_normal_ecef(mat3 view_rotation, vec4 normal_texel) {
+  return transpose(view_rotation) * (normal_texel.xyz * 2.0 - 1.0);
 }
+
+// `on_axis`: as above; the terrain `terrain` metres along the unit ray `direction`, with
+// `terrain_normal` (ECEF, terrain_normal_ecef).
+bool terrain_inside_tube(vec3 on_axis, vec3 direction, float terrain, vec3 terrain_normal) {
+  return abs(dot(on_axis - direction * terrain, terrain_normal)) <= v_radii.y;
+}
+
+uniform float u_depth_step_k;  // depth-buffer resolution at distance d: d * d * k metres
+
+// How far in front of the terrain `terrain` metres away a hit it does not hide is drawn: two
+// depth steps and a little more than the packed distance's rounding, so that the depth test
+// keeps the hit whatever the rounding of either depth. Wider than visibility_alpha's margin in
+// track_overlay.frag, so that wherever the overlay asks whether the terrain is inside the tube,
+// track_visible.frag has asked it too.
+float terrain_margin(float terrain) { return 0.1 + 2.0 * terrain * terrain * u_depth_step_k; }
 
 // Window depth of a camera-relative point (for gl_FragDepth), clamped to the depth range.
 float window_depth(vec3 p) {

@@ -21,7 +21,6 @@ uniform bool u_packed_distance;
 // them), as this pass writes the G-buffer itself.
 uniform highp sampler2D u_terrain_distance;
 uniform highp sampler2D u_terrain_normal;
-uniform float u_depth_step_k;  // depth-buffer resolution at distance d: d * d * k metres
 
 layout(location = 0) out vec4 g_albedo;
 layout(location = 1) out vec4 g_normal;
@@ -35,14 +34,10 @@ void main() {
   float depth = window_depth(hit.position);
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float terrain = read_distance(u_terrain_distance, pixel, u_packed_distance);
-  // Two depth steps and a little more than the packed distance's rounding: in front of the
-  // terrain by this much, the depth test keeps the tube whatever the rounding of either depth.
-  // Also wider than the overlay's margin (visibility_alpha), so that wherever the overlay asks
-  // whether the terrain is inside the tube, this pass has asked it too.
-  float margin = 0.1 + 2.0 * terrain * terrain * u_depth_step_k;
+  float margin = terrain_margin(terrain);
   if (hit.t > terrain - margin && terrain_near_tube(terrain, hit.t)) {
-    vec3 terrain_normal = transpose(u_view_rotation) * decode_normal(texelFetch(u_terrain_normal, pixel, 0));
-    if (terrain_inside_tube(direction, terrain, terrain_normal)) {
+    vec3 terrain_normal = terrain_normal_ecef(u_view_rotation, texelFetch(u_terrain_normal, pixel, 0));
+    if (terrain_inside_tube(hit.on_axis, direction, terrain, terrain_normal)) {
       distance_m = min(hit.t, terrain);
       depth = min(depth, window_depth(direction * (terrain - margin)));
     }
