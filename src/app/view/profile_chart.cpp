@@ -172,10 +172,12 @@ void draw_profile_chart(ViewerModel& model) {
     return;
   }
 
-  // The plot: the window's width, a fixed height, a margin for the axis labels.
+  // The plot: the window's width, its height less a line for the hint below (the window opens
+  // sized from the screen: no scroll bar on a small one), a margin for the axis labels.
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(50.0f, ImGui::GetContentRegionAvail().x);
-  const float height = 160.0f;
+  const float height =
+      std::clamp(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing(), 100.0f, 600.0f);
   const float label_w = 48.0f;
   const float left = origin.x + label_w, top = origin.y + 4.0f;
   const float plot_w = width - label_w, plot_h = height - 20.0f;
