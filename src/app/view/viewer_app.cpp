@@ -358,13 +358,14 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   OverlayState overlay{
       model_, camera, progress_, status_, controller_.view().heading_deg, scripted ? script_cursor_ : std::nullopt};
   if (panels_ && draw_overlays(overlay)) controller_.reset_north();
+  // Once a frame: the colour range behind it is a percentile over every track value.
+  render::SceneRenderOptions options = scene_options();
   if (panels_ && model_.settings.legend) {
-    const auto [style, legend_scene] = legend_inputs(scene_options().track_settings);
+    const auto [style, legend_scene] = legend_inputs(options.track_settings);
     draw_legend_overlay(color_legend_for(style, legend_scene), track_key_for(style, legend_scene));
   }
 
   if (width > 0 && height > 0) {
-    render::SceneRenderOptions options = scene_options();
     options.wait_for_tiles = false;
     options.read_back = false;
     options.blit_to_default_framebuffer = true;
