@@ -107,7 +107,7 @@ int run_bench_tracks(const BenchArgs& a) {
   for (const std::string& note : real.skipped) fmt::print(stderr, "bench: skipped {}\n", note);
 
   BenchSettings settings;
-  settings.lens = render::Lens{render::kDefaultVerticalFovDeg, size->width, size->height};
+  settings.lens = scene::Lens{scene::kDefaultVerticalFovDeg, size->width, size->height};
   settings.frames = a.frames;
   TrackBench bench(settings);
   const std::string timing = bench.gpu_timing() ? "gpu (EXT_disjoint_timer_query)" : "cpu (wall time around the draw and glFinish)";
@@ -160,8 +160,8 @@ int run_bench_tracks(const BenchArgs& a) {
 
 }  // namespace
 
-render::Result<std::vector<std::size_t>> parse_point_counts(std::string_view text) {
-  render::Result<std::vector<std::size_t>> r;
+scene::Result<std::vector<std::size_t>> parse_point_counts(std::string_view text) {
+  scene::Result<std::vector<std::size_t>> r;
   const std::string form = fmt::format("point counts in 2..{}, separated by commas, e.g. 10000,100000", kMaxBenchPoints);
   std::vector<std::size_t> counts;
   std::size_t start = 0;

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::app {
 
@@ -22,6 +22,6 @@ void add_bench_command(CLI::App& app, int& exit_code);
 
 // `--points LIST`: comma-separated point counts, each in 2..kMaxBenchPoints ("10000,100000").
 // The error quotes the offending item and names the option.
-render::Result<std::vector<std::size_t>> parse_point_counts(std::string_view text);
+scene::Result<std::vector<std::size_t>> parse_point_counts(std::string_view text);
 
 }  // namespace trailray::app

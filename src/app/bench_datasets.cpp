@@ -18,9 +18,9 @@ constexpr double kWalkLat = 47.26, kWalkLon = 11.39, kWalkGround = 600.0;
 constexpr double kWalkRadiusM = 2000.0;
 constexpr double kWalkMaxHeightM = 1500.0;
 
-void add_point(BenchDataset& d, render::TrackPolyline& segment, const render::GeoPosition& p) {
+void add_point(BenchDataset& d, scene::TrackPolyline& segment, const scene::GeoPosition& p) {
   d.positions.push_back(p);
-  segment.points_ecef.push_back(render::to_dvec3(render::ecef_from(p)));
+  segment.points_ecef.push_back(scene::to_dvec3(scene::ecef_from(p)));
 }
 
 }  // namespace
@@ -31,7 +31,7 @@ BenchDataset make_random_walk(std::size_t points) {
   d.kind = "random_walk";
   d.ground_height_m = kWalkGround;
   d.positions.reserve(points);
-  render::TrackPolyline segment;
+  scene::TrackPolyline segment;
   segment.points_ecef.reserve(points);
   // Seeded by the size: each size is its own walk, the same on every run.
   std::mt19937_64 random(0x7261696c ^ points);
@@ -91,7 +91,7 @@ std::string add_file(const std::filesystem::path& path, std::vector<BenchDataset
   d.kind = "track";
   d.ground_height_m = lowest;
   for (const track::Segment& s : segments) {
-    render::TrackPolyline polyline;
+    scene::TrackPolyline polyline;
     for (const track::TrackPoint& p : s.points)
       add_point(d, polyline, {p.lat, p.lon, std::isfinite(p.ele) ? p.ele : lowest});
     d.geometry.segments.push_back(std::move(polyline));

@@ -8,16 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "render/camera.hpp"
-#include "render/track_buffer.hpp"
+#include "scene/camera.hpp"
+#include "render/passes/track_buffer.hpp"
 
 namespace trailray::app {
 
 struct BenchDataset {
   std::string name;  // "walk-100000", or the file's name
   std::string kind;  // "random_walk" or "track"
-  render::TrackGeometry geometry;
-  std::vector<render::GeoPosition> positions;  // the same points, for framing
+  scene::TrackGeometry geometry;
+  std::vector<scene::GeoPosition> positions;  // the same points, for framing
   double ground_height_m = 0.0;                // the flat ground: the lowest point's height
 
   std::size_t point_count() const { return positions.size(); }

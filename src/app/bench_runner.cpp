@@ -9,18 +9,18 @@
 #include <vector>
 
 #include "geo/tile_id.hpp"
-#include "render/frame_profiler.hpp"
-#include "render/framing.hpp"
-#include "render/gbuffer.hpp"
-#include "render/gl_api.hpp"
-#include "render/gl_context.hpp"
-#include "render/reference/reference_track.hpp"
-#include "render/reference/ribbon_pass.hpp"
-#include "render/reference/tube_pass.hpp"
-#include "render/terrain_mesh.hpp"
-#include "render/terrain_pass.hpp"
-#include "render/track_buffer.hpp"
-#include "render/track_pass.hpp"
+#include "render/gl/frame_profiler.hpp"
+#include "scene/framing.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/gl/gl_api.hpp"
+#include "render/platform/gl_context.hpp"
+#include "render/passes/reference/reference_track.hpp"
+#include "render/passes/reference/ribbon_pass.hpp"
+#include "render/passes/reference/tube_pass.hpp"
+#include "render/passes/terrain_mesh.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "render/passes/track_buffer.hpp"
+#include "render/passes/track_pass.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::app {
@@ -34,9 +34,9 @@ constexpr std::size_t kMaxGroundTiles = 64;
 // A flat ground at `height_m` under the points and as far again around them (at least 3 km):
 // the terrain depth the track passes test against, as on a real scene. A few Web Mercator tiles
 // of one zoom, each a 2x2 grid of one height (the mesh follows the Earth's curvature).
-std::vector<render::TerrainTileGpu> flat_ground(const std::vector<render::GeoPosition>& points, double height_m) {
+std::vector<render::TerrainTileGpu> flat_ground(const std::vector<scene::GeoPosition>& points, double height_m) {
   double min_lat = 90.0, max_lat = -90.0, min_lon = 180.0, max_lon = -180.0;
-  for (const render::GeoPosition& p : points) {
+  for (const scene::GeoPosition& p : points) {
     min_lat = std::min(min_lat, p.lat_deg), max_lat = std::max(max_lat, p.lat_deg);
     min_lon = std::min(min_lon, p.lon_deg), max_lon = std::max(max_lon, p.lon_deg);
   }
@@ -97,7 +97,7 @@ struct TrackBench::State {
         overlay(static_cast<int>(s.lens.width_px), static_cast<int>(s.lens.height_px)) {}
 
   // Warm-up frames, then the timed ones: the ground (untimed), then each pass under its name.
-  PassMedians time_passes(const render::Camera& camera, const std::vector<render::TerrainDrawItem>& ground,
+  PassMedians time_passes(const scene::Camera& camera, const std::vector<render::TerrainDrawItem>& ground,
                           const std::vector<TimedPass>& passes, const std::function<void()>& before_frame) {
     render::FrameProfiler profiler(gl.capabilities(), static_cast<std::size_t>(settings.frames));
     for (int frame = 0; frame < settings.warmup_frames + settings.frames; ++frame) {
@@ -142,12 +142,12 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
   row.points = dataset.point_count();
   row.segments = dataset.geometry.segments.size();
 
-  render::FramingOptions framing_options;
+  scene::FramingOptions framing_options;
   framing_options.lens = s.settings.lens;
   framing_options.ground_height_m = dataset.ground_height_m;
-  const render::Result<render::Framing> framed = render::frame_points(dataset.positions, framing_options);
+  const scene::Result<scene::Framing> framed = scene::frame_points(dataset.positions, framing_options);
   if (!framed.ok()) throw std::runtime_error(dataset.name + ": cannot frame it: " + framed.error);
-  const render::Camera& camera = framed.value->camera;
+  const scene::Camera& camera = framed.value->camera;
   row.view_distance_m = framed.value->look_at.distance_m;
 
   const std::vector<render::TerrainTileGpu> ground_tiles = flat_ground(dataset.positions, dataset.ground_height_m);

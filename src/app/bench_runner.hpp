@@ -15,12 +15,12 @@
 #include <string>
 
 #include "app/bench_datasets.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::app {
 
 struct BenchSettings {
-  render::Lens lens;    // the picture's size (and field of view)
+  scene::Lens lens;    // the picture's size (and field of view)
   int frames = 20;      // timed frames per technique
   int warmup_frames = 2;
   double width_px = 5.0;  // the tube's diameter on screen (the capsules' default width)

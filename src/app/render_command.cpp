@@ -17,14 +17,14 @@
 #include "app/track_legend.hpp"
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
-#include "render/camera.hpp"
-#include "render/frame_profiler.hpp"
-#include "render/framebuffer_readback.hpp"
-#include "render/framing.hpp"
-#include "render/gl_capabilities.hpp"
-#include "render/gl_context.hpp"
+#include "scene/camera.hpp"
+#include "render/gl/frame_profiler.hpp"
+#include "scene/rgba_image.hpp"
+#include "scene/framing.hpp"
+#include "render/gl/gl_capabilities.hpp"
+#include "render/platform/gl_context.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/sun_position.hpp"
+#include "scene/sun_position.hpp"
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
 #include "track/diagnostics.hpp"
@@ -60,8 +60,8 @@ int run_render(const RenderArgs& a) {
   if (!size)
     throw CLI::ValidationError(
         "--size", fmt::format("'{}' is not WxH with W and H in 1..{}, e.g. 1920x1080", a.size, kMaxImageSide));
-  render::Lens lens{a.camera.fov_deg, size->width, size->height};
-  if (auto problem = render::lens_problem(lens)) throw CLI::ValidationError("--fov/--size", *problem);
+  scene::Lens lens{a.camera.fov_deg, size->width, size->height};
+  if (auto problem = scene::lens_problem(lens)) throw CLI::ValidationError("--fov/--size", *problem);
   const CameraRequest camera_request = parse_camera_request(a.camera, !a.tracks.empty());
   if (a.frames < 1 || a.frames > kMaxProfiledFrames)
     throw CLI::ValidationError("--frames",
@@ -83,9 +83,9 @@ int run_render(const RenderArgs& a) {
   const TrackScene track_scene =
       build_track_scene(tracks.files, style, {heights, std::isnan(neutral) ? 0.0 : neutral, a.analysis}, warn);
   // The camera: framed with the tracks out of the legend's way.
-  const render::KeptClearCorner legend_corner =
+  const scene::KeptClearCorner legend_corner =
       legend_clearance(scene_legend_panel(lens.width_px, lens.height_px, style, track_scene), lens.height_px);
-  const std::optional<render::Camera> camera = initial_camera(camera_request, lens, tracks, heights, legend_corner);
+  const std::optional<scene::Camera> camera = initial_camera(camera_request, lens, tracks, heights, legend_corner);
 
   render::GlContext gl = render::GlContext::create_headless();
   if (a.verbose)
@@ -103,7 +103,7 @@ int run_render(const RenderArgs& a) {
     options.track_settings.value_min = static_cast<float>(track_scene.range->min);
     options.track_settings.value_max = static_cast<float>(track_scene.range->max);
   }
-  options.sun_direction_ecef = render::sun_direction_ecef(unix_time);
+  options.sun_direction_ecef = scene::sun_direction_ecef(unix_time);
   options.neutral_ground_height_m = neutral;
   options.timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000.0));
   options.ssao = !a.effects.no_ssao;
@@ -136,8 +136,8 @@ int run_render(const RenderArgs& a) {
   if (r.tiles_with_data == 0)
     warn(fmt::format("no terrain source covers the view ({}): drawing a neutral ground at {:.0f} m",
                      heights ? heights->info().name : std::string("--terrain none"), r.neutral_ground_height_m));
-  const render::SolarPosition sun =
-      render::solar_position(unix_time, camera->geodetic().lat_deg, camera->geodetic().lon_deg);
+  const scene::SolarPosition sun =
+      scene::solar_position(unix_time, camera->geodetic().lat_deg, camera->geodetic().lon_deg);
   if (sun.elevation_deg < 0.0)
     warn(fmt::format("the sun is below the horizon ({:.1f} degrees) at that time", sun.elevation_deg));
   if (a.verbose) {
@@ -155,7 +155,7 @@ int run_render(const RenderArgs& a) {
                static_cast<double>(r.gpu_imagery.bytes) / kMiB, r.gpu_imagery.entries);
   }
   draw_scene_legend(scene.image, style, track_scene);
-  render::write_srgb_png(a.output, scene.image);
+  scene::write_srgb_png(a.output, scene.image);
   if (a.verbose) fmt::print(stderr, "trailray: wrote {} ({}x{})\n", a.output, scene.image.width, scene.image.height);
   return 0;
 }

@@ -5,8 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "render/framing.hpp"
-#include "render/sun_position.hpp"
+#include "scene/framing.hpp"
+#include "scene/sun_position.hpp"
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
 #include "track/io/parse_util.hpp"
@@ -51,13 +51,13 @@ CameraRequest parse_camera_request(const CameraArgs& a, bool have_tracks) {
         "[--distance M --heading DEG --pitch DEG]");
   CameraRequest request;
   if (!a.camera.empty()) {
-    auto parsed = render::parse_camera_option(a.camera);
+    auto parsed = scene::parse_camera_option(a.camera);
     if (!parsed.ok()) throw CLI::ValidationError(parsed.error);  // it names the option
     request.placement = *parsed.value;
   } else if (!a.look_at.empty()) {
-    auto parsed = render::parse_look_at_option(a.look_at);
+    auto parsed = scene::parse_look_at_option(a.look_at);
     if (!parsed.ok()) throw CLI::ValidationError(parsed.error);
-    request.look_at = render::LookAt{*parsed.value};
+    request.look_at = scene::LookAt{*parsed.value};
     if (a.distance_m) request.look_at->distance_m = *a.distance_m;
     if (a.heading_deg) request.look_at->heading_deg = *a.heading_deg;
     if (a.pitch_deg) request.look_at->pitch_deg = *a.pitch_deg;
@@ -98,7 +98,7 @@ TrackPoints load_track_points(const std::vector<std::string>& paths, const track
   return out;
 }
 
-double lowest_height(const std::vector<render::GeoPosition>& points) {
+double lowest_height(const std::vector<scene::GeoPosition>& points) {
   double lowest = std::numeric_limits<double>::quiet_NaN();
   for (const auto& p : points)
     if (!std::isnan(p.height_m) && !(p.height_m >= lowest)) lowest = p.height_m;
@@ -113,10 +113,10 @@ double sun_time(const std::string& time_text, const TrackPoints& tracks) {
                                  "'" + time_text + "' is not an ISO 8601 date and time, e.g. 2024-06-18T12:00:00Z");
     return *t;
   }
-  if (tracks.first_time_s) return render::solar_noon_utc(*tracks.first_time_s, tracks.first_lon_deg);
+  if (tracks.first_time_s) return scene::solar_noon_utc(*tracks.first_time_s, tracks.first_lon_deg);
   const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   // Tracks without times (planned routes): today's noon there, not the dark of "now" at night.
-  if (tracks.any_lon_deg) return render::solar_noon_utc(now, *tracks.any_lon_deg);
+  if (tracks.any_lon_deg) return scene::solar_noon_utc(now, *tracks.any_lon_deg);
   return now;
 }
 
@@ -140,25 +140,25 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon) {
   return sampler.sample(lat, lon);
 }
 
-render::Camera initial_camera(const CameraRequest& request, const render::Lens& lens, const TrackPoints& tracks,
-                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear,
-                              const std::optional<render::ImageArea>& area) {
+scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const TrackPoints& tracks,
+                              terrain::HeightSource* heights, const scene::KeptClearCorner& keep_clear,
+                              const std::optional<scene::ImageArea>& area) {
   // The neutral ground's height: the tracks' lowest point (DESIGN.md), else sea level.
   const double neutral = lowest_height(tracks.points);
   if (request.placement || request.look_at) {
-    const render::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
+    const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
     double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
     if (std::isnan(ground)) ground = std::isnan(neutral) ? 0.0 : neutral;
-    auto made = request.placement ? render::camera_at(*request.placement, lens, ground)
-                                  : render::camera_looking_at(*request.look_at, lens, ground);
+    auto made = request.placement ? scene::camera_at(*request.placement, lens, ground)
+                                  : scene::camera_looking_at(*request.look_at, lens, ground);
     if (!made.ok()) throw CLI::ValidationError(request.placement ? "--camera" : "--look-at", made.error);
     return std::move(*made.value);
   }
-  render::FramingOptions framing;
+  scene::FramingOptions framing;
   framing.lens = lens;
   framing.keep_clear = keep_clear;
   framing.area = area;
-  auto framed = render::frame_points(tracks.points, framing);
+  auto framed = scene::frame_points(tracks.points, framing);
   if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
   return framed.value->camera;
 }

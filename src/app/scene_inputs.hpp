@@ -14,8 +14,8 @@
 
 #include "app/terrain_options.hpp"
 #include "app/track_scene.hpp"
-#include "render/camera.hpp"
-#include "render/framing.hpp"
+#include "scene/camera.hpp"
+#include "scene/framing.hpp"
 #include "terrain/tile_source.hpp"
 #include "track/io/load.hpp"
 
@@ -27,7 +27,7 @@ using WarnFunction = std::function<void(const std::string&)>;
 struct CameraArgs {
   std::string camera, look_at;
   std::optional<double> distance_m, heading_deg, pitch_deg;
-  double fov_deg = render::kDefaultVerticalFovDeg;
+  double fov_deg = scene::kDefaultVerticalFovDeg;
 };
 void add_camera_options(CLI::App& command, CameraArgs& args);
 
@@ -41,8 +41,8 @@ void add_effect_options(CLI::App& command, EffectArgs& args);
 
 // The camera the options ask for: a placement, a look-at, or neither (frame the tracks).
 struct CameraRequest {
-  std::optional<render::CameraPlacement> placement;
-  std::optional<render::LookAt> look_at;
+  std::optional<scene::CameraPlacement> placement;
+  std::optional<scene::LookAt> look_at;
 };
 // Throws CLI::ValidationError naming the option: --camera with --look-at, --distance/--heading/
 // --pitch without --look-at, no camera and no track (`have_tracks` false), unparsable text.
@@ -51,7 +51,7 @@ CameraRequest parse_camera_request(const CameraArgs& args, bool have_tracks);
 // Every recorded point of the tracks (track and route points), and the first timestamp.
 struct TrackPoints {
   std::vector<LoadedTrackFile> files;
-  std::vector<render::GeoPosition> points;
+  std::vector<scene::GeoPosition> points;
   std::optional<double> first_time_s;
   double first_lon_deg = 0.0;         // of the first timed point
   std::optional<double> any_lon_deg;  // of the first point at all
@@ -64,7 +64,7 @@ TrackPoints load_track_points(const std::vector<std::string>& paths, const track
 void add_track_points(TrackPoints& points, LoadedTrackFile file);
 
 // The lowest recorded height among the points (NaN: none has one).
-double lowest_height(const std::vector<render::GeoPosition>& points);
+double lowest_height(const std::vector<scene::GeoPosition>& points);
 
 // The sun's time: --time (ISO 8601; CLI::ValidationError when it is not), else local solar noon
 // on the tracks' first day, today's noon at tracks without times, now without tracks.
@@ -85,8 +85,8 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon);
 // `keep_clear` (where the legend will be drawn), into `area` of the image (nullopt: all of it).
 // Throws CLI::ValidationError for a camera the options make impossible, std::runtime_error when
 // the tracks cannot be framed.
-render::Camera initial_camera(const CameraRequest& request, const render::Lens& lens, const TrackPoints& tracks,
-                              terrain::HeightSource* heights, const render::KeptClearCorner& keep_clear = {},
-                              const std::optional<render::ImageArea>& area = std::nullopt);
+scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const TrackPoints& tracks,
+                              terrain::HeightSource* heights, const scene::KeptClearCorner& keep_clear = {},
+                              const std::optional<scene::ImageArea>& area = std::nullopt);
 
 }  // namespace trailray::app

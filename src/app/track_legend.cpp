@@ -4,13 +4,13 @@
 
 #include <algorithm>
 
-#include "render/text_raster.hpp"
+#include "scene/text_raster.hpp"
 
 namespace trailray::app {
 
-std::optional<render::ColorLegend> color_legend_for(const TrackStyle& style, const TrackScene& scene) {
+std::optional<scene::ColorLegend> color_legend_for(const TrackStyle& style, const TrackScene& scene) {
   if (style.metric == track::ColorMetric::solid || !scene.range) return std::nullopt;
-  render::ColorLegend legend;
+  scene::ColorLegend legend;
   const std::string_view unit =
       style.metric == track::ColorMetric::time ? std::string_view("h:mm") : track::color_metric_unit(style.metric);
   legend.title = unit.empty() ? std::string(track::color_metric_label(style.metric))
@@ -24,43 +24,43 @@ std::optional<render::ColorLegend> color_legend_for(const TrackStyle& style, con
   return legend;
 }
 
-std::vector<render::TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackScene& scene) {
-  std::vector<render::TrackKeyEntry> key;
+std::vector<scene::TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackScene& scene) {
+  std::vector<scene::TrackKeyEntry> key;
   if (style.metric != track::ColorMetric::solid || scene.tracks.size() < 2) return key;
   for (const SceneTrack& t : scene.tracks) key.push_back({t.name, t.color_srgb});
   return key;
 }
 
-void draw_scene_legend(render::RgbaImage& image, const TrackStyle& style, const TrackScene& scene) {
+void draw_scene_legend(scene::RgbaImage& image, const TrackStyle& style, const TrackScene& scene) {
   if (!style.legend) return;
   const auto legend = color_legend_for(style, scene);
   const auto key = track_key_for(style, scene);
   if (!legend && key.empty()) return;
-  render::TextRasterizer text;
-  if (legend) render::draw_color_legend(image, text, *legend);
-  if (!key.empty()) render::draw_track_key(image, text, key);
+  scene::TextRasterizer text;
+  if (legend) scene::draw_color_legend(image, text, *legend);
+  if (!key.empty()) scene::draw_track_key(image, text, key);
 }
 
-render::PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const TrackStyle& style,
+scene::PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const TrackStyle& style,
                                      const TrackScene& scene) {
   if (!style.legend) return {};
   const auto legend = color_legend_for(style, scene);
   const auto key = track_key_for(style, scene);
   // As draw_scene_legend: a colour bar or a key, never both (one is for a metric, the other for
   // solid colours).
-  render::TextRasterizer text;
-  if (legend) return render::color_legend_panel(width, height, text, *legend);
-  if (!key.empty()) return render::track_key_panel(width, height, text, key);
+  scene::TextRasterizer text;
+  if (legend) return scene::color_legend_panel(width, height, text, *legend);
+  if (!key.empty()) return scene::track_key_panel(width, height, text, key);
   return {};
 }
 
-render::KeptClearCorner legend_clearance(const render::PixelRect& panel, std::uint32_t height) {
+scene::KeptClearCorner legend_clearance(const scene::PixelRect& panel, std::uint32_t height) {
   if (panel.empty()) return {};
   // The gaps the panel keeps from the left and bottom edges, kept again between it and the
   // tracks: a track drawn right up to the panel's edge would look tucked under it.
   const int left_gap = std::max(panel.x, 0);
   const int bottom_gap = std::max(static_cast<int>(height) - panel.bottom(), 0);
-  return {render::ImageCorner::bottom_left, static_cast<double>(panel.right() + left_gap),
+  return {scene::ImageCorner::bottom_left, static_cast<double>(panel.right() + left_gap),
           static_cast<double>(static_cast<int>(height) - panel.y + bottom_gap)};
 }
 

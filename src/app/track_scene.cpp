@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "geo/web_mercator.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "terrain/height_sampler.hpp"
 #include "track/clean.hpp"
 #include "track/metrics.hpp"
@@ -95,14 +95,14 @@ TrackScene build_track_scene(const std::vector<LoadedTrackFile>& files, const Tr
       for (std::size_t s = 0; s < cleaned.segments.size(); ++s) {
         const auto& points = cleaned.segments[s].points;
         if (points.empty()) continue;
-        render::TrackPolyline line;
+        scene::TrackPolyline line;
         line.points_ecef.reserve(points.size());
         for (std::size_t i = 0; i < points.size(); ++i) {
           const track::TrackPoint& p = points[i];
           double under = ground.empty() ? kNaN : ground[s][i];
           if (std::isnan(under)) under = inputs.neutral_ground_m;
           const double height = p.has_ele() ? p.ele : under;
-          line.points_ecef.push_back(render::to_dvec3(render::ecef_from({p.lat, p.lon, height})));
+          line.points_ecef.push_back(scene::to_dvec3(scene::ecef_from({p.lat, p.lon, height})));
           if (style.settings.curtain) line.heights_above_ground_m.push_back(static_cast<float>(height - under));
         }
         if (by_value) {
@@ -129,7 +129,7 @@ TrackScene build_track_scene(const std::vector<LoadedTrackFile>& files, const Tr
     throw std::runtime_error(fmt::format("--color was given {} times for {} tracks: give it once, or once per track",
                                          style.colors.size(), scene.tracks.size()));
   for (std::size_t i = 0; i < scene.tracks.size(); ++i)
-    scene.tracks[i].color_srgb = style.colors.empty()      ? render::palette_color(i)
+    scene.tracks[i].color_srgb = style.colors.empty()      ? scene::palette_color(i)
                                  : style.colors.size() == 1 ? style.colors.front()
                                                             : style.colors[i];
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "app/track_style_options.hpp"
-#include "render/track_buffer.hpp"
+#include "render/passes/track_buffer.hpp"
 #include "terrain/tile_source.hpp"
 #include "track/model.hpp"
 #include "track/summary.hpp"
@@ -26,7 +26,7 @@ struct LoadedTrackFile {
 
 struct SceneTrack {
   std::string name;  // the track's (or route's) name, else the file's name and its number
-  render::TrackGeometry geometry;
+  scene::TrackGeometry geometry;
   glm::vec3 color_srgb{1.0f, 0.0f, 0.0f};
   std::size_t points_with_value = 0;
 

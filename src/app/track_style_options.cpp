@@ -71,9 +71,9 @@ TrackStyle parse_track_style(const TrackStyleArgs& args) {
                                                          fmt::join(track::color_metric_names(), ", ")));
   style.metric = *metric;
   style.settings.colormap =
-      track::color_metric_is_signed(*metric) ? render::Colormap::diverging : render::Colormap::turbo;
+      track::color_metric_is_signed(*metric) ? scene::Colormap::diverging : scene::Colormap::turbo;
   if (!args.colormap.empty()) {
-    const auto map = render::parse_colormap(args.colormap);
+    const auto map = scene::parse_colormap(args.colormap);
     if (!map)
       throw CLI::ValidationError(
           "--colormap", fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging", args.colormap));
@@ -86,7 +86,7 @@ TrackStyle parse_track_style(const TrackStyleArgs& args) {
                                  fmt::format("'{}' is not MIN:MAX with finite numbers and MIN < MAX, e.g. 0:30", args.range));
   }
   for (const std::string& text : args.colors) {
-    const auto color = render::parse_hex_color(text);
+    const auto color = scene::parse_hex_color(text);
     if (!color) throw CLI::ValidationError("--color", fmt::format("'{}' is not a colour like '#e6194b' or '#f80'", text));
     style.colors.push_back(*color);
   }

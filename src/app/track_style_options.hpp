@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "render/colormap.hpp"
-#include "render/track_pass.hpp"
+#include "scene/colormap.hpp"
+#include "render/passes/track_pass.hpp"
 #include "track/color_values.hpp"
 
 namespace trailray::app {

@@ -36,7 +36,7 @@ int run_view(const ViewArgs& a) {
   if (!size) throw CLI::ValidationError("--size", fmt::format("'{}' is not WxH, e.g. 1280x720", a.size));
   view::ViewerOptions o;
   o.lens = {a.camera.fov_deg, size->width, size->height};
-  if (auto problem = render::lens_problem(o.lens)) throw CLI::ValidationError("--fov/--size", *problem);
+  if (auto problem = scene::lens_problem(o.lens)) throw CLI::ValidationError("--fov/--size", *problem);
   o.camera = parse_camera_request(a.camera, !a.tracks.empty());
   if (a.frames < 0 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 0..{}", a.frames, kMaxFrames));

@@ -11,8 +11,8 @@
 #include <unordered_map>
 #include <utility>
 
-#include "render/gl_capabilities.hpp"
-#include "render/shadow_cascades.hpp"
+#include "render/gl/gl_capabilities.hpp"
+#include "render/passes/shadow_cascades.hpp"
 #include "terrain/lod_selection.hpp"
 
 namespace trailray::render {
@@ -107,7 +107,7 @@ SceneRenderer::SceneRenderer(SceneSources sources, terrain::TileLoaderOptions lo
 
 SceneRenderer::~SceneRenderer() = default;
 
-std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Camera& camera,
+std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const scene::Camera& camera,
                                                                        const SceneRenderOptions& options,
                                                                        SceneRenderReport& report) {
   const Clock::time_point deadline = Clock::now() + options.timeout;
@@ -135,7 +135,7 @@ std::vector<SceneRenderer::DrawnTile> SceneRenderer::load_height_tiles(const Cam
     return std::nullopt;
   };
 
-  const terrain::LodCamera lod_camera = to_lod_camera(camera);
+  const terrain::LodCamera lod_camera = scene::to_lod_camera(camera);
   terrain::LodSelection selection;
   std::vector<terrain::TileId> previous;
   const auto update_lowest = [&] {
@@ -276,7 +276,7 @@ double SceneRenderer::height_in_memory(double lat_deg, double lon_deg) const {
   return kNaN;
 }
 
-RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptions& options) {
+RenderedScene SceneRenderer::render(const scene::Camera& camera, const SceneRenderOptions& options) {
   RenderedScene scene;
   meshes_.begin_frame();
   imagery_textures_.begin_frame();
@@ -303,7 +303,7 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
     if (tiles[i].has_data) ++scene.report.tiles_with_data;
   }
 
-  const Lens& lens = camera.lens();
+  const scene::Lens& lens = camera.lens();
   const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
   ComposeSettings compose;
   compose.atmosphere = options.atmosphere;
@@ -352,7 +352,7 @@ RenderedScene SceneRenderer::render(const Camera& camera, const SceneRenderOptio
         for (const TerrainDrawItem& item : items) {
           if (item.mesh == nullptr || item.mesh->index_count == 0) continue;
           // The near cascades cover a few km: most tiles of the view fall outside them.
-          if (!light.may_hold(to_dvec3(item.mesh->origin), item.mesh->bounding_radius_m)) continue;
+          if (!light.may_hold(scene::to_dvec3(item.mesh->origin), item.mesh->bounding_radius_m)) continue;
           const std::array<float, 16> matrix = light.view_projection_relative_to(item.mesh->origin);
           casters.set_mat4("u_light_view_projection", std::span<const float, 16>(matrix));
           glBindVertexArray(item.mesh->vertex_array.id());

@@ -19,17 +19,17 @@
 #include <string>
 #include <vector>
 
-#include "render/camera.hpp"
-#include "render/compose_pass.hpp"
-#include "render/frame_profiler.hpp"
-#include "render/framebuffer_readback.hpp"
-#include "render/gbuffer.hpp"
-#include "render/gpu_resource_cache.hpp"
-#include "render/shadow_maps.hpp"
-#include "render/ssao_pass.hpp"
-#include "render/terrain_mesh.hpp"
-#include "render/terrain_pass.hpp"
-#include "render/track_pass.hpp"
+#include "scene/camera.hpp"
+#include "render/passes/compose_pass.hpp"
+#include "render/gl/frame_profiler.hpp"
+#include "render/gl/framebuffer_readback.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/gl/gpu_resource_cache.hpp"
+#include "render/passes/shadow_maps.hpp"
+#include "render/passes/ssao_pass.hpp"
+#include "render/passes/terrain_mesh.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "terrain/tile_loader.hpp"
 #include "terrain/tile_source.hpp"
 
@@ -106,7 +106,7 @@ struct SceneRenderReport {
 };
 
 struct RenderedScene {
-  RgbaImage image;  // top-down, sRGB
+  scene::RgbaImage image;  // top-down, sRGB
   SceneRenderReport report;
 };
 
@@ -121,7 +121,7 @@ class SceneRenderer {
 
   // Renders the camera's view at its lens's image size. Throws RenderError from GL, and
   // std::invalid_argument for an unusable camera or a shadow map size outside 16..16384.
-  RenderedScene render(const Camera& camera, const SceneRenderOptions& options);
+  RenderedScene render(const scene::Camera& camera, const SceneRenderOptions& options);
 
   // The terrain height at a place from the finest height tile already in memory, bilinear
   // (NaN: no loaded tile there, or a hole). Never loads: for the viewer's camera, which must not
@@ -135,7 +135,7 @@ class SceneRenderer {
 
  private:
   struct DrawnTile;
-  std::vector<DrawnTile> load_height_tiles(const Camera& camera, const SceneRenderOptions& options,
+  std::vector<DrawnTile> load_height_tiles(const scene::Camera& camera, const SceneRenderOptions& options,
                                            SceneRenderReport& report);
   std::vector<TerrainImagery> load_imagery(const std::vector<DrawnTile>& tiles, const SceneRenderOptions& options,
                                            std::chrono::steady_clock::time_point deadline, SceneRenderReport& report);

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "render/camera.hpp"
-#include "render/framing.hpp"
+#include "scene/camera.hpp"
+#include "scene/framing.hpp"
 #include "run_command.hpp"
 #include "terrain/image_codec.hpp"
 #include "terrain/tile_fixtures.hpp"
@@ -150,20 +150,20 @@ inline Picture read_picture(const std::string& path) {
 // The framing `trailray render` gives these points when no camera is given and no legend is
 // drawn (same lens, the framing's defaults, the points' lowest height as the ground); with
 // `keep_clear`, the framing around a legend there.
-inline render::Framing framing(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height,
-                               const render::KeptClearCorner& keep_clear = {}) {
-  std::vector<render::GeoPosition> positions;
+inline scene::Framing framing(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height,
+                               const scene::KeptClearCorner& keep_clear = {}) {
+  std::vector<scene::GeoPosition> positions;
   for (const GpxPoint& p : points) positions.push_back({p.lat, p.lon, p.ele});
-  render::FramingOptions options;
-  options.lens = {render::kDefaultVerticalFovDeg, width, height};
+  scene::FramingOptions options;
+  options.lens = {scene::kDefaultVerticalFovDeg, width, height};
   options.keep_clear = keep_clear;
-  auto framed = render::frame_points(positions, options);
+  auto framed = scene::frame_points(positions, options);
   if (!framed.ok()) throw std::runtime_error("cannot frame: " + framed.error);
   return *framed.value;
 }
 
 // Its camera.
-inline render::Camera framing_camera(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height) {
+inline scene::Camera framing_camera(const std::vector<GpxPoint>& points, std::uint32_t width, std::uint32_t height) {
   return framing(points, width, height).camera;
 }
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "track_cli_support.hpp"
 
 namespace trailray::test {
@@ -55,13 +55,13 @@ TEST(TrackGroundCli, ATrackWithoutElevationsOnTheNeutralGroundIsAnOpaqueTube) {
 
   // The camera the command builds, and the tube's axis: the points' line on the ellipsoid (the
   // neutral ground is at 0 m, the points' lowest height, with no heights at all).
-  const auto camera = render::camera_looking_at({{kLat, kLon, 0.0}, kDistanceM, 0.0, kPitchDeg},
-                                                {render::kDefaultVerticalFovDeg, kWidth, kHeight}, 0.0);
+  const auto camera = scene::camera_looking_at({{kLat, kLon, 0.0}, kDistanceM, 0.0, kPitchDeg},
+                                                {scene::kDefaultVerticalFovDeg, kWidth, kHeight}, 0.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  const glm::dvec3 centre = render::to_dvec3(render::ecef_from({kLat, kLon, 0.0}));
-  const render::EnuAxes enu = render::enu_axes_at(kLat, kLon);
+  const glm::dvec3 centre = scene::to_dvec3(scene::ecef_from({kLat, kLon, 0.0}));
+  const scene::EnuAxes enu = scene::enu_axes_at(kLat, kLon);
   const double radius = 0.5 * kTubeM;
-  const double pixel_angle = 2.0 * std::tan(0.5 * render::kDefaultVerticalFovDeg * M_PI / 180.0) / kHeight;
+  const double pixel_angle = 2.0 * std::tan(0.5 * scene::kDefaultVerticalFovDeg * M_PI / 180.0) / kHeight;
 
   // Every fifth column: the ground's green and blue far below the tube, then each pixel whose
   // central ray passes more than 0.6 px inside the tube's silhouette keeps under a tenth of them
@@ -72,8 +72,8 @@ TEST(TrackGroundCli, ATrackWithoutElevationsOnTheNeutralGroundIsAnOpaqueTube) {
     const double ground_gb = ground.g + ground.b;
     ASSERT_GT(ground_gb, 100.0) << "column " << x << " does not end on the grey ground";
     for (std::uint32_t y = 0; y < kHeight; ++y) {
-      const render::Ray ray = camera.value->ray_through_pixel(x + 0.5, y + 0.5);
-      const glm::dvec3 eye = render::to_dvec3(ray.origin), d = ray.direction;
+      const scene::Ray ray = camera.value->ray_through_pixel(x + 0.5, y + 0.5);
+      const glm::dvec3 eye = scene::to_dvec3(ray.origin), d = ray.direction;
       const glm::dvec3 w = eye - centre;
       const glm::dvec3 d_across = d - enu.east * glm::dot(d, enu.east), w_across = w - enu.east * glm::dot(w, enu.east);
       const double across2 = glm::dot(d_across, d_across);

@@ -14,8 +14,8 @@
 #include "app/track_legend.hpp"
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
-#include "render/framebuffer_readback.hpp"
-#include "render/legend.hpp"
+#include "render/gl/framebuffer_readback.hpp"
+#include "scene/legend.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
@@ -77,7 +77,7 @@ TrackScene scene_of(const std::vector<LoadedTrackFile>& files, const TrackStyle&
   return build_track_scene(files, style, {}, [](const std::string&) {});
 }
 
-render::RgbaImage grey_image(std::uint32_t width, std::uint32_t height) {
+scene::RgbaImage grey_image(std::uint32_t width, std::uint32_t height) {
   return {width, height, std::vector<std::uint8_t>(std::size_t{width} * height * 4, 128)};
 }
 
@@ -88,7 +88,7 @@ TEST(TrackLegend, SpeedDoublingHalfwayGivesTheRangeOfItsTwoSpeeds) {
   const auto legend = color_legend_for(style, scene);
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->title, "Speed (km/h)");
-  EXPECT_EQ(legend->map, render::Colormap::turbo);
+  EXPECT_EQ(legend->map, scene::Colormap::turbo);
   EXPECT_TRUE(legend->ticks.empty()) << "speed is not signed: no 0 tick";
 
   // The expected ends straight from the track pipeline: cleaned as the scene cleans, the metric
@@ -117,7 +117,7 @@ TEST(TrackLegend, RangeFromTheOptionIsWhatTheLegendShows) {
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->min_label, "5.0");
   EXPECT_EQ(legend->max_label, "35.0");
-  EXPECT_EQ(legend->map, render::Colormap::viridis);
+  EXPECT_EQ(legend->map, scene::Colormap::viridis);
 }
 
 TEST(TrackLegend, VerticalSpeedIsDivergingWithAZeroTick) {
@@ -131,7 +131,7 @@ TEST(TrackLegend, VerticalSpeedIsDivergingWithAZeroTick) {
   const auto legend = color_legend_for(style, scene_of(files_with({t}), style));
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->title, "Vertical speed (m/s)");
-  EXPECT_EQ(legend->map, render::Colormap::diverging);
+  EXPECT_EQ(legend->map, scene::Colormap::diverging);
   ASSERT_EQ(legend->ticks.size(), 1u);
   EXPECT_EQ(legend->ticks[0].label, "0");
   EXPECT_NEAR(legend->ticks[0].position, 0.5, 1e-9) << "the range is symmetric about 0";
@@ -163,7 +163,7 @@ TEST(TrackLegend, KeyListsSeveralSolidTracksByNameAndColour) {
   EXPECT_EQ(key[0].name, "Alpha");
   EXPECT_EQ(key[1].name, "tracks.gpx #2");
   EXPECT_EQ(key[2].name, "Gamma");
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(key[i].color_srgb, render::palette_color(i)) << i;
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(key[i].color_srgb, scene::palette_color(i)) << i;
 }
 
 TEST(TrackLegend, OneTrackOrColourByValueGetsNoKey) {
@@ -182,8 +182,8 @@ TEST(TrackLegend, DrawnInTheBottomLeftOnlyWhenOn) {
     const auto& used = std::string(metric) == "solid" ? several : files;
     const TrackStyle on = style_of(metric), off = style_of(metric, {}, "off");
     const TrackScene scene = scene_of(used, on);
-    const render::RgbaImage blank = grey_image(640, 360);
-    render::RgbaImage with = blank, without = blank;
+    const scene::RgbaImage blank = grey_image(640, 360);
+    scene::RgbaImage with = blank, without = blank;
     draw_scene_legend(with, on, scene);
     draw_scene_legend(without, off, scene);
     EXPECT_EQ(without.rgba, blank.rgba) << metric << ": --legend off drew something";
@@ -208,11 +208,11 @@ TEST(TrackLegend, ClearanceIsTheDrawnPanelWithItsGap) {
     SCOPED_TRACE(metric);
     const TrackStyle on = style_of(metric), off = style_of(metric, {}, "off");
     const TrackScene scene = scene_of(std::string(metric) == "solid" ? several : files, on);
-    render::RgbaImage image = grey_image(640, 360);
-    const render::RgbaImage blank = image;
+    scene::RgbaImage image = grey_image(640, 360);
+    const scene::RgbaImage blank = image;
     draw_scene_legend(image, on, scene);
     // The smallest rectangle around the changed pixels lies inside the measured panel.
-    const render::PixelRect panel = scene_legend_panel(640, 360, on, scene);
+    const scene::PixelRect panel = scene_legend_panel(640, 360, on, scene);
     ASSERT_FALSE(panel.empty());
     int min_x = 640, max_x = -1, min_y = 360, max_y = -1;
     for (std::uint32_t y = 0; y < 360; ++y)
@@ -221,12 +221,12 @@ TEST(TrackLegend, ClearanceIsTheDrawnPanelWithItsGap) {
           min_x = std::min(min_x, int(x)), max_x = std::max(max_x, int(x));
           min_y = std::min(min_y, int(y)), max_y = std::max(max_y, int(y));
         }
-    EXPECT_TRUE(panel.contains(render::PixelRect{min_x, min_y, max_x - min_x + 1, max_y - min_y + 1}));
+    EXPECT_TRUE(panel.contains(scene::PixelRect{min_x, min_y, max_x - min_x + 1, max_y - min_y + 1}));
     EXPECT_LE(panel.width - (max_x - min_x + 1), 2);
     EXPECT_LE(panel.height - (max_y - min_y + 1), 2);
 
-    const render::KeptClearCorner clear = legend_clearance(panel, 360);
-    EXPECT_EQ(clear.corner, render::ImageCorner::bottom_left);
+    const scene::KeptClearCorner clear = legend_clearance(panel, 360);
+    EXPECT_EQ(clear.corner, scene::ImageCorner::bottom_left);
     EXPECT_DOUBLE_EQ(clear.width_px, panel.right() + panel.x);
     EXPECT_DOUBLE_EQ(clear.height_px, 360 - panel.y + (360 - panel.bottom()));
     EXPECT_TRUE(scene_legend_panel(640, 360, off, scene).empty());
@@ -239,8 +239,8 @@ TEST(TrackLegend, ClearanceIsTheDrawnPanelWithItsGap) {
 TEST(TrackLegend, OneSolidTrackDrawsNoLegend) {
   const TrackStyle solid = style_of("solid");
   const TrackScene scene = scene_of(files_with({east_track("Alone", 0.0)}), solid);
-  const render::RgbaImage blank = grey_image(320, 180);
-  render::RgbaImage image = blank;
+  const scene::RgbaImage blank = grey_image(320, 180);
+  scene::RgbaImage image = blank;
   draw_scene_legend(image, solid, scene);
   EXPECT_EQ(image.rgba, blank.rgba);
 }

@@ -18,10 +18,10 @@
 #include "app/track_legend.hpp"
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
-#include "render/camera.hpp"
-#include "render/colormap.hpp"
-#include "render/legend.hpp"
-#include "render/text_raster.hpp"
+#include "scene/camera.hpp"
+#include "scene/colormap.hpp"
+#include "scene/legend.hpp"
+#include "scene/text_raster.hpp"
 #include "track/io/load.hpp"
 #include "track_cli_support.hpp"
 
@@ -61,8 +61,8 @@ bool any_near(const Picture& picture, double x, double y, int radius, bool (*wha
   return false;
 }
 
-std::optional<terrain::ScreenPoint> project(const render::Camera& camera, const GpxPoint& p) {
-  return camera.project(render::ecef_from({p.lat, p.lon, p.ele}));
+std::optional<terrain::ScreenPoint> project(const scene::Camera& camera, const GpxPoint& p) {
+  return camera.project(scene::ecef_from({p.lat, p.lon, p.ele}));
 }
 
 // Runs `trailray render` and reads the picture back (a failed run fails the test).
@@ -165,7 +165,7 @@ TEST(TrackRenderCli, ARedTrackIsDrawnWhereItsPointsProject) {
   ASSERT_EQ(drawn.width, kWidth);
   ASSERT_EQ(drawn.height, kHeight);
   keep(env, "red.png");
-  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  const scene::Camera camera = framing_camera(points, kWidth, kHeight);
   std::size_t projected = 0;
   for (std::size_t i = 2; i + 2 < points.size(); ++i) {  // the ends are pulled in by smoothing
     const auto at = project(camera, points[i]);
@@ -223,7 +223,7 @@ glm::dvec3 chromaticity(const Rgb& p) { return chromaticity(p.r, p.g, p.b); }
 glm::dvec3 chromaticity(const glm::vec3& c) { return chromaticity(c.r, c.g, c.b); }
 
 // The average chromaticity of the most colourful pixels near points [first, last) of a track.
-glm::dvec3 track_chromaticity(const Picture& picture, const render::Camera& camera, const std::vector<GpxPoint>& points,
+glm::dvec3 track_chromaticity(const Picture& picture, const scene::Camera& camera, const std::vector<GpxPoint>& points,
                               std::size_t first, std::size_t last) {
   glm::dvec3 sum(0.0);
   int n = 0;
@@ -247,12 +247,12 @@ TEST(TrackRenderCli, SpeedThatDoublesShowsBothEndsOfTheColormap) {
       render_to(env, shell_quote(gpx) + kPicture + " --color-by speed --width 8px --legend off", "speed.png");
   ASSERT_EQ(picture.width, kWidth);
   keep(env, "speed.png");
-  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  const scene::Camera camera = framing_camera(points, kWidth, kHeight);
   // Away from the change (the speed window and smoothing blur it over a few points).
   const glm::dvec3 slow = track_chromaticity(picture, camera, points, 5, 33);
   const glm::dvec3 fast = track_chromaticity(picture, camera, points, 47, 77);
-  const glm::dvec3 low = chromaticity(render::colormap_color(render::Colormap::turbo, 0.0f));
-  const glm::dvec3 high = chromaticity(render::colormap_color(render::Colormap::turbo, 1.0f));
+  const glm::dvec3 low = chromaticity(scene::colormap_color(scene::Colormap::turbo, 0.0f));
+  const glm::dvec3 high = chromaticity(scene::colormap_color(scene::Colormap::turbo, 1.0f));
   EXPECT_LT(glm::distance(slow, low), glm::distance(slow, high))
       << "slow part " << slow.r << "," << slow.g << "," << slow.b << " is not turbo's low end";
   EXPECT_LT(glm::distance(fast, high), glm::distance(fast, low))
@@ -266,7 +266,7 @@ TEST(TrackRenderCli, SpeedThatDoublesShowsBothEndsOfTheColormap) {
 
 // Where the legend of these tracks goes in a kWidth x kHeight picture, found by drawing the same
 // legend on a blank image.
-render::LegendLayout legend_layout(const std::string& gpx, const std::vector<std::string>& style_args) {
+scene::LegendLayout legend_layout(const std::string& gpx, const std::vector<std::string>& style_args) {
   app::TrackStyleArgs args;
   for (std::size_t i = 0; i + 1 < style_args.size(); i += 2)
     if (style_args[i] == "--color-by") args.color_by = style_args[i + 1];
@@ -274,26 +274,26 @@ render::LegendLayout legend_layout(const std::string& gpx, const std::vector<std
   const track::ReadResult read = track::load_track_file(gpx);
   EXPECT_TRUE(read.ok());
   const app::TrackScene scene = app::build_track_scene({{gpx, read.file}}, style, {}, [](const std::string&) {});
-  render::RgbaImage blank{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t{kWidth} * kHeight * 4, 128)};
-  render::TextRasterizer text;
-  render::LegendLayout layout;
+  scene::RgbaImage blank{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t{kWidth} * kHeight * 4, 128)};
+  scene::TextRasterizer text;
+  scene::LegendLayout layout;
   if (const auto legend = app::color_legend_for(style, scene))
-    layout = render::draw_color_legend(blank, text, *legend);
+    layout = scene::draw_color_legend(blank, text, *legend);
   else
-    layout = render::draw_track_key(blank, text, app::track_key_for(style, scene));
+    layout = scene::draw_track_key(blank, text, app::track_key_for(style, scene));
   EXPECT_TRUE(layout.drawn) << "the legend fits a " << kWidth << "x" << kHeight << " picture";
   return layout;
 }
 
 // The panel it takes.
-render::PixelRect legend_panel(const std::string& gpx, const std::vector<std::string>& style_args) {
+scene::PixelRect legend_panel(const std::string& gpx, const std::vector<std::string>& style_args) {
   return legend_layout(gpx, style_args).panel;
 }
 
 // The options of an explicit camera where the framing without a legend puts it. The legend never
 // moves an explicit camera, so pictures with and without it differ in its panel only.
 std::string camera_options(const std::vector<GpxPoint>& points) {
-  const render::LookAt l = framing(points, kWidth, kHeight).look_at;
+  const scene::LookAt l = framing(points, kWidth, kHeight).look_at;
   char text[256];
   std::snprintf(text, sizeof text, " --look-at %.9f,%.9f,%.3f --distance %.3f --heading %.6f --pitch %.6f",
                 l.target.lat_deg, l.target.lon_deg, l.target.height_m, l.distance_m, l.heading_deg, l.pitch_deg);
@@ -304,7 +304,7 @@ std::string camera_options(const std::vector<GpxPoint>& points) {
 struct Difference {
   std::size_t inside = 0, outside = 0, darker_inside = 0;
 };
-Difference compare(const Picture& on, const Picture& off, const render::PixelRect& panel) {
+Difference compare(const Picture& on, const Picture& off, const scene::PixelRect& panel) {
   Difference d;
   for (std::uint32_t y = 0; y < on.height; ++y)
     for (std::uint32_t x = 0; x < on.width; ++x) {
@@ -330,7 +330,7 @@ TEST(TrackRenderCli, LegendTakesTheBottomLeftPanelOnly) {
   ASSERT_EQ(on.width, kWidth);
   ASSERT_EQ(off.width, kWidth);
   keep(env, "legend_on.png");
-  const render::PixelRect panel = legend_panel(gpx, {"--color-by", "speed"});
+  const scene::PixelRect panel = legend_panel(gpx, {"--color-by", "speed"});
   EXPECT_LT(panel.x, int(kWidth / 4));
   EXPECT_GT(panel.bottom(), int(kHeight * 3 / 4));
   const Difference d = compare(on, off, panel);
@@ -359,8 +359,8 @@ TEST(TrackRenderCli, SeveralSolidTracksGetPaletteColoursAndAKey) {
   keep(env, "three_on.png");
 
   // Each track, away from the legend, in its palette colour rather than another's.
-  const render::Camera camera = framing_camera(all, kWidth, kHeight);
-  const render::PixelRect panel = legend_panel(gpx, {});
+  const scene::Camera camera = framing_camera(all, kWidth, kHeight);
+  const scene::PixelRect panel = legend_panel(gpx, {});
   for (std::size_t t = 0; t < 3; ++t) {
     std::vector<GpxPoint> right_half(lines[t].begin() + 35, lines[t].end() - 3);
     const auto at = project(camera, right_half.front());
@@ -369,8 +369,8 @@ TEST(TrackRenderCli, SeveralSolidTracksGetPaletteColoursAndAKey) {
     const glm::dvec3 seen = track_chromaticity(off, camera, right_half, 0, right_half.size());
     for (std::size_t other = 0; other < 3; ++other) {
       if (other == t) continue;
-      EXPECT_LT(glm::distance(seen, chromaticity(render::palette_color(t))),
-                glm::distance(seen, chromaticity(render::palette_color(other))))
+      EXPECT_LT(glm::distance(seen, chromaticity(scene::palette_color(t))),
+                glm::distance(seen, chromaticity(scene::palette_color(other))))
           << "track " << t << " looks like palette colour " << other;
     }
   }
@@ -396,13 +396,13 @@ TEST(TrackRenderCli, FramingKeepsTheTracksOutOfTheLegend) {
   ASSERT_EQ(off.width, kWidth);
   keep(env, "clear_on.png");
   keep(env, "clear_off.png");
-  const render::LegendLayout key = legend_layout(gpx, {});
+  const scene::LegendLayout key = legend_layout(gpx, {});
   ASSERT_EQ(key.swatches.size(), 2u);
 
   // Without the legend in mind, the south track would lie under the key: this test can fail.
   std::vector<GpxPoint> all = north;
   all.insert(all.end(), south.begin(), south.end());
-  const render::Camera centred = framing_camera(all, kWidth, kHeight);
+  const scene::Camera centred = framing_camera(all, kWidth, kHeight);
   std::size_t under = 0;
   for (const GpxPoint& p : south) {
     const auto at = project(centred, p);
@@ -412,8 +412,8 @@ TEST(TrackRenderCli, FramingKeepsTheTracksOutOfTheLegend) {
 
   // Nothing of the tracks in the key's panel: no red seen through it, the red swatches aside.
   const auto in_swatch = [&](std::uint32_t x, std::uint32_t y) {
-    return std::any_of(key.swatches.begin(), key.swatches.end(), [&](const render::PixelRect& r) {
-      return render::PixelRect{r.x - 1, r.y - 1, r.width + 2, r.height + 2}.contains(int(x), int(y));
+    return std::any_of(key.swatches.begin(), key.swatches.end(), [&](const scene::PixelRect& r) {
+      return scene::PixelRect{r.x - 1, r.y - 1, r.width + 2, r.height + 2}.contains(int(x), int(y));
     });
   };
   std::size_t red_in_panel = 0, red_outside = 0, red_on_edge = 0;
@@ -498,7 +498,7 @@ TEST(TrackRenderCli, CurtainChangesThePixelsBelowAFlight) {
     for (const auto& s : t.segments)
       for (const auto& p : s.points) points.push_back({p.lat, p.lon, p.ele, p.time});
   ASSERT_GT(points.size(), 10u);
-  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  const scene::Camera camera = framing_camera(points, kWidth, kHeight);
   std::vector<double> top(kWidth, 1e9);
   std::optional<terrain::ScreenPoint> previous;
   for (const GpxPoint& p : points) {
@@ -580,7 +580,7 @@ TEST(TrackRenderCli, AGapBetweenSegmentsIsNotBridged) {
   keep(env, "gap.png");
   std::vector<GpxPoint> all = first;
   all.insert(all.end(), second.begin(), second.end());
-  const render::Camera camera = framing_camera(all, kWidth, kHeight);
+  const scene::Camera camera = framing_camera(all, kWidth, kHeight);
   // The facing ends are drawn ...
   for (const GpxPoint& end : {first[37], second[3]}) {
     const auto at = project(camera, end);

@@ -12,8 +12,8 @@
 
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
-#include "render/camera.hpp"
-#include "render/colormap.hpp"
+#include "scene/camera.hpp"
+#include "scene/colormap.hpp"
 #include "terrain/synthetic_height_source.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
@@ -79,7 +79,7 @@ TEST(TrackScene, PointsWithoutSmoothingAreTheRecordedOnesInEcef) {
   ASSERT_EQ(points.size(), recorded.points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = recorded.points[i];
-    const glm::dvec3 expected = render::to_dvec3(render::ecef_from({p.lat, p.lon, p.ele}));
+    const glm::dvec3 expected = scene::to_dvec3(scene::ecef_from({p.lat, p.lon, p.ele}));
     EXPECT_LT(glm::length(points[i] - expected), 1e-6) << "point " << i;
   }
 }
@@ -93,7 +93,7 @@ TEST(TrackScene, PointsWithoutElevationLieOnTheNeutralGroundAndCurtainsReachIt) 
   const auto& segments = scene.tracks.at(0).geometry.segments;
   ASSERT_EQ(segments.size(), 2u);
   for (std::size_t i = 0; i < flat.points.size(); ++i) {
-    const glm::dvec3 ground = render::to_dvec3(render::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0}));
+    const glm::dvec3 ground = scene::to_dvec3(scene::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0}));
     EXPECT_LT(glm::length(segments[0].points_ecef[i] - ground), 1e-6) << "point " << i << " is on the ground";
   }
   ASSERT_EQ(segments[0].heights_above_ground_m.size(), flat.points.size());
@@ -220,7 +220,7 @@ TEST(TrackScene, ColoursFromThePaletteOnceOrPerTrack) {
                 track_of("C", {line(5, 30.0, 10.0, 1000.0, 1000.0)})})};
   const TrackScene palette = build(files, style_of());
   ASSERT_EQ(palette.tracks.size(), 3u);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(palette.tracks[i].color_srgb, render::palette_color(i)) << i;
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(palette.tracks[i].color_srgb, scene::palette_color(i)) << i;
   EXPECT_NE(palette.tracks[0].color_srgb, palette.tracks[1].color_srgb);
 
   TrackStyleArgs once;

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "app/view/panel_layout.hpp"
-#include "render/legend.hpp"
-#include "render/text_raster.hpp"
+#include "scene/legend.hpp"
+#include "scene/text_raster.hpp"
 #include "track_cli_support.hpp"
 
 namespace trailray::test {
@@ -95,10 +95,10 @@ TEST(ViewCli, TheWindowShowsTheTrackWhereItsPointsProject) {
   ASSERT_EQ(picture.height, kHeight);
   // The viewer starts framed like `render`: the same camera.
   const auto points = bent_hike();
-  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  const scene::Camera camera = framing_camera(points, kWidth, kHeight);
   std::size_t projected = 0;
   for (std::size_t i = 3; i + 3 < points.size(); i += 4) {
-    const auto at = camera.project(render::ecef_from({points[i].lat, points[i].lon, points[i].ele}));
+    const auto at = camera.project(scene::ecef_from({points[i].lat, points[i].lon, points[i].ele}));
     ASSERT_TRUE(at.has_value());
     if (!picture.inside(at->x_px, at->y_px)) continue;
     ++projected;
@@ -122,18 +122,18 @@ TEST(ViewCli, TheFirstViewKeepsTheTracksOutOfTheLegend) {
   ASSERT_EQ(r.status, 0) << r.out;
   const Picture picture = read_picture(out);
   ASSERT_EQ(picture.width, kWidth);
-  render::RgbaImage blank{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t{kWidth} * kHeight * 4, 128)};
-  render::TextRasterizer text;
-  const render::LegendLayout key =
-      render::draw_track_key(blank, text, {{"North", {1.0f, 0.0f, 0.0f}}, {"South", {1.0f, 0.0f, 0.0f}}});
+  scene::RgbaImage blank{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t{kWidth} * kHeight * 4, 128)};
+  scene::TextRasterizer text;
+  const scene::LegendLayout key =
+      scene::draw_track_key(blank, text, {{"North", {1.0f, 0.0f, 0.0f}}, {"South", {1.0f, 0.0f, 0.0f}}});
   ASSERT_TRUE(key.drawn);
 
   std::vector<GpxPoint> all = north;
   all.insert(all.end(), south.begin(), south.end());
-  const render::Camera centred = framing_camera(all, kWidth, kHeight);
+  const scene::Camera centred = framing_camera(all, kWidth, kHeight);
   std::size_t under = 0;
   for (const GpxPoint& p : south) {
-    const auto at = centred.project(render::ecef_from({p.lat, p.lon, p.ele}));
+    const auto at = centred.project(scene::ecef_from({p.lat, p.lon, p.ele}));
     if (at && key.panel.contains(int(at->x_px), int(at->y_px))) ++under;
   }
   ASSERT_GT(under, 3u) << "the tracks do not reach the key's corner: the test proves nothing";
@@ -142,8 +142,8 @@ TEST(ViewCli, TheFirstViewKeepsTheTracksOutOfTheLegend) {
   for (std::uint32_t y = 0; y < picture.height; ++y)
     for (std::uint32_t x = 0; x < picture.width; ++x) {
       const Rgb p = picture.at(x, y);
-      const bool in_swatch = std::any_of(key.swatches.begin(), key.swatches.end(), [&](const render::PixelRect& s) {
-        return render::PixelRect{s.x - 1, s.y - 1, s.width + 2, s.height + 2}.contains(int(x), int(y));
+      const bool in_swatch = std::any_of(key.swatches.begin(), key.swatches.end(), [&](const scene::PixelRect& s) {
+        return scene::PixelRect{s.x - 1, s.y - 1, s.width + 2, s.height + 2}.contains(int(x), int(y));
       });
       // Red seen through the dark panel: dimmed, still far redder than green or blue.
       if (key.panel.contains(int(x), int(y)) && !in_swatch && p.r > p.g + 30 && p.r > p.b + 30) ++red_in_panel;
@@ -210,9 +210,9 @@ TEST(ViewCli, AScriptedDragChangesTheView) {
 TEST(ViewCli, HoveringAKnownTrackPointPrintsItsValues) {
   ViewEnv env;
   const auto points = bent_hike();
-  const render::Camera camera = framing_camera(points, kWidth, kHeight);
+  const scene::Camera camera = framing_camera(points, kWidth, kHeight);
   const std::size_t target = 60;
-  const auto at = camera.project(render::ecef_from({points[target].lat, points[target].lon, points[target].ele}));
+  const auto at = camera.project(scene::ecef_from({points[target].lat, points[target].lon, points[target].ele}));
   ASSERT_TRUE(at.has_value());
   const std::string script =
       env.script("hover.txt", "hover " + std::to_string(at->x_px) + " " + std::to_string(at->y_px) +

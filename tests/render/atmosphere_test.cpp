@@ -1,6 +1,6 @@
 // The CPU side of the light model: the sun reddens and dims as it sinks, is gone below the
 // horizon, and the sky light fades with it.
-#include "render/atmosphere.hpp"
+#include "render/passes/atmosphere.hpp"
 
 #include <gtest/gtest.h>
 

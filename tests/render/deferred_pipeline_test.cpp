@@ -11,8 +11,8 @@
 
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
-#include "render/camera.hpp"
-#include "render/gl_capabilities.hpp"
+#include "scene/camera.hpp"
+#include "render/gl/gl_capabilities.hpp"
 #include "render/scene_renderer.hpp"
 #include "scene_test_support.hpp"
 
@@ -33,7 +33,7 @@ double colour_distance(const Pixel& a, const Pixel& b) {
 }
 
 // Fraction of pixels where some channel differs by more than `tolerance`.
-double fraction_differing(const RgbaImage& a, const RgbaImage& b, int tolerance) {
+double fraction_differing(const scene::RgbaImage& a, const scene::RgbaImage& b, int tolerance) {
   std::size_t differing = 0;
   for (std::uint32_t y = 0; y < a.height; ++y)
     for (std::uint32_t x = 0; x < a.width; ++x) {
@@ -66,10 +66,10 @@ TEST_F(DeferredPipelineTest, AmbientOcclusionDarkensTheValleyFloorNotTheRidgeTop
   ValleysSource valleys;
   SceneRenderer renderer({&valleys, nullptr});
   const auto camera =
-      camera_at({{kLat, kLon + 1000.0 / metres_per_degree_lon(), 10000.0}, 0.0, -90.0}, Lens{45.0, 240, 135}, 1000.0);
+      scene::camera_at({{kLat, kLon + 1000.0 / metres_per_degree_lon(), 10000.0}, 0.0, -90.0}, scene::Lens{45.0, 240, 135}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  const auto floor = camera.value->project(ecef_from({kLat, kLon, 1000.0}));
-  const auto ridge = camera.value->project(ecef_from({kLat, kLon + 2000.0 / metres_per_degree_lon(), 2600.0}));
+  const auto floor = camera.value->project(scene::ecef_from({kLat, kLon, 1000.0}));
+  const auto ridge = camera.value->project(scene::ecef_from({kLat, kLon + 2000.0 / metres_per_degree_lon(), 2600.0}));
   ASSERT_TRUE(floor && ridge);
 
   SceneRenderOptions options;
@@ -92,7 +92,7 @@ TEST_F(DeferredPipelineTest, AmbientOcclusionDarkensTheValleyFloorNotTheRidgeTop
 TEST_F(DeferredPipelineTest, EachSwitchChangesThePicture) {
   ValleysSource valleys;
   SceneRenderer renderer({&valleys, nullptr});
-  const auto camera = camera_at({{kLat - 0.1, kLon, 3000.0}, 10.0, -12.0}, Lens{45.0, 160, 90}, 1000.0);
+  const auto camera = scene::camera_at({{kLat - 0.1, kLon, 3000.0}, 10.0, -12.0}, scene::Lens{45.0, 160, 90}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kLat, kLon, 220.0, 35.0);
@@ -120,8 +120,8 @@ TEST_F(DeferredPipelineTest, EachSwitchChangesThePicture) {
 // look the same.
 TEST_F(DeferredPipelineTest, FarGroundIsHazierThanNearGround) {
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{30.0, 160, 90};
-  const auto camera = camera_at({{47.0, 8.0, 1500.0}, 30.0, -8.0}, lens, 500.0);
+  const scene::Lens lens{30.0, 160, 90};
+  const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 30.0, -8.0}, lens, 500.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.neutral_ground_height_m = 500.0;
@@ -149,7 +149,7 @@ TEST_F(DeferredPipelineTest, FarGroundIsHazierThanNearGround) {
 TEST_F(DeferredPipelineTest, TheSkyIsBrighterAtTheHorizonThanAtTheZenith) {
   SceneRenderer renderer({nullptr, nullptr});
   // Looking north, up from 2 to 72 degrees above the horizon, the sun behind in the south.
-  const auto camera = camera_at({{47.0, 8.0, 1500.0}, 0.0, 37.0}, Lens{70.0, 90, 90}, 500.0);
+  const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 0.0, 37.0}, scene::Lens{70.0, 90, 90}, 500.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.neutral_ground_height_m = 500.0;
@@ -172,7 +172,7 @@ TEST_F(DeferredPipelineTest, PackedDistancesDrawWhatFloatDistancesDraw) {
   ValleysSource valleys;
   SceneRenderer renderer({&valleys, nullptr});
   EXPECT_EQ(renderer.distance_encoding(), distance_encoding_for(query_gl_capabilities()));
-  const auto camera = camera_at({{kLat - 0.1, kLon, 3000.0}, 10.0, -12.0}, Lens{45.0, 160, 90}, 1000.0);
+  const auto camera = scene::camera_at({{kLat - 0.1, kLon, 3000.0}, 10.0, -12.0}, scene::Lens{45.0, 160, 90}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kLat, kLon, 220.0, 35.0);

@@ -1,7 +1,7 @@
 // The frame profiler: CPU time per pass, mean and median over a window of frames, the table,
 // misuse reported as errors, and the GPU column consistent with the context's capabilities.
 
-#include "render/frame_profiler.hpp"
+#include "render/gl/frame_profiler.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Drawing with the embedded shaders and reading the pixels back: exact values, which way is up.
 
-#include "render/framebuffer_readback.hpp"
+#include "render/gl/framebuffer_readback.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <cstdlib>
 
 #include "gl_test_support.hpp"
-#include "render/render_error.hpp"
-#include "render/shader_program.hpp"
+#include "render/gl/render_error.hpp"
+#include "render/gl/shader_program.hpp"
 
 namespace trailray::render {
 namespace {
@@ -35,7 +35,7 @@ TEST_F(FramebufferReadback, AClearColourReadsBackExactly) {
   const RgbaTarget target(13, 7);  // odd sizes: no row padding hides a mistake
   glClearColor(10 / 255.0f, 128 / 255.0f, 250 / 255.0f, 77 / 255.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  const RgbaImage image = read_rgba8(0, 0, target.width, target.height);
+  const scene::RgbaImage image = read_rgba8(0, 0, target.width, target.height);
   ASSERT_EQ(image.width, 13u);
   ASSERT_EQ(image.height, 7u);
   ASSERT_EQ(image.rgba.size(), 13u * 7u * 4u);
@@ -54,13 +54,13 @@ TEST_F(FramebufferReadback, RowsComeBackTopDown) {
   glClearColor(1, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glDisable(GL_SCISSOR_TEST);
-  const RgbaImage image = read_rgba8(0, 0, 6, 4);
+  const scene::RgbaImage image = read_rgba8(0, 0, 6, 4);
   EXPECT_EQ(image.pixel(0, 3), (Pixel{255, 0, 0, 255}));
   EXPECT_EQ(image.pixel(5, 3), (Pixel{255, 0, 0, 255}));
   EXPECT_EQ(image.pixel(0, 0), (Pixel{0, 0, 255, 255}));
   EXPECT_EQ(image.pixel(0, 2), (Pixel{0, 0, 255, 255}));
   // A sub-rectangle: GL's x 2..4, rows 0..1 -> an image whose bottom row is the red one.
-  const RgbaImage part = read_rgba8(2, 0, 3, 2);
+  const scene::RgbaImage part = read_rgba8(2, 0, 3, 2);
   ASSERT_EQ(part.width, 3u);
   ASSERT_EQ(part.height, 2u);
   EXPECT_EQ(part.pixel(0, 1), (Pixel{255, 0, 0, 255}));
@@ -74,7 +74,7 @@ TEST_F(FramebufferReadback, TheFullscreenTriangleCoversEveryPixel) {
   const ShaderProgram program = ShaderProgram::from_embedded("fullscreen_triangle.vert", "solid_color.frag");
   program.set_vec4("u_color", 0.2f, 0.4f, 0.6f, 0.8f);
   draw_fullscreen_triangle(program);
-  const RgbaImage image = read_rgba8(0, 0, target.width, target.height);
+  const scene::RgbaImage image = read_rgba8(0, 0, target.width, target.height);
   const Pixel expected{unorm8(0.2f), unorm8(0.4f), unorm8(0.6f), unorm8(0.8f)};
   for (std::uint32_t y = 0; y < image.height; ++y)
     for (std::uint32_t x = 0; x < image.width; ++x) ASSERT_EQ(image.pixel(x, y), expected) << x << "," << y;
@@ -84,7 +84,7 @@ TEST_F(FramebufferReadback, TheGradientPutsEachPixelCentreWhereItBelongs) {
   const RgbaTarget target(16, 8);
   const ShaderProgram program = ShaderProgram::from_embedded("fullscreen_triangle.vert", "uv_gradient.frag");
   draw_fullscreen_triangle(program);
-  const RgbaImage image = read_rgba8(0, 0, target.width, target.height);
+  const scene::RgbaImage image = read_rgba8(0, 0, target.width, target.height);
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
       // Pixel centres in GL's window coordinates; image row y is GL row height - 1 - y.
@@ -111,9 +111,9 @@ TEST_F(FramebufferReadback, TheShadersSrgbCurveMatchesTheCpus) {
     draw_fullscreen_triangle(program);
     const Pixel pixel = read_rgba8(0, 0, 1, 1).pixel(0, 0);
     // The GPU's pow is not correctly rounded; one 8-bit step is what that can cost.
-    EXPECT_LE(std::abs(pixel[0] - linear_to_srgb8(linear)), 1) << linear;
-    EXPECT_LE(std::abs(pixel[1] - linear_to_srgb8(linear * 0.5f)), 1) << linear;
-    EXPECT_LE(std::abs(pixel[2] - linear_to_srgb8(1.0f - linear)), 1) << linear;
+    EXPECT_LE(std::abs(pixel[0] - scene::linear_to_srgb8(linear)), 1) << linear;
+    EXPECT_LE(std::abs(pixel[1] - scene::linear_to_srgb8(linear * 0.5f)), 1) << linear;
+    EXPECT_LE(std::abs(pixel[2] - scene::linear_to_srgb8(1.0f - linear)), 1) << linear;
   }
 }
 

@@ -1,12 +1,12 @@
 // The headless context: creation on whatever EGL offers (llvmpipe here), capabilities, errors.
 
-#include "render/gl_context.hpp"
+#include "render/platform/gl_context.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "render/gl_api.hpp"
+#include "render/gl/gl_api.hpp"
 
 namespace trailray::render {
 namespace {

@@ -1,11 +1,11 @@
 // RAII owners of GL names: each object deleted exactly once; framebuffer and allocation errors.
 
-#include "render/gl_objects.hpp"
+#include "render/gl/gl_objects.hpp"
 
 #include <gtest/gtest.h>
 
 #include "gl_test_support.hpp"
-#include "render/render_error.hpp"
+#include "render/gl/render_error.hpp"
 
 namespace trailray::render {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <optional>
 
-#include "render/gl_context.hpp"
-#include "render/gl_objects.hpp"
+#include "render/platform/gl_context.hpp"
+#include "render/gl/gl_objects.hpp"
 
 namespace trailray::render::test {
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "render/gpu_resource_cache.hpp"
+#include "render/gl/gpu_resource_cache.hpp"
 
 namespace trailray::render {
 namespace {

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/camera.hpp"
-#include "render/framebuffer_readback.hpp"
-#include "render/gbuffer.hpp"
-#include "render/reference/reference_track.hpp"
-#include "render/reference/ribbon_pass.hpp"
-#include "render/reference/tube_pass.hpp"
+#include "scene/camera.hpp"
+#include "render/gl/framebuffer_readback.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/passes/reference/reference_track.hpp"
+#include "render/passes/reference/ribbon_pass.hpp"
+#include "render/passes/reference/tube_pass.hpp"
 
 namespace trailray::render {
 namespace {
@@ -28,27 +28,27 @@ using reference::TubeBuffer;
 using reference::TubePass;
 using test::GlTest;
 
-constexpr GeoPosition kPlace{46.5, 10.0, 0.0};
+constexpr scene::GeoPosition kPlace{46.5, 10.0, 0.0};
 constexpr double kCameraHeightM = 500.0;
-const Lens kLens{30.0, 320, 240};
+const scene::Lens kLens{30.0, 320, 240};
 const glm::vec3 kRed{1.0f, 0.0f, 0.0f};
 
 double focal_length_px() { return 0.5 * kLens.height_px / std::tan(kLens.vertical_fov_deg * std::numbers::pi / 360.0); }
 
 // Level points (metres east and north of kPlace, on the ellipsoid) as one segment.
-TrackGeometry level_path(const std::vector<glm::dvec2>& east_north) {
-  const EnuAxes axes = enu_axes_at(kPlace.lat_deg, kPlace.lon_deg);
-  const glm::dvec3 origin = to_dvec3(ecef_from(kPlace));
-  TrackPolyline line;
+scene::TrackGeometry level_path(const std::vector<glm::dvec2>& east_north) {
+  const scene::EnuAxes axes = scene::enu_axes_at(kPlace.lat_deg, kPlace.lon_deg);
+  const glm::dvec3 origin = scene::to_dvec3(scene::ecef_from(kPlace));
+  scene::TrackPolyline line;
   for (const glm::dvec2& p : east_north) line.points_ecef.push_back(origin + p.x * axes.east + p.y * axes.north);
-  TrackGeometry g;
+  scene::TrackGeometry g;
   g.segments.push_back(std::move(line));
   return g;
 }
 
 // A straight line from 150 m west to 150 m east, a point every 50 m: across most of the picture
 // (which is 357 m wide at the ground), ending about 26 pixels from either side.
-TrackGeometry west_to_east() {
+scene::TrackGeometry west_to_east() {
   std::vector<glm::dvec2> points;
   for (int e = -150; e <= 150; e += 50) points.push_back({e, 0.0});
   return level_path(points);
@@ -57,35 +57,35 @@ TrackGeometry west_to_east() {
 class ReferencePassesTest : public GlTest {
  protected:
   ReferencePassesTest()
-      : camera(ecef_from({kPlace.lat_deg, kPlace.lon_deg, kCameraHeightM}), 0.0, -90.0, kLens, DepthRange{1.0, 1.0e4}),
+      : camera(scene::ecef_from({kPlace.lat_deg, kPlace.lon_deg, kCameraHeightM}), 0.0, -90.0, kLens, scene::DepthRange{1.0, 1.0e4}),
         gbuffer(static_cast<int>(kLens.width_px), static_cast<int>(kLens.height_px), DistanceEncoding::packed_rgba8) {}
 
   // The albedo after `draw` into a cleared G-buffer, rows top-down.
   template <class Draw>
-  RgbaImage albedo_after(Draw draw) {
+  scene::RgbaImage albedo_after(Draw draw) {
     gbuffer.bind_and_clear();
     draw();
     return read_rgba8(0, 0, gbuffer.width(), gbuffer.height());
   }
 
-  static bool drawn(const RgbaImage& image, std::uint32_t x, std::uint32_t y) { return image.pixel(x, y)[3] > 127; }
-  static int column_count(const RgbaImage& image, std::uint32_t x) {
+  static bool drawn(const scene::RgbaImage& image, std::uint32_t x, std::uint32_t y) { return image.pixel(x, y)[3] > 127; }
+  static int column_count(const scene::RgbaImage& image, std::uint32_t x) {
     int n = 0;
     for (std::uint32_t y = 0; y < image.height; ++y) n += drawn(image, x, y) ? 1 : 0;
     return n;
   }
   // Every pixel on the projected centre line of `east_north` (every 1/100 of an edge) is drawn;
   // the two open ends of the path are left out (neither technique caps them).
-  void expect_no_holes(const RgbaImage& image, const std::vector<glm::dvec2>& east_north, const char* what) {
-    const EnuAxes axes = enu_axes_at(kPlace.lat_deg, kPlace.lon_deg);
-    const glm::dvec3 origin = to_dvec3(ecef_from(kPlace));
+  void expect_no_holes(const scene::RgbaImage& image, const std::vector<glm::dvec2>& east_north, const char* what) {
+    const scene::EnuAxes axes = scene::enu_axes_at(kPlace.lat_deg, kPlace.lon_deg);
+    const glm::dvec3 origin = scene::to_dvec3(scene::ecef_from(kPlace));
     int holes = 0;
     std::string first_hole;
     for (std::size_t i = 0; i + 1 < east_north.size(); ++i)
       for (int k = 0; k <= 100; ++k) {
         if ((i == 0 && k == 0) || (i + 2 == east_north.size() && k == 100)) continue;
         const glm::dvec2 p = glm::mix(east_north[i], east_north[i + 1], k / 100.0);
-        const auto pixel = camera.project(to_ecef(origin + p.x * axes.east + p.y * axes.north));
+        const auto pixel = camera.project(scene::to_ecef(origin + p.x * axes.east + p.y * axes.north));
         ASSERT_TRUE(pixel && pixel->x_px >= 0.0 && pixel->y_px >= 0.0 && pixel->x_px < kLens.width_px &&
                     pixel->y_px < kLens.height_px)
             << what << ": the path leaves the picture";
@@ -95,7 +95,7 @@ class ReferencePassesTest : public GlTest {
     EXPECT_EQ(holes, 0) << what << ": the first at " << first_hole;
   }
 
-  Camera camera;
+  scene::Camera camera;
   GBuffer gbuffer;
 };
 
@@ -103,7 +103,7 @@ TEST_F(ReferencePassesTest, TheRibbonIsAsWideOnScreenAsAsked) {
   const RibbonPass pass;
   const RibbonBuffer ribbon(west_to_east());
   for (const double width_px : {3.0, 6.0, 11.0}) {
-    const RgbaImage image = albedo_after([&] { pass.draw(gbuffer, camera, ribbon, kRed, width_px); });
+    const scene::RgbaImage image = albedo_after([&] { pass.draw(gbuffer, camera, ribbon, kRed, width_px); });
     for (const std::uint32_t x : {60u, 160u, 260u}) EXPECT_NEAR(column_count(image, x), width_px, 1.0) << "column " << x;
     EXPECT_EQ(column_count(image, 2), 0) << "the line ends inside the picture";
   }
@@ -113,7 +113,7 @@ TEST_F(ReferencePassesTest, TheTubeIsTwoRadiiWideAtItsDistance) {
   const TubePass pass;
   const double radius_m = 5.0;
   const TubeBuffer tube(west_to_east(), radius_m);
-  const RgbaImage image = albedo_after([&] { pass.draw(gbuffer, camera, tube, kRed); });
+  const scene::RgbaImage image = albedo_after([&] { pass.draw(gbuffer, camera, tube, kRed); });
   // An octagon's width across varies between its inner and outer diameters (cos 22.5 deg).
   const double expected_px = 2.0 * radius_m * focal_length_px() / kCameraHeightM;
   for (const std::uint32_t x : {60u, 160u, 260u})
@@ -128,8 +128,8 @@ TEST_F(ReferencePassesTest, RadiusForPixelWidthMatchesTheRibbon) {
   const RibbonPass ribbon_pass;
   const TubeBuffer tube(west_to_east(), radius_m);
   const RibbonBuffer ribbon(west_to_east());
-  const RgbaImage tube_image = albedo_after([&] { tube_pass.draw(gbuffer, camera, tube, kRed); });
-  const RgbaImage ribbon_image = albedo_after([&] { ribbon_pass.draw(gbuffer, camera, ribbon, kRed, width_px); });
+  const scene::RgbaImage tube_image = albedo_after([&] { tube_pass.draw(gbuffer, camera, tube, kRed); });
+  const scene::RgbaImage ribbon_image = albedo_after([&] { ribbon_pass.draw(gbuffer, camera, ribbon, kRed, width_px); });
   EXPECT_NEAR(column_count(tube_image, 160), column_count(ribbon_image, 160), 1.5);
 }
 
@@ -147,7 +147,7 @@ TEST_F(ReferencePassesTest, NeitherLeavesAHoleAtTurns) {
 }
 
 TEST_F(ReferencePassesTest, GpuMemoryFollowsTheLayouts) {
-  TrackGeometry geometry = west_to_east();                        // 7 points
+  scene::TrackGeometry geometry = west_to_east();                        // 7 points
   geometry.segments.push_back(level_path({{0, 50}}).segments[0]);  // a lone point
   const RibbonBuffer ribbon(geometry);
   EXPECT_EQ(ribbon.point_count(), 8u);
@@ -166,14 +166,14 @@ TEST_F(ReferencePassesTest, TheTubeRefusesARadiusThatIsNotPositive) {
 }
 
 TEST_F(ReferencePassesTest, EmptyGeometryDrawsNothing) {
-  const TrackGeometry empty;
+  const scene::TrackGeometry empty;
   const RibbonBuffer ribbon(empty);
   const TubeBuffer tube(empty, 1.0);
   EXPECT_EQ(ribbon.gpu_bytes(), 0u);
   EXPECT_EQ(tube.gpu_bytes(), 0u);
   const RibbonPass ribbon_pass;
   const TubePass tube_pass;
-  const RgbaImage image = albedo_after([&] {
+  const scene::RgbaImage image = albedo_after([&] {
     ribbon_pass.draw(gbuffer, camera, ribbon, kRed, 5.0);
     tube_pass.draw(gbuffer, camera, tube, kRed);
   });

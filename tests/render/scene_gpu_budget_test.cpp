@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "render/scene_renderer.hpp"
 #include "scene_test_support.hpp"
 
@@ -64,8 +64,8 @@ class StripedImagery : public terrain::ImagerySource {
 
 class SceneGpuBudgetTest : public GlTest {
  protected:
-  static Camera camera_over(int place) {
-    auto made = camera_at({{kLat, kLon + place * kPlaceStepDeg, 5000.0}, 30.0, -50.0}, Lens{45.0, 96, 64}, 1200.0);
+  static scene::Camera camera_over(int place) {
+    auto made = scene::camera_at({{kLat, kLon + place * kPlaceStepDeg, 5000.0}, 30.0, -50.0}, scene::Lens{45.0, 96, 64}, 1200.0);
     EXPECT_TRUE(made.ok()) << made.error;
     return *made.value;
   }
@@ -79,7 +79,7 @@ class SceneGpuBudgetTest : public GlTest {
 };
 
 // The largest difference of any channel of any pixel.
-int max_difference(const RgbaImage& a, const RgbaImage& b) {
+int max_difference(const scene::RgbaImage& a, const scene::RgbaImage& b) {
   EXPECT_EQ(a.rgba.size(), b.rgba.size());
   int most = 0;
   for (std::size_t i = 0; i < std::min(a.rgba.size(), b.rgba.size()); ++i)
@@ -111,7 +111,7 @@ TEST_F(SceneGpuBudgetTest, FlyingAcrossPlacesStaysWithinTheBudgetAndRedrawsARevi
   o.mesh_budget_bytes = 2 * first.report.gpu_meshes.frame_bytes;
   o.imagery_budget_bytes = 2 * first.report.gpu_imagery.frame_bytes;
 
-  std::vector<RgbaImage> seen;
+  std::vector<scene::RgbaImage> seen;
   std::size_t most_mesh_entries = 0;
   for (int round = 0; round < 2; ++round)
     for (int place = 0; place < kPlaces; ++place) {
@@ -129,8 +129,8 @@ TEST_F(SceneGpuBudgetTest, FlyingAcrossPlacesStaysWithinTheBudgetAndRedrawsARevi
       }
       // A few more frames there, turning, as a viewer would draw them.
       for (int frame = 1; frame <= 3; ++frame) {
-        auto made = camera_at({{kLat, kLon + place * kPlaceStepDeg, 5000.0}, 30.0 + 20.0 * frame, -50.0},
-                              Lens{45.0, 96, 64}, 1200.0);
+        auto made = scene::camera_at({{kLat, kLon + place * kPlaceStepDeg, 5000.0}, 30.0 + 20.0 * frame, -50.0},
+                              scene::Lens{45.0, 96, 64}, 1200.0);
         ASSERT_TRUE(made.ok()) << made.error;
         const RenderedScene turned = renderer.render(*made.value, o);
         const std::string where = "round " + std::to_string(round) + " place " + std::to_string(place);

@@ -11,7 +11,7 @@
 
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "scene_test_support.hpp"
 #include "terrain/source_factory.hpp"
 #include "test_support.hpp"
@@ -72,13 +72,13 @@ class SceneRendererTest : public GlTest {};
 TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   RidgeSource ridge;
   SceneRenderer renderer({&ridge, nullptr});
-  const Lens lens{45.0, 240, 135};
-  const auto camera = camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, lens, 1000.0);
+  const scene::Lens lens{45.0, 240, 135};
+  const auto camera = scene::camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, lens, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   // Points halfway up each slope, 1 km west and east of the crest.
   const double deg_per_km = 1.0 / (111.320 * std::cos(kRidgeLat * M_PI / 180.0));
-  const auto west = camera.value->project(ecef_from({kRidgeLat, kRidgeLon - deg_per_km, 1400.0}));
-  const auto east = camera.value->project(ecef_from({kRidgeLat, kRidgeLon + deg_per_km, 1400.0}));
+  const auto west = camera.value->project(scene::ecef_from({kRidgeLat, kRidgeLon - deg_per_km, 1400.0}));
+  const auto east = camera.value->project(scene::ecef_from({kRidgeLat, kRidgeLon + deg_per_km, 1400.0}));
   ASSERT_TRUE(west && east);
 
   SceneRenderOptions options;
@@ -99,7 +99,7 @@ TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   EXPECT_GT(east_lit, west_dark + 40.0) << "sun in the east: west slope " << west_dark << ", east slope " << east_lit;
 
   // The valley floor at 1000 m is tinted green (hypsometric tint), not grey.
-  const auto valley = camera.value->project(ecef_from({kRidgeLat, kRidgeLon - 3.5 * deg_per_km, 1000.0}));
+  const auto valley = camera.value->project(scene::ecef_from({kRidgeLat, kRidgeLon - 3.5 * deg_per_km, 1000.0}));
   ASSERT_TRUE(valley);
   const auto p =
       from_west.image.pixel(static_cast<std::uint32_t>(valley->x_px), static_cast<std::uint32_t>(valley->y_px));
@@ -111,7 +111,7 @@ TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
   RidgeSource ridge;
   HalvesImagery imagery;
   SceneRenderer renderer({&ridge, &imagery});
-  const auto camera = camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, Lens{45.0, 160, 90}, 1000.0);
+  const auto camera = scene::camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, scene::Lens{45.0, 160, 90}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 180.0, 89.0);
@@ -122,7 +122,7 @@ TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
   const double deg_per_km = 1.0 / (111.320 * std::cos(kRidgeLat * M_PI / 180.0));
   for (const double km : {-3.0, -0.5, 0.5, 3.0}) {
     const auto at =
-        camera.value->project(ecef_from({kRidgeLat, kRidgeLon + km * deg_per_km, km < -2 || km > 2 ? 1000.0 : 1600.0}));
+        camera.value->project(scene::ecef_from({kRidgeLat, kRidgeLon + km * deg_per_km, km < -2 || km > 2 ? 1000.0 : 1600.0}));
     ASSERT_TRUE(at);
     const auto p = scene.image.pixel(static_cast<std::uint32_t>(at->x_px), static_cast<std::uint32_t>(at->y_px));
     if (km < 0)
@@ -134,8 +134,8 @@ TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
 
 TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{45.0, 160, 90};
-  const auto camera = camera_at({{47.0, 8.0, 1500.0}, 30.0, -10.0}, lens, 500.0);
+  const scene::Lens lens{45.0, 160, 90};
+  const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 30.0, -10.0}, lens, 500.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.neutral_ground_height_m = 500.0;
@@ -164,8 +164,8 @@ TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
 // ellipsoid's horizon row (earth curvature: 1.24 degrees below the horizontal), column by column.
 TEST_F(SceneRendererTest, FlatGroundMeetsTheSkyOnTheHorizonRowOfTheCurvedEarth) {
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{20.0, 320, 180};
-  const auto camera = camera_at({{47.0, 8.0, 1500.0}, 30.0, 0.0}, lens, 0.0);
+  const scene::Lens lens{20.0, 320, 180};
+  const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 30.0, 0.0}, lens, 0.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   SceneRenderOptions options;
   options.neutral_ground_height_m = 0.0;
@@ -194,11 +194,11 @@ TEST_F(SceneRendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
   auto source = terrain::open_height_source(settings, {});
   ASSERT_TRUE(source);
   SceneRenderer renderer({source.get(), nullptr});
-  const GeoPosition peak{46.734190, 7.919397, 2004.23};
-  const Lens lens{20.0, 320, 180};
-  const auto camera = camera_at({{peak.lat_deg - 0.06, peak.lon_deg, peak.height_m}, 0.0, -3.0}, lens, 560.0);
+  const scene::GeoPosition peak{46.734190, 7.919397, 2004.23};
+  const scene::Lens lens{20.0, 320, 180};
+  const auto camera = scene::camera_at({{peak.lat_deg - 0.06, peak.lon_deg, peak.height_m}, 0.0, -3.0}, lens, 560.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  const auto expected = camera.value->project(ecef_from(peak));
+  const auto expected = camera.value->project(scene::ecef_from(peak));
   ASSERT_TRUE(expected);
   ASSERT_GT(expected->y_px, 10.0);
 

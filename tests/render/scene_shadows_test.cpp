@@ -12,7 +12,7 @@
 
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "render/scene_renderer.hpp"
 #include "scene_test_support.hpp"
 
@@ -41,15 +41,15 @@ struct RidgeSource : test::EastProfileSource {
 class SceneShadowsTest : public GlTest {
  protected:
   // Looking straight down from 9 km over the crest: about 6 km either side in view.
-  static Camera overhead() {
-    auto made = camera_at({{kLat, kLon, 9000.0}, 0.0, -90.0}, Lens{45.0, 240, 135}, 1000.0);
+  static scene::Camera overhead() {
+    auto made = scene::camera_at({{kLat, kLon, 9000.0}, 0.0, -90.0}, scene::Lens{45.0, 240, 135}, 1000.0);
     if (!made.ok()) throw std::runtime_error(made.error);
     return *made.value;
   }
   // The pixel of the ground `east_km` east of the crest (negative: west).
-  static terrain::ScreenPoint ground_at(const Camera& camera, double east_km) {
+  static terrain::ScreenPoint ground_at(const scene::Camera& camera, double east_km) {
     const double height = 1000.0 + 800.0 * std::max(0.0, 1.0 - std::abs(east_km) / 2.0);
-    const auto p = camera.project(ecef_from({kLat, kLon + east_km * degrees_per_km(), height}));
+    const auto p = camera.project(scene::ecef_from({kLat, kLon + east_km * degrees_per_km(), height}));
     if (!p) throw std::runtime_error("ground point out of view");
     return *p;
   }
@@ -58,7 +58,7 @@ class SceneShadowsTest : public GlTest {
 TEST_F(SceneShadowsTest, ALowWestSunShadowsTheGroundJustEastOfTheRidgeAndNothingFarFromIt) {
   RidgeSource ridge;
   SceneRenderer renderer({&ridge, nullptr});
-  const Camera camera = overhead();
+  const scene::Camera camera = overhead();
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, kSunElevationDeg);
   const RenderedScene shadowed = renderer.render(camera, options);
@@ -90,7 +90,7 @@ TEST_F(SceneShadowsTest, ALowWestSunShadowsTheGroundJustEastOfTheRidgeAndNothing
 TEST_F(SceneShadowsTest, TheShadowMovesWithTheSun) {
   RidgeSource ridge;
   SceneRenderer renderer({&ridge, nullptr});
-  const Camera camera = overhead();
+  const scene::Camera camera = overhead();
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kLat, kLon, 90.0, kSunElevationDeg);  // from the east now
   const RenderedScene shadowed = renderer.render(camera, options);
@@ -107,7 +107,7 @@ TEST_F(SceneShadowsTest, TheShadowMovesWithTheSun) {
 TEST_F(SceneShadowsTest, ASunBelowTheHorizonDoesNoShadowWork) {
   RidgeSource ridge;
   SceneRenderer renderer({&ridge, nullptr});
-  const Camera camera = overhead();
+  const scene::Camera camera = overhead();
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, -3.0);
   const RenderedScene night = renderer.render(camera, options);
@@ -122,7 +122,7 @@ TEST_F(SceneShadowsTest, ASunBelowTheHorizonDoesNoShadowWork) {
 TEST_F(SceneShadowsTest, ProfiledFramesTimeEachPassOfTheFrame) {
   RidgeSource ridge;
   SceneRenderer renderer({&ridge, nullptr});
-  const Camera camera = overhead();
+  const scene::Camera camera = overhead();
   FrameProfiler profiler(query_gl_capabilities(), 4);
   SceneRenderOptions options;
   options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, 30.0);

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "gl_test_support.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "render/scene_renderer.hpp"
 #include "scene_test_support.hpp"
 
@@ -34,8 +34,8 @@ class GatedSource : public test::EastProfileSource {
 
 class SceneStreamingTest : public GlTest {
  protected:
-  Camera camera() const {
-    auto made = camera_at({{kLat, kLon, 6000.0}, 0.0, -60.0}, Lens{45.0, 96, 54}, 1000.0);
+  scene::Camera camera() const {
+    auto made = scene::camera_at({{kLat, kLon, 6000.0}, 0.0, -60.0}, scene::Lens{45.0, 96, 54}, 1000.0);
     EXPECT_TRUE(made.ok()) << made.error;
     return *made.value;
   }

@@ -14,8 +14,8 @@
 #include <utility>
 
 #include "geo/tile_id.hpp"
-#include "render/camera.hpp"
-#include "render/framebuffer_readback.hpp"
+#include "scene/camera.hpp"
+#include "render/gl/framebuffer_readback.hpp"
 #include "render/scene_renderer.hpp"
 #include "terrain/tile_source.hpp"
 
@@ -24,7 +24,7 @@ namespace trailray::render::test {
 inline double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 
 // Mean luminance of the pixels within `radius` of (x, y).
-inline double mean_luminance(const RgbaImage& image, double x, double y, int radius) {
+inline double mean_luminance(const scene::RgbaImage& image, double x, double y, int radius) {
   double sum = 0.0;
   int n = 0;
   for (int j = -radius; j <= radius; ++j)
@@ -38,15 +38,15 @@ inline double mean_luminance(const RgbaImage& image, double x, double y, int rad
 }
 
 // Writes the picture to $TRAILRAY_TEST_IMAGE_DIR/name when that is set.
-inline void keep_image(const RgbaImage& image, const std::string& name) {
+inline void keep_image(const scene::RgbaImage& image, const std::string& name) {
   if (const char* dir = std::getenv("TRAILRAY_TEST_IMAGE_DIR"))
-    write_srgb_png(std::filesystem::path(dir) / name, image);
+    scene::write_srgb_png(std::filesystem::path(dir) / name, image);
 }
 
 // The unit vector towards a sun at `azimuth_deg` (clockwise from north) and `elevation_deg`
 // above the horizon of (lat, lon), in ECEF.
 inline glm::dvec3 sun_from(double lat, double lon, double azimuth_deg, double elevation_deg) {
-  const EnuAxes enu = enu_axes_at(lat, lon);
+  const scene::EnuAxes enu = scene::enu_axes_at(lat, lon);
   const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
   return std::cos(el) * (std::sin(az) * enu.east + std::cos(az) * enu.north) + std::sin(el) * enu.up;
 }

@@ -1,6 +1,6 @@
 // Compiling and linking against the real driver: errors name the file and line; uniforms.
 
-#include "render/shader_program.hpp"
+#include "render/gl/shader_program.hpp"
 
 #include <gtest/gtest.h>
 

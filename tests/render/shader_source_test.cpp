@@ -1,7 +1,7 @@
 // Shader sources: the embedded files and their line maps, and driver logs mapped to files and
 // lines (pure CPU; shader_program_test.cpp does the same against the real driver).
 
-#include "render/shader_source.hpp"
+#include "render/gl/shader_source.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "render/render_error.hpp"
+#include "render/gl/render_error.hpp"
 
 namespace trailray::render {
 namespace {

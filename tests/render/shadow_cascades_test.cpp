@@ -1,7 +1,7 @@
 // Cascaded shadow maps, CPU half: splits, slice coverage, stability under camera motion and
 // rotation, caster reach towards the sun, bias by texel size, input errors.
 
-#include "render/shadow_cascades.hpp"
+#include "render/passes/shadow_cascades.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,31 +17,31 @@ namespace {
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 // Above Interlaken, 1500 m over the ellipsoid, a 16:9 image.
-const GeoPosition kCameraPosition{46.69, 7.86, 1500.0};
-const Lens kLens{45.0, 1280, 720};
-const DepthRange kDepth{100.0, 300'000.0};
+const scene::GeoPosition kCameraPosition{46.69, 7.86, 1500.0};
+const scene::Lens kLens{45.0, 1280, 720};
+const scene::DepthRange kDepth{100.0, 300'000.0};
 
-Camera camera(double heading, double pitch, const glm::dvec3& shift = glm::dvec3(0.0)) {
-  return Camera(to_ecef(to_dvec3(ecef_from(kCameraPosition)) + shift), heading, pitch, kLens, kDepth);
+scene::Camera camera(double heading, double pitch, const glm::dvec3& shift = glm::dvec3(0.0)) {
+  return scene::Camera(scene::to_ecef(scene::to_dvec3(scene::ecef_from(kCameraPosition)) + shift), heading, pitch, kLens, kDepth);
 }
 
 // The sun 35 degrees high in the south-east of the camera.
 glm::dvec3 sun_direction() {
-  const EnuAxes enu = enu_axes_at(kCameraPosition.lat_deg, kCameraPosition.lon_deg);
+  const scene::EnuAxes enu = scene::enu_axes_at(kCameraPosition.lat_deg, kCameraPosition.lon_deg);
   const double elevation = 35.0 * kRadPerDeg, azimuth = 135.0 * kRadPerDeg;
   return std::cos(elevation) * (std::sin(azimuth) * enu.east + std::cos(azimuth) * enu.north) +
          std::sin(elevation) * enu.up;
 }
 
 // The eight corners of the camera frustum's slice between view depths near and far.
-std::vector<glm::dvec3> slice_corners(const Camera& cam, double near_m, double far_m) {
+std::vector<glm::dvec3> slice_corners(const scene::Camera& cam, double near_m, double far_m) {
   const double tan_v = std::tan(0.5 * cam.lens().vertical_fov_deg * kRadPerDeg);
   const double tan_h = tan_v * cam.lens().aspect();
   std::vector<glm::dvec3> corners;
   for (double depth : {near_m, far_m}) {
     for (double sx : {-1.0, 1.0}) {
       for (double sy : {-1.0, 1.0}) {
-        corners.push_back(to_dvec3(cam.position()) + depth * cam.axes().forward +
+        corners.push_back(scene::to_dvec3(cam.position()) + depth * cam.axes().forward +
                           sx * depth * tan_h * cam.axes().right + sy * depth * tan_v * cam.axes().up);
       }
     }
@@ -79,14 +79,14 @@ TEST(ShadowCascades, CascadesTileTheViewUpToTheShadowDistance) {
   for (std::size_t i = 0; i < kShadowCascadeCount; ++i) EXPECT_FLOAT_EQ(far[i], static_cast<float>(cascades[i].far_m));
 
   // A camera whose far plane is nearer than the cap ends its shadows there.
-  const Camera short_view(ecef_from(kCameraPosition), 0.0, -10.0, kLens, DepthRange{10.0, 5'000.0});
+  const scene::Camera short_view(scene::ecef_from(kCameraPosition), 0.0, -10.0, kLens, scene::DepthRange{10.0, 5'000.0});
   EXPECT_DOUBLE_EQ(ShadowCascades(short_view, sun_direction())[kShadowCascadeCount - 1].far_m, 5'000.0);
 }
 
 TEST(ShadowCascades, EachCascadeContainsItsFrustumSlice) {
   for (double heading : {0.0, 77.0, 200.0}) {
     for (double pitch : {-80.0, -30.0, 0.0, 25.0}) {
-      const Camera cam = camera(heading, pitch);
+      const scene::Camera cam = camera(heading, pitch);
       const ShadowCascades cascades(cam, sun_direction());
       for (std::size_t i = 0; i < kShadowCascadeCount; ++i) {
         const ShadowCascade& c = cascades[i];
@@ -106,7 +106,7 @@ TEST(ShadowCascades, EachCascadeContainsItsFrustumSlice) {
 TEST(ShadowCascades, CastersUpToTheHeightSpanTowardsTheSunAreInside) {
   ShadowCascadeSettings settings;
   settings.caster_height_span_m = 3'000.0;
-  const Camera cam = camera(135.0, -30.0);
+  const scene::Camera cam = camera(135.0, -30.0);
   const ShadowCascades cascades(cam, sun_direction(), settings);
   const double sin_elevation = std::sin(35.0 * kRadPerDeg);
   for (std::size_t i = 0; i < kShadowCascadeCount; ++i) {
@@ -126,7 +126,7 @@ TEST(ShadowCascades, CastersUpToTheHeightSpanTowardsTheSunAreInside) {
 TEST(ShadowCascades, MovingTheCameraMovesEachMapByWholeTexelsOrNotAtAll) {
   const ShadowCascades reference(camera(30.0, -25.0), sun_direction());
   const int size = reference.settings().map_size_px;
-  const glm::dvec3 world_point = to_dvec3(ecef_from(GeoPosition{46.72, 7.90, 800.0}));
+  const glm::dvec3 world_point = scene::to_dvec3(scene::ecef_from(scene::GeoPosition{46.72, 7.90, 800.0}));
   const double texel0 = reference[0].texel_size_m;
   int moves_seen = 0;
   for (const glm::dvec3& step : {glm::dvec3(0.3, 0.0, 0.0), glm::dvec3(0.0, 0.45, 0.1), glm::dvec3(-0.7, 0.2, 0.6),
@@ -200,7 +200,7 @@ TEST(ShadowCascades, BiasGrowsWithTexelSize) {
 }
 
 TEST(ShadowCascades, CameraRelativeFloatMatrixAgreesWithTheDoubleProjection) {
-  const Camera cam = camera(300.0, -40.0);
+  const scene::Camera cam = camera(300.0, -40.0);
   const ShadowCascades cascades(cam, sun_direction());
   const glm::dvec3 offset(1234.5, -2500.25, -800.0);  // a point near the camera, as a camera-relative offset
   for (std::size_t i = 0; i < kShadowCascadeCount; ++i) {
@@ -210,7 +210,7 @@ TEST(ShadowCascades, CameraRelativeFloatMatrixAgreesWithTheDoubleProjection) {
       for (int row = 0; row < 4; ++row) matrix[column][row] = m[static_cast<std::size_t>(column * 4 + row)];
     }
     const glm::vec4 clip = matrix * glm::vec4(glm::vec3(offset), 1.0f);
-    const glm::dvec3 expected = clip_of(cascades[i], to_dvec3(cam.position()) + offset);
+    const glm::dvec3 expected = clip_of(cascades[i], scene::to_dvec3(cam.position()) + offset);
     // Within a hundredth of a texel.
     const double texel_clip = 2.0 / cascades.settings().map_size_px;
     EXPECT_NEAR(clip.x, expected.x, 0.01 * texel_clip) << "cascade " << i;
@@ -243,7 +243,7 @@ TEST(ShadowCascades, MayHoldTheSpheresThatReachIntoTheLightBox) {
 }
 
 TEST(ShadowCascades, BadInputIsRefusedByName) {
-  const Camera cam = camera(0.0, -30.0);
+  const scene::Camera cam = camera(0.0, -30.0);
   auto message_of = [&](const glm::dvec3& sun, const ShadowCascadeSettings& settings) -> std::string {
     try {
       const ShadowCascades cascades(cam, sun, settings);

@@ -1,13 +1,13 @@
 // The terrain tile mesh on the CPU: grid and skirt layout, bilinear heights, positions relative to
 // the tile's origin, normals, holes.
-#include "render/terrain_mesh.hpp"
+#include "render/passes/terrain_mesh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "geo/tile_id.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "terrain/lod_selection.hpp"
 
 namespace trailray::render {
@@ -46,8 +46,8 @@ TEST(TerrainMesh, VerticesLieOnTheEllipsoidAtTheirHeightRelativeToTheOrigin) {
     const TerrainVertex& v = mesh.vertices[k];
     EXPECT_FLOAT_EQ(v.height_m, 500.0f + static_cast<float>(i));
     const auto ll = geo::latlon_from_tile_pixel(kAlpsTile, i, j, 64);
-    const glm::dvec3 expected = to_dvec3(ecef_from({ll->lat, ll->lon, 500.0 + i}));
-    const glm::dvec3 actual = to_dvec3(mesh.origin) + glm::dvec3(v.x, v.y, v.z);
+    const glm::dvec3 expected = scene::to_dvec3(scene::ecef_from({ll->lat, ll->lon, 500.0 + i}));
+    const glm::dvec3 actual = scene::to_dvec3(mesh.origin) + glm::dvec3(v.x, v.y, v.z);
     EXPECT_LT(glm::length(actual - expected), 0.01) << "vertex " << i << "," << j;
   }
   // The origin is the tile's centre at its mean height.
@@ -63,7 +63,7 @@ TEST(TerrainMesh, NormalsPointUpOnFlatGroundAndTiltAwayFromTheRise) {
   const TerrainMesh flat_mesh = build_terrain_mesh(flat, 33, 0.0f);
   const TerrainVertex& centre = flat_mesh.vertices[33 * 16 + 16];
   const auto ll = geo::latlon_from_tile_pixel(kAlpsTile, 16, 16, 32);
-  const EnuAxes enu = enu_axes_at(ll->lat, ll->lon);
+  const scene::EnuAxes enu = scene::enu_axes_at(ll->lat, ll->lon);
   const glm::dvec3 n(centre.nx, centre.ny, centre.nz);
   EXPECT_GT(glm::dot(n, enu.up), 0.99999);
 
@@ -86,13 +86,13 @@ TEST(TerrainMesh, SkirtsHangBelowTheEdgesBySkirtDepth) {
   const TerrainMesh mesh = build_terrain_mesh(tile, 9, 0.0f);
   const double depth = terrain::skirt_depth_m(kAlpsTile, 8);
   ASSERT_GT(depth, 0.0);
-  const glm::dvec3 origin = to_dvec3(mesh.origin);
+  const glm::dvec3 origin = scene::to_dvec3(mesh.origin);
   for (std::size_t k = 81; k < mesh.vertices.size(); ++k) {
     const TerrainVertex& v = mesh.vertices[k];
     const glm::dvec3 p = origin + glm::dvec3(v.x, v.y, v.z);
     double lat = 0, lon = 0;
-    geo::from_ecef(to_ecef(p), lat, lon);
-    const double height = glm::dot(p - to_dvec3(ecef_from({lat, lon, 0.0})), enu_axes_at(lat, lon).up);
+    geo::from_ecef(scene::to_ecef(p), lat, lon);
+    const double height = glm::dot(p - scene::to_dvec3(scene::ecef_from({lat, lon, 0.0})), scene::enu_axes_at(lat, lon).up);
     EXPECT_NEAR(height, 1200.0 - depth, 0.05) << "skirt vertex " << k;
   }
 }

@@ -14,7 +14,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -29,7 +29,7 @@ using test::pixel_of;
 using test::polyline;
 using test::track_alpha;
 
-constexpr GeoPosition kPlace{46.5, 10.0, 0.0};
+constexpr scene::GeoPosition kPlace{46.5, 10.0, 0.0};
 constexpr glm::vec3 kTrackBlue{0.0f, 0.0f, 1.0f};
 
 bool reddish(const std::array<std::uint8_t, 4>& p) { return p[0] > p[2] + 30; }
@@ -43,8 +43,8 @@ class TrackDepthTest : public GlTest {};
 TEST_F(TrackDepthTest, TheNearerOfTwoCrossingTracksWinsWhicheverIsDrawnFirst) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{30.0, 320, 240};
-  const Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, lens, 10.0);
+  const scene::Lens lens{30.0, 320, 240};
+  const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, lens, 10.0);
   SceneRenderOptions options = test::plain_options(kPlace, 0.0);
   options.track_settings.width = {8.0, TrackWidth::Unit::metres};
   for (const bool red_on_top : {false, true}) {
@@ -56,7 +56,7 @@ TEST_F(TrackDepthTest, TheNearerOfTwoCrossingTracksWinsWhicheverIsDrawnFirst) {
           std::string(red_on_top ? "red" : "blue") + " on top, " + (red_first ? "red" : "blue") + " drawn first";
       options.tracks = {{&red, kTrackRed, false}, {&blue, kTrackBlue, false}};
       if (!red_first) std::swap(options.tracks[0], options.tracks[1]);
-      const RgbaImage image = renderer.render(camera, options).image;
+      const scene::RgbaImage image = renderer.render(camera, options).image;
       keep_image(image, std::string("track_crossing_") + (red_on_top ? "red" : "blue") + "_on_top.png");
       const double top_m = red_on_top ? red_m : blue_m;
       for (const double along : {-3.0, 0.0, 3.0})
@@ -105,13 +105,13 @@ TEST_F(TrackDepthTest, ATrackThroughARidgeIsOpaqueInFrontAndAGhostBehindIt) {
   test::EastProfileSource ridge("ridge", kRidgeLat, kRidgeLon, ridge_height_m);
   SceneRenderer renderer({&ridge, nullptr});
   const LocalFrame frame(kPlace);
-  const Lens lens{40.0, 400, 240};
+  const scene::Lens lens{40.0, 400, 240};
   const glm::dvec3 eye = frame.point(-3500, -3000, 1900);
   // Towards the crest above the track: heading from the offsets, pitch from the drop.
   const glm::dvec3 to_target = glm::dvec3(0, 0, 1300) - glm::dvec3(-3500, -3000, 1900);
   const double heading = std::atan2(to_target.x, to_target.y) * 180.0 / M_PI;
   const double pitch = std::atan2(to_target.z, std::hypot(to_target.x, to_target.y)) * 180.0 / M_PI;
-  const Camera camera(to_ecef(eye), heading, pitch, lens, DepthRange{50.0, 1.0e5});
+  const scene::Camera camera(scene::to_ecef(eye), heading, pitch, lens, scene::DepthRange{50.0, 1.0e5});
 
   constexpr double kTrackM = 1300.0, kWidthPx = 5.0;
   constexpr float kAlpha = 0.45f;

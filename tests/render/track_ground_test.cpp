@@ -17,7 +17,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -31,22 +31,22 @@ using test::LocalFrame;
 using test::polyline;
 using test::track_alpha;
 
-constexpr GeoPosition kPlace{46.5, 10.0, 0.0};
+constexpr scene::GeoPosition kPlace{46.5, 10.0, 0.0};
 constexpr float kGhostAlpha = 0.45f;
 
 class TrackGroundTest : public GlTest {};
 
 // A camera south of the frame's origin, looking north and `pitch_deg` down at the point
 // `up_m` above it from `distance_m`.
-Camera looking_north_at(const LocalFrame& frame, double up_m, double distance_m, double pitch_deg, const Lens& lens) {
+scene::Camera looking_north_at(const LocalFrame& frame, double up_m, double distance_m, double pitch_deg, const scene::Lens& lens) {
   const double pitch = pitch_deg * M_PI / 180.0;
   const glm::dvec3 eye = frame.point(0.0, -distance_m * std::cos(pitch), up_m + distance_m * std::sin(pitch));
-  return Camera(to_ecef(eye), 0.0, -pitch_deg, lens, DepthRange{10.0, 1.0e5});
+  return scene::Camera(scene::to_ecef(eye), 0.0, -pitch_deg, lens, scene::DepthRange{10.0, 1.0e5});
 }
 
 // An east-west line of points `up_m` above the frame's origin, every 20 m from -600 to 600 m
 // east (wider than any of these pictures).
-TrackGeometry east_west_line(const LocalFrame& frame, double up_m) {
+scene::TrackGeometry east_west_line(const LocalFrame& frame, double up_m) {
   std::vector<glm::dvec3> line;
   for (double east = -600.0; east <= 600.0; east += 20.0) line.push_back({east, 0.0, up_m});
   return test::geometry_of({polyline(frame, line)});
@@ -62,10 +62,10 @@ struct PixelOnTube {
   double entry_up_m = 0.0;  // height above the frame's origin where it enters the cylinder
 };
 
-PixelOnTube pixel_on_tube(const Camera& camera, const LocalFrame& frame, double up_m, double radius_m, double x,
+PixelOnTube pixel_on_tube(const scene::Camera& camera, const LocalFrame& frame, double up_m, double radius_m, double x,
                           double y) {
-  const Ray ray = camera.ray_through_pixel(x, y);
-  const glm::dvec3 eye = to_dvec3(ray.origin), d = ray.direction, u = frame.axes.east;
+  const scene::Ray ray = camera.ray_through_pixel(x, y);
+  const glm::dvec3 eye = scene::to_dvec3(ray.origin), d = ray.direction, u = frame.axes.east;
   const glm::dvec3 w = eye - frame.point(0.0, 0.0, up_m);
   const glm::dvec3 d_across = d - u * glm::dot(d, u), w_across = w - u * glm::dot(w, u);
   const double across2 = glm::dot(d_across, d_across);
@@ -85,9 +85,9 @@ PixelOnTube pixel_on_tube(const Camera& camera, const LocalFrame& frame, double 
 
 // The tube's radius for a width: metres as given, pixels at the depth of the axis point nearest
 // the camera (where every capsule of an east-west line seen from due south takes it).
-double tube_radius_m(const Camera& camera, const LocalFrame& frame, double up_m, const TrackWidth& width) {
+double tube_radius_m(const scene::Camera& camera, const LocalFrame& frame, double up_m, const TrackWidth& width) {
   if (width.unit == TrackWidth::Unit::metres) return 0.5 * width.value;
-  const glm::dvec3 eye = to_dvec3(camera.position());
+  const glm::dvec3 eye = scene::to_dvec3(camera.position());
   const glm::dvec3 to_axis = frame.point(0.0, 0.0, up_m) - eye;
   const glm::dvec3 nearest = to_axis - frame.axes.east * glm::dot(to_axis, frame.axes.east);
   const double lens_angle =
@@ -107,7 +107,7 @@ struct CoverCount {
 // (alpha < 0.05) when `check_outside` (not with shadows: the tube's shadow darkens the ground).
 // Counts the opaque pixels whose ray enters the tube below the ground (up < 0).
 template <class ExpectAt>
-CoverCount check_cover(const test::WithAndWithout& images, const Camera& camera, const LocalFrame& frame, double up_m,
+CoverCount check_cover(const test::WithAndWithout& images, const scene::Camera& camera, const LocalFrame& frame, double up_m,
                        double radius_m, ExpectAt expect_at, bool check_outside, const std::string& what) {
   CoverCount count;
   for (std::uint32_t y = 0; y < images.with.height; ++y)
@@ -156,7 +156,7 @@ SceneRenderOptions ground_options(const TrackWidth& width) {
 TEST_F(TrackGroundTest, ATrackLyingOnTheGroundIsTheOpaqueTubeOverItsWholeSilhouette) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{30.0, 320, 240};
+  const scene::Lens lens{30.0, 320, 240};
   const TrackBuffer buffer(east_west_line(frame, 0.0));
   struct Case {
     TrackWidth width;
@@ -172,7 +172,7 @@ TEST_F(TrackGroundTest, ATrackLyingOnTheGroundIsTheOpaqueTubeOverItsWholeSilhoue
         Case{{14.0, TrackWidth::Unit::pixels}, 600.0, false, native, "14px"},
         Case{{14.0, TrackWidth::Unit::pixels}, 600.0, true, native, "14px_shadows"}}) {
     renderer.set_distance_encoding(c.encoding);
-    const Camera camera = looking_north_at(frame, 0.0, c.distance_m, 20.0, lens);
+    const scene::Camera camera = looking_north_at(frame, 0.0, c.distance_m, 20.0, lens);
     SceneRenderOptions options = ground_options(c.width);
     options.shadows = c.shadows;
     const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
@@ -194,10 +194,10 @@ TEST_F(TrackGroundTest, ATrackLyingOnTheGroundIsTheOpaqueTubeOverItsWholeSilhoue
 TEST_F(TrackGroundTest, ATrackThreeRadiiBelowTheGroundIsAGhost) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{30.0, 320, 240};
+  const scene::Lens lens{30.0, 320, 240};
   const TrackWidth width{20.0, TrackWidth::Unit::metres};
   const TrackBuffer buffer(east_west_line(frame, -30.0));
-  const Camera camera = looking_north_at(frame, -30.0, 300.0, 30.0, lens);
+  const scene::Camera camera = looking_north_at(frame, -30.0, 300.0, 30.0, lens);
   const auto images = test::render_both(renderer, camera, ground_options(width), {{&buffer, kTrackRed, false}});
   keep_image(images.with, "track_below_ground.png");
   const CoverCount count = check_cover(
@@ -215,10 +215,10 @@ TEST_F(TrackGroundTest, ATrackUnderARaisedSlabIsAGhostThereAndOpaqueBesideIt) {
   test::EastProfileSource slab("slab", kPlace.lat_deg, kPlace.lon_deg,
                                [](double east_m) { return std::abs(east_m) < 80.0 ? 30.0 : 0.0; });
   SceneRenderer renderer({&slab, nullptr});
-  const Lens lens{30.0, 480, 240};
+  const scene::Lens lens{30.0, 480, 240};
   const TrackWidth width{20.0, TrackWidth::Unit::metres};
   const TrackBuffer buffer(east_west_line(frame, 0.0));
-  const Camera camera = looking_north_at(frame, 0.0, 350.0, 25.0, lens);
+  const scene::Camera camera = looking_north_at(frame, 0.0, 350.0, 25.0, lens);
   const auto images = test::render_both(renderer, camera, ground_options(width), {{&buffer, kTrackRed, false}});
   keep_image(images.with, "track_under_slab.png");
   const CoverCount count = check_cover(

@@ -8,7 +8,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -29,22 +29,22 @@ int chroma(const std::array<std::uint8_t, 4>& p) {
 // A red track 25 km away across flat ground, seen from 300 m up: with the atmosphere the ground
 // there is mostly haze, the track keeps most of its colour.
 TEST_F(TrackHazeTest, AFarTrackKeepsItsColourWhereTheGroundFadesIntoHaze) {
-  const GeoPosition place{46.5, 10.0, 0.0};
+  const scene::GeoPosition place{46.5, 10.0, 0.0};
   const LocalFrame frame(place);
   SceneRenderer renderer({nullptr, nullptr});
-  const Lens lens{20.0, 320, 180};
+  const scene::Lens lens{20.0, 320, 180};
   const glm::dvec3 eye = frame.point(0.0, -25000.0, 1300.0);
   const double pitch = std::atan2(1005.0 - 1300.0, 25000.0) * 180.0 / M_PI;
-  const Camera camera(to_ecef(eye), 0.0, pitch, lens, DepthRange{100.0, 1.0e5});
+  const scene::Camera camera(scene::to_ecef(eye), 0.0, pitch, lens, scene::DepthRange{100.0, 1.0e5});
   const TrackBuffer buffer(
       test::geometry_of({test::polyline(frame, {{-3000.0, 0.0, 1005.0}, {3000.0, 0.0, 1005.0}})}));
   SceneRenderOptions options = test::plain_options(place, 1000.0);
   options.track_settings.width = {8.0, TrackWidth::Unit::pixels};
   options.tracks = {{&buffer, test::kTrackRed, false}};
   options.atmosphere = false;
-  const RgbaImage clear = renderer.render(camera, options).image;
+  const scene::RgbaImage clear = renderer.render(camera, options).image;
   options.atmosphere = true;
-  const RgbaImage hazy = renderer.render(camera, options).image;
+  const scene::RgbaImage hazy = renderer.render(camera, options).image;
   keep_image(hazy, "track_haze.png");
 
   // The track's centre row: the reddest row of the clear picture's middle column.

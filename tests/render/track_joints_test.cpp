@@ -12,7 +12,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -26,17 +26,17 @@ using test::LocalFrame;
 using test::pixel_of;
 using test::track_alpha;
 
-constexpr GeoPosition kPlace{46.5, 10.0, 0.0};
-const Lens kLens{30.0, 320, 240};
+constexpr scene::GeoPosition kPlace{46.5, 10.0, 0.0};
+const scene::Lens kLens{30.0, 320, 240};
 constexpr double kGroundM = 1000.0, kTrackM = 900.0;
 constexpr float kAlpha = 0.45f;
 
 class TrackJointsTest : public GlTest {
  protected:
   // The picture with the tracks and without, from 300 m above the ground, 400 m above the track.
-  test::WithAndWithout render(const std::vector<TrackPolyline>& segments, const std::string& name) {
+  test::WithAndWithout render(const std::vector<scene::TrackPolyline>& segments, const std::string& name) {
     SceneRenderer renderer({nullptr, nullptr});
-    TrackGeometry geometry;
+    scene::TrackGeometry geometry;
     geometry.segments = segments;
     const TrackBuffer buffer(geometry);
     SceneRenderOptions options = test::plain_options(kPlace, kGroundM);
@@ -48,7 +48,7 @@ class TrackJointsTest : public GlTest {
     keep_image(images.with, name);
     return images;
   }
-  static Camera camera() { return test::looking_down({kPlace.lat_deg, kPlace.lon_deg, kGroundM + 300.0}, kLens, 20.0); }
+  static scene::Camera camera() { return test::looking_down({kPlace.lat_deg, kPlace.lon_deg, kGroundM + 300.0}, kLens, 20.0); }
 
   // No pixel more opaque than one ghost (8-bit rounding of the two pictures aside).
   static void expect_single_blend(const test::WithAndWithout& images) {
@@ -67,7 +67,7 @@ class TrackJointsTest : public GlTest {
   // Every pixel on the centre line, sampled every 10 cm, holds exactly one ghost.
   static void expect_no_holes(const test::WithAndWithout& images, const LocalFrame& frame,
                               const std::vector<glm::dvec3>& path, const std::string& what) {
-    const Camera cam = camera();
+    const scene::Camera cam = camera();
     int holes = 0;
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       const double length = glm::length(path[i + 1] - path[i]);

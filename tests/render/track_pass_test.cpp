@@ -3,7 +3,7 @@
 // colour by value, and inputs that must neither crash nor vanish (empty, single points, 100k
 // points, 200 tracks). Pixels are read as the red track's alpha over the grey neutral ground
 // (track_test_support.hpp).
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/colormap.hpp"
+#include "scene/colormap.hpp"
 #include "render/scene_renderer.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -34,8 +34,8 @@ using test::polyline;
 using test::render_both;
 using test::track_alpha;
 
-constexpr GeoPosition kPlace{46.5, 10.0, 0.0};
-const Lens kLens{30.0, 320, 240};
+constexpr scene::GeoPosition kPlace{46.5, 10.0, 0.0};
+const scene::Lens kLens{30.0, 320, 240};
 
 // The silhouette width (pixels) of a tube of radius r whose axis is parallel to the image plane
 // at distance d: its outline lines sit at r sqrt(1 - r^2/d^2) from the axis, d - r^2/d deep.
@@ -85,7 +85,7 @@ class TrackPassTest : public GlTest {};
 TEST_F(TrackPassTest, AMetreWideTubeIsTwoRFOverDPixelsWide) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   const TrackBuffer buffer(test::geometry_of({polyline(frame, {{-150, 0, 800}, {150, 0, 800}})}));
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
@@ -112,7 +112,7 @@ TEST_F(TrackPassTest, APixelWideTubeKeepsItsWidthAtAnyDistance) {
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(9.0, TrackWidth::Unit::pixels);
   for (const double distance : {200.0, 5000.0}) {
-    const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 800.0 + distance}, kLens, distance / 20.0);
+    const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 800.0 + distance}, kLens, distance / 20.0);
     const auto images = render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
     keep_image(images.with, "track_width_9px_" + std::to_string(static_cast<int>(distance)) + "m.png");
     for (std::uint32_t x = 10; x < kLens.width_px - 10; x += 15)
@@ -133,7 +133,7 @@ TEST_F(TrackPassTest, ALongSegmentHasStraightEdges) {
   const TrackBuffer many(test::geometry_of({polyline(frame, cut)}));
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(9.0, TrackWidth::Unit::pixels);
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 5800.0}, kLens, 250.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 5800.0}, kLens, 250.0);
   for (const TrackBuffer* buffer : {&many, &one}) {
     const std::string what = buffer == &one ? "one 8 km segment" : "80 segments of 100 m";
     const auto images = render_both(renderer, camera, options, {{buffer, kTrackRed, false}});
@@ -156,7 +156,7 @@ TEST_F(TrackPassTest, ADistantThinTubeKeepsTheMinimumWidthWithoutGaps) {
   const double c = std::cos(M_PI / 6.0), s = std::sin(M_PI / 6.0);
   const TrackBuffer buffer(
       test::geometry_of({polyline(frame, {{-5000 * c, -5000 * s, 10}, {5000 * c, 5000 * s, 10}})}));
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 20010.0}, kLens, 1000.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 20010.0}, kLens, 1000.0);
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(1.0, TrackWidth::Unit::metres);
   ASSERT_DOUBLE_EQ(options.track_settings.min_width_px, 1.5);
@@ -182,7 +182,7 @@ TEST_F(TrackPassTest, ADistantThinTubeKeepsTheMinimumWidthWithoutGaps) {
 TEST_F(TrackPassTest, ASegmentSeenEndOnIsARoundDiscOfItsNearEnd) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   const TrackBuffer buffer(test::geometry_of({polyline(frame, {{0, 0, 800}, {0, 0, 700}})}));
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
@@ -197,25 +197,25 @@ TEST_F(TrackPassTest, ASegmentSeenEndOnIsARoundDiscOfItsNearEnd) {
 TEST_F(TrackPassTest, ValuesPickTheirColormapColours) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   const std::vector<glm::dvec3> points{{-150, 0, 800}, {-110, 0, 800}, {-70, 0, 800}, {-40, 0, 800},
                                        {40, 0, 800},   {70, 0, 800},   {110, 0, 800}, {150, 0, 800}};
   const TrackBuffer valued(test::geometry_of({polyline(frame, points, {10, 10, 10, 10, 20, 20, 20, 20})}));
   const TrackBuffer plain(test::geometry_of({polyline(frame, points)}));
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
-  options.track_settings.colormap = Colormap::turbo;
+  options.track_settings.colormap = scene::Colormap::turbo;
   options.track_settings.value_min = 0.0f;
   options.track_settings.value_max = 20.0f;
   options.tracks = {{&valued, kTrackRed, true}};
-  const RgbaImage by_value = renderer.render(camera, options).image;
+  const scene::RgbaImage by_value = renderer.render(camera, options).image;
   keep_image(by_value, "track_by_value.png");
 
-  const glm::vec3 half = colormap_color(Colormap::turbo, 0.5f), full = colormap_color(Colormap::turbo, 1.0f);
+  const glm::vec3 half = scene::colormap_color(scene::Colormap::turbo, 0.5f), full = scene::colormap_color(scene::Colormap::turbo, 1.0f);
   ASSERT_GT(glm::length(half - full), 0.3f) << "the two colours must be told apart";
   for (const auto& [east, colour] : {std::pair{-60.0, half}, std::pair{60.0, full}}) {
     options.tracks = {{&plain, colour, false}};
-    const RgbaImage solid = renderer.render(camera, options).image;
+    const scene::RgbaImage solid = renderer.render(camera, options).image;
     std::uint32_t x = 0, y = 0;
     ASSERT_TRUE(pixel_of(camera, frame.point(east, 0, 800), x, y));
     // Across the tube's middle (lit alike in both pictures): the same colour.
@@ -230,10 +230,10 @@ TEST_F(TrackPassTest, ValuesPickTheirColormapColours) {
 // Nothing to draw: the picture is the picture without tracks.
 TEST_F(TrackPassTest, AnEmptyTrackDrawsNothing) {
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  TrackGeometry empty_segment;
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  scene::TrackGeometry empty_segment;
   empty_segment.segments.emplace_back();
-  const TrackBuffer none{TrackGeometry{}}, hollow(empty_segment);
+  const TrackBuffer none{scene::TrackGeometry{}}, hollow(empty_segment);
   EXPECT_EQ(none.point_count(), 0u);
   EXPECT_TRUE(hollow.segments().empty());
   const auto images = render_both(renderer, camera, plain_options(kPlace, 0.0),
@@ -245,7 +245,7 @@ TEST_F(TrackPassTest, AnEmptyTrackDrawsNothing) {
 TEST_F(TrackPassTest, OnePointAndTwoIdenticalPointsDrawASphere) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   SceneRenderOptions options = plain_options(kPlace, 0.0);
   options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
   const TrackBuffer one(test::geometry_of({polyline(frame, {{20, 10, 800}})}));
@@ -266,7 +266,7 @@ TEST_F(TrackPassTest, OnePointAndTwoIdenticalPointsDrawASphere) {
 TEST_F(TrackPassTest, AHundredThousandPointsDrawAWholeRing) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   constexpr int kPoints = 100000;
   constexpr double kRadius = 40.0;
   std::vector<glm::dvec3> ring;
@@ -296,7 +296,7 @@ TEST_F(TrackPassTest, AHundredThousandPointsDrawAWholeRing) {
 TEST_F(TrackPassTest, TwoHundredTracksAreAllDrawn) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
+  const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   std::vector<TrackBuffer> buffers;
   buffers.reserve(200);
   std::vector<TrackDraw> draws;
@@ -324,14 +324,14 @@ TEST_F(TrackPassTest, TwoHundredTracksAreAllDrawn) {
 // Bad input is refused with a message naming the segment and the point, before any drawing.
 TEST_F(TrackPassTest, ABufferRefusesMismatchedValuesAndNonFinitePoints) {
   const LocalFrame frame(kPlace);
-  TrackPolyline mismatched = polyline(frame, {{0, 0, 800}, {10, 0, 800}}, {1.0f});
+  scene::TrackPolyline mismatched = polyline(frame, {{0, 0, 800}, {10, 0, 800}}, {1.0f});
   try {
     const TrackBuffer buffer(test::geometry_of({mismatched}));
     FAIL() << "one value for two points was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("segment 0"), std::string::npos) << e.what();
   }
-  TrackPolyline broken = polyline(frame, {{0, 0, 800}, {10, 0, 800}});
+  scene::TrackPolyline broken = polyline(frame, {{0, 0, 800}, {10, 0, 800}});
   broken.points_ecef[1].y = std::nan("");
   try {
     const TrackBuffer buffer(test::geometry_of({polyline(frame, {{0, 0, 800}}), broken}));

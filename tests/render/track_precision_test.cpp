@@ -12,7 +12,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -25,7 +25,7 @@ using test::kTrackRed;
 using test::LocalFrame;
 using test::track_alpha;
 
-const Lens kLens{30.0, 320, 240};
+const scene::Lens kLens{30.0, 320, 240};
 constexpr double kTrackM = 800.0, kAboveM = 5.0, kStepM = 0.05;
 constexpr int kSteps = 20;
 
@@ -35,11 +35,11 @@ class TrackPrecisionTest : public GlTest {
   // camera steps east from -0.5 m: per step, the alpha-weighted mean column of the tube in the
   // middle rows, minus the column its axis projects to. A smooth pass keeps that difference
   // constant; rounding makes it wander.
-  static std::vector<double> centroid_errors(const LocalFrame& frame, const TrackGeometry& geometry,
+  static std::vector<double> centroid_errors(const LocalFrame& frame, const scene::TrackGeometry& geometry,
                                              const std::string& name) {
     SceneRenderer renderer({nullptr, nullptr});
     const TrackBuffer buffer(geometry);
-    GeoPosition place;
+    scene::GeoPosition place;
     GeographicLib::Geocentric::WGS84().Reverse(frame.origin.x, frame.origin.y, frame.origin.z, place.lat_deg,
                                                place.lon_deg, place.height_m);
     SceneRenderOptions options = test::plain_options(place, 0.0);
@@ -47,8 +47,8 @@ class TrackPrecisionTest : public GlTest {
     std::vector<double> errors;
     for (int step = 0; step <= kSteps; ++step) {
       const double east = -0.5 + kStepM * step;
-      const Camera camera(to_ecef(frame.point(east, 0.0, kTrackM + kAboveM)), 0.0, -90.0, kLens,
-                          DepthRange{0.5, 1.0e5});
+      const scene::Camera camera(scene::to_ecef(frame.point(east, 0.0, kTrackM + kAboveM)), 0.0, -90.0, kLens,
+                          scene::DepthRange{0.5, 1.0e5});
       const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
       if (step == 0) keep_image(images.with, name);
       double sum = 0.0, weighted = 0.0;
@@ -59,7 +59,7 @@ class TrackPrecisionTest : public GlTest {
           weighted += a * (x + 0.5);
         }
       EXPECT_GT(sum, 40 * 10.0) << "step " << step << ": the tube is missing";
-      const auto axis = camera.project(to_ecef(frame.point(0.0, 0.0, kTrackM)));
+      const auto axis = camera.project(scene::to_ecef(frame.point(0.0, 0.0, kTrackM)));
       if (sum <= 0.0 || !axis) return {};
       errors.push_back(weighted / sum - axis->x_px);
     }

@@ -15,7 +15,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
@@ -62,15 +62,15 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
 
   constexpr double kLat = 46.71, kTrackM = 1200.0, kWidthPx = 5.0;
   constexpr float kAlpha = 0.45f;
-  const Lens lens{50.0, 480, 270};
-  const auto made = camera_at({{46.685, 7.866, 1450.0}, 5.0, -4.0}, lens, 600.0);
+  const scene::Lens lens{50.0, 480, 270};
+  const auto made = scene::camera_at({{46.685, 7.866, 1450.0}, 5.0, -4.0}, lens, 600.0);
   ASSERT_TRUE(made.ok()) << made.error;
-  const Camera& camera = *made.value;
-  const glm::dvec3 eye = to_dvec3(camera.position());
+  const scene::Camera& camera = *made.value;
+  const glm::dvec3 eye = scene::to_dvec3(camera.position());
 
-  TrackGeometry geometry;
-  TrackPolyline line;
-  for (double lon = 7.840; lon <= 7.9101; lon += 0.001) line.points_ecef.push_back(to_dvec3(ecef_from({kLat, lon, kTrackM})));
+  scene::TrackGeometry geometry;
+  scene::TrackPolyline line;
+  for (double lon = 7.840; lon <= 7.9101; lon += 0.001) line.points_ecef.push_back(scene::to_dvec3(scene::ecef_from({kLat, lon, kTrackM})));
   geometry.segments.push_back(line);
   const TrackBuffer buffer(geometry);
   SceneRenderOptions options = test::plain_options({kLat, 7.87, 0.0}, 560.0);
@@ -86,7 +86,7 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
   const double pixel_angle = 2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px;
   std::vector<test::VisibilitySample> samples;
   for (double lon = 7.841; lon <= 7.909; lon += 0.000131) {
-    const glm::dvec3 centre = to_dvec3(ecef_from({kLat, lon, kTrackM}));
+    const glm::dvec3 centre = scene::to_dvec3(scene::ecef_from({kLat, lon, kTrackM}));
     const glm::dvec3 towards_eye = glm::normalize(eye - centre);
     const double radius = 0.5 * kWidthPx * pixel_angle * glm::length(eye - centre);
     test::VisibilitySample s{0, 0, terrain_hides(sampler, eye, centre + towards_eye * radius),

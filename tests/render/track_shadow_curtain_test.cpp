@@ -9,7 +9,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_pass.hpp"
+#include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -25,8 +25,8 @@ using test::pixel_of;
 using test::polyline;
 using test::track_alpha;
 
-constexpr GeoPosition kPlace{46.5, 10.0, 0.0};
-const Lens kLens{30.0, 320, 240};
+constexpr scene::GeoPosition kPlace{46.5, 10.0, 0.0};
+const scene::Lens kLens{30.0, 320, 240};
 
 class TrackShadowCurtainTest : public GlTest {};
 
@@ -36,7 +36,7 @@ class TrackShadowCurtainTest : public GlTest {};
 TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 50.0);
+  const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 50.0);
   const TrackBuffer buffer(test::geometry_of({polyline(frame, {{-300, 0, 50}, {300, 0, 50}})}));
   SceneRenderOptions options = test::plain_options(kPlace, 0.0);
   options.sun_direction_ecef = test::sun_from(kPlace.lat_deg, kPlace.lon_deg, 180.0, 60.0);
@@ -48,12 +48,12 @@ TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
   keep_image(shadowed.image, "track_shadow.png");
   ASSERT_TRUE(shadowed.report.shadows_drawn);
   options.track_settings.cast_shadows = false;
-  const RgbaImage unshadowed = renderer.render(camera, options).image;
+  const scene::RgbaImage unshadowed = renderer.render(camera, options).image;
 
   const double shadow_north = 50.0 / std::tan(60.0 * M_PI / 180.0);
   for (const double east : {-50.0, 0.0, 50.0}) {
-    const auto lum = [&](const RgbaImage& image, double north) {
-      const auto p = camera.project(to_ecef(frame.point(east, north, 0.0)));
+    const auto lum = [&](const scene::RgbaImage& image, double north) {
+      const auto p = camera.project(scene::to_ecef(frame.point(east, north, 0.0)));
       return p ? mean_luminance(image, p->x_px, p->y_px, 1) : -1.0;
     };
     const double dark = lum(shadowed.image, shadow_north), light = lum(unshadowed, shadow_north);
@@ -71,8 +71,8 @@ TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
 TEST_F(TrackShadowCurtainTest, TheCurtainHangsFromTheTrackToTheGround) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const Camera camera(to_ecef(frame.point(0, -400, 150)), 0.0, -10.0, kLens, DepthRange{10.0, 1.0e5});
-  TrackPolyline line = polyline(frame, {{-100, 0, 100}, {-30, 0, 100}, {40, 0, 100}, {100, 0, 100}});
+  const scene::Camera camera(scene::to_ecef(frame.point(0, -400, 150)), 0.0, -10.0, kLens, scene::DepthRange{10.0, 1.0e5});
+  scene::TrackPolyline line = polyline(frame, {{-100, 0, 100}, {-30, 0, 100}, {40, 0, 100}, {100, 0, 100}});
   line.heights_above_ground_m = {100.0f, 100.0f, 100.0f, 100.0f};
   const TrackBuffer buffer(test::geometry_of({line}));
   ASSERT_TRUE(buffer.has_drops());

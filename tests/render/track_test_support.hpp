@@ -22,10 +22,10 @@
 #include <utility>
 #include <vector>
 
-#include "render/camera.hpp"
-#include "render/framebuffer_readback.hpp"
+#include "scene/camera.hpp"
+#include "render/gl/framebuffer_readback.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/track_buffer.hpp"
+#include "render/passes/track_buffer.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render::test {
@@ -35,10 +35,10 @@ inline constexpr glm::vec3 kTrackRed{1.0f, 0.0f, 0.0f};
 // An east-north-up frame at a geodetic position: points as metres east, north and up from it.
 struct LocalFrame {
   glm::dvec3 origin;
-  EnuAxes axes;
+  scene::EnuAxes axes;
 
-  explicit LocalFrame(const GeoPosition& at)
-      : origin(to_dvec3(ecef_from(at))), axes(enu_axes_at(at.lat_deg, at.lon_deg)) {}
+  explicit LocalFrame(const scene::GeoPosition& at)
+      : origin(scene::to_dvec3(scene::ecef_from(at))), axes(scene::enu_axes_at(at.lat_deg, at.lon_deg)) {}
   glm::dvec3 point(double east_m, double north_m, double up_m) const {
     return origin + east_m * axes.east + north_m * axes.north + up_m * axes.up;
   }
@@ -46,16 +46,16 @@ struct LocalFrame {
 };
 
 // A segment through the frame's points (east, north, up), optionally with values.
-inline TrackPolyline polyline(const LocalFrame& frame, const std::vector<glm::dvec3>& enu,
+inline scene::TrackPolyline polyline(const LocalFrame& frame, const std::vector<glm::dvec3>& enu,
                               std::vector<float> values = {}) {
-  TrackPolyline line;
+  scene::TrackPolyline line;
   for (const glm::dvec3& p : enu) line.points_ecef.push_back(frame.point(p));
   line.values = std::move(values);
   return line;
 }
 
-inline TrackGeometry geometry_of(std::initializer_list<TrackPolyline> segments) {
-  TrackGeometry g;
+inline scene::TrackGeometry geometry_of(std::initializer_list<scene::TrackPolyline> segments) {
+  scene::TrackGeometry g;
   g.segments.assign(segments.begin(), segments.end());
   return g;
 }
@@ -79,18 +79,18 @@ inline std::vector<glm::dvec3> turning_path(const glm::dvec3& start, double head
 }
 
 // The focal length in pixels: (height / 2) / tan(vfov / 2).
-inline double focal_length_px(const Lens& lens) {
+inline double focal_length_px(const scene::Lens& lens) {
   return 0.5 * lens.height_px / std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0);
 }
 
 // A camera at `at` looking straight down (north is up in the image for heading 0).
-inline Camera looking_down(const GeoPosition& at, const Lens& lens, double near_m = 1.0, double far_m = 1.0e5) {
-  return Camera(ecef_from(at), 0.0, -90.0, lens, DepthRange{near_m, far_m});
+inline scene::Camera looking_down(const scene::GeoPosition& at, const scene::Lens& lens, double near_m = 1.0, double far_m = 1.0e5) {
+  return scene::Camera(scene::ecef_from(at), 0.0, -90.0, lens, scene::DepthRange{near_m, far_m});
 }
 
 // Options for a geometric check over the flat neutral ground at `ground_m`: the sun high in the
 // south, no SSAO, no atmosphere (flat sky, no haze), no shadows.
-inline SceneRenderOptions plain_options(const GeoPosition& place, double ground_m) {
+inline SceneRenderOptions plain_options(const scene::GeoPosition& place, double ground_m) {
   SceneRenderOptions options;
   options.neutral_ground_height_m = ground_m;
   options.sun_direction_ecef = sun_from(place.lat_deg, place.lon_deg, 180.0, 60.0);
@@ -102,7 +102,7 @@ inline SceneRenderOptions plain_options(const GeoPosition& place, double ground_
 
 // The red track's alpha at a pixel (see the file comment): 1 - green / green without tracks,
 // from green and blue together. 0 where the background is too dark to tell.
-inline double track_alpha(const RgbaImage& with, const RgbaImage& without, std::uint32_t x, std::uint32_t y) {
+inline double track_alpha(const scene::RgbaImage& with, const scene::RgbaImage& without, std::uint32_t x, std::uint32_t y) {
   const auto p = with.pixel(x, y), q = without.pixel(x, y);
   const double base = static_cast<double>(q[1]) + q[2];
   if (base < 20.0) return 0.0;
@@ -110,22 +110,22 @@ inline double track_alpha(const RgbaImage& with, const RgbaImage& without, std::
 }
 
 // The alpha summed down one column (a tube crossing it: its width in pixels, fringe included).
-inline double column_alpha(const RgbaImage& with, const RgbaImage& without, std::uint32_t x) {
+inline double column_alpha(const scene::RgbaImage& with, const scene::RgbaImage& without, std::uint32_t x) {
   double sum = 0.0;
   for (std::uint32_t y = 0; y < with.height; ++y) sum += track_alpha(with, without, x, y);
   return sum;
 }
 
 // The alpha summed along one row.
-inline double row_alpha(const RgbaImage& with, const RgbaImage& without, std::uint32_t y) {
+inline double row_alpha(const scene::RgbaImage& with, const scene::RgbaImage& without, std::uint32_t y) {
   double sum = 0.0;
   for (std::uint32_t x = 0; x < with.width; ++x) sum += track_alpha(with, without, x, y);
   return sum;
 }
 
 // The pixel a point projects to, clamped into the image; false when behind the camera or off it.
-inline bool pixel_of(const Camera& camera, const glm::dvec3& ecef, std::uint32_t& x, std::uint32_t& y) {
-  const auto p = camera.project(to_ecef(ecef));
+inline bool pixel_of(const scene::Camera& camera, const glm::dvec3& ecef, std::uint32_t& x, std::uint32_t& y) {
+  const auto p = camera.project(scene::to_ecef(ecef));
   if (!p || p->x_px < 0.0 || p->y_px < 0.0 || p->x_px >= camera.lens().width_px || p->y_px >= camera.lens().height_px)
     return false;
   x = static_cast<std::uint32_t>(p->x_px);
@@ -135,9 +135,9 @@ inline bool pixel_of(const Camera& camera, const glm::dvec3& ecef, std::uint32_t
 
 // Renders the scene without tracks and with them (same options otherwise).
 struct WithAndWithout {
-  RgbaImage with, without;
+  scene::RgbaImage with, without;
 };
-inline WithAndWithout render_both(SceneRenderer& renderer, const Camera& camera, SceneRenderOptions options,
+inline WithAndWithout render_both(SceneRenderer& renderer, const scene::Camera& camera, SceneRenderOptions options,
                                   std::vector<TrackDraw> tracks) {
   WithAndWithout out;
   options.tracks.clear();

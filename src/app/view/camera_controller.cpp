@@ -13,17 +13,17 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRad = kPi / 180.0;
 
-render::GeoPosition geodetic(const glm::dvec3& p) {
-  render::GeoPosition g;
+scene::GeoPosition geodetic(const glm::dvec3& p) {
+  scene::GeoPosition g;
   GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, g.lat_deg, g.lon_deg, g.height_m);
   return g;
 }
 
-glm::dvec3 ecef(const render::GeoPosition& g) { return render::to_dvec3(render::ecef_from(g)); }
+glm::dvec3 ecef(const scene::GeoPosition& g) { return scene::to_dvec3(scene::ecef_from(g)); }
 
 // Heading and pitch (degrees) of a unit direction in the east-north-up frame at `at`.
-void angles_of(const glm::dvec3& direction, const render::GeoPosition& at, double& heading_deg, double& pitch_deg) {
-  const render::EnuAxes enu = render::enu_axes_at(at.lat_deg, at.lon_deg);
+void angles_of(const glm::dvec3& direction, const scene::GeoPosition& at, double& heading_deg, double& pitch_deg) {
+  const scene::EnuAxes enu = scene::enu_axes_at(at.lat_deg, at.lon_deg);
   const double east = glm::dot(direction, enu.east), north = glm::dot(direction, enu.north);
   pitch_deg = std::asin(std::clamp(glm::dot(direction, enu.up), -1.0, 1.0)) / kRad;
   if (std::hypot(east, north) > 1e-12) heading_deg = std::atan2(east, north) / kRad;
@@ -42,7 +42,7 @@ double heading_delta(double a, double b) {
 
 }  // namespace
 
-CameraController::CameraController(const render::LookAt& view, const render::Lens& lens, GroundFunction ground,
+CameraController::CameraController(const scene::LookAt& view, const scene::Lens& lens, GroundFunction ground,
                                    const CameraControls& controls)
     : view_(view), lens_(lens), ground_(std::move(ground)), controls_(controls) {
   view_.distance_m = std::clamp(view_.distance_m, controls_.min_distance_m, controls_.max_distance_m);
@@ -50,9 +50,9 @@ CameraController::CameraController(const render::LookAt& view, const render::Len
   keep_above_ground();
 }
 
-render::LookAt CameraController::look_at_from_camera(const render::Camera& camera, double ground_height_m,
+scene::LookAt CameraController::look_at_from_camera(const scene::Camera& camera, double ground_height_m,
                                                      double fallback_distance_m) {
-  const glm::dvec3 c = render::to_dvec3(camera.position());
+  const glm::dvec3 c = scene::to_dvec3(camera.position());
   const glm::dvec3 f = camera.axes().forward;
   // The ellipsoid raised by the ground height: x^2/A^2 + y^2/A^2 + z^2/B^2 = 1.
   const double h = std::isfinite(ground_height_m) ? ground_height_m : 0.0;
@@ -66,7 +66,7 @@ render::LookAt CameraController::look_at_from_camera(const render::Camera& camer
     const double near = (-qb - std::sqrt(disc)) / (2.0 * qa);
     if (near > 0.0) t = near;
   }
-  render::LookAt look;
+  scene::LookAt look;
   look.target = geodetic(c + t * f);
   look.distance_m = t;
   angles_of(f, look.target, look.heading_deg, look.pitch_deg);
@@ -83,29 +83,29 @@ double CameraController::ground_at(double lat_deg, double lon_deg) const {
   return ground_(lat_deg, lon_deg);
 }
 
-render::Camera CameraController::camera() const {
+scene::Camera CameraController::camera() const {
   double ground = ground_at(view_.target.lat_deg, view_.target.lon_deg);
   if (std::isnan(ground)) ground = view_.target.height_m;
-  auto made = render::camera_looking_at(view_, lens_, ground);
+  auto made = scene::camera_looking_at(view_, lens_, ground);
   if (!made.ok()) throw std::logic_error("viewer camera: " + made.error);
   return std::move(*made.value);
 }
 
-std::optional<render::GeoPosition> CameraController::ground_point_at(double x_px, double y_px) const {
-  const render::Camera cam = camera();
-  const render::Ray ray = cam.ray_through_pixel(x_px, y_px);
-  const glm::dvec3 o = render::to_dvec3(ray.origin);
+std::optional<scene::GeoPosition> CameraController::ground_point_at(double x_px, double y_px) const {
+  const scene::Camera cam = camera();
+  const scene::Ray ray = cam.ray_through_pixel(x_px, y_px);
+  const glm::dvec3 o = scene::to_dvec3(ray.origin);
   // Height above the ground along the ray (the pivot's height where the ground is unknown).
-  const auto above = [&](double t, render::GeoPosition& at) {
+  const auto above = [&](double t, scene::GeoPosition& at) {
     at = geodetic(o + t * ray.direction);
     double g = ground_at(at.lat_deg, at.lon_deg);
     if (std::isnan(g)) g = view_.target.height_m;
     return at.height_m - g;
   };
-  render::GeoPosition at;
+  scene::GeoPosition at;
   if (above(0.0, at) <= 0.0) return std::nullopt;  // the camera is in the ground
   // March out in growing steps until the ray is below the ground, then bisect.
-  const double limit = 20.0 * view_.distance_m + 2.0 * render::horizon_distance_m(cam.geodetic().height_m) + 1000.0;
+  const double limit = 20.0 * view_.distance_m + 2.0 * scene::horizon_distance_m(cam.geodetic().height_m) + 1000.0;
   double previous = 0.0;
   for (double t = std::max(0.5, view_.distance_m * 0.002); t < limit; t *= 1.08) {
     if (above(t, at) <= 0.0) {
@@ -138,14 +138,14 @@ void CameraController::pan(double from_x_px, double from_y_px, double to_x_px, d
   const auto from = ground_point_at(from_x_px, from_y_px);
   if (!from) return;
   // The point under `to` on the height of the point grabbed: a horizontal plane through it.
-  const render::Camera cam = camera();
-  const render::Ray ray = cam.ray_through_pixel(to_x_px, to_y_px);
+  const scene::Camera cam = camera();
+  const scene::Ray ray = cam.ray_through_pixel(to_x_px, to_y_px);
   const glm::dvec3 a = ecef(*from);
-  const glm::dvec3 up = render::enu_axes_at(from->lat_deg, from->lon_deg).up;
+  const glm::dvec3 up = scene::enu_axes_at(from->lat_deg, from->lon_deg).up;
   const double along = glm::dot(ray.direction, up);
   if (along > -1e-6) return;  // the cursor is above the horizon of that plane
-  const double t = glm::dot(a - render::to_dvec3(ray.origin), up) / along;
-  const glm::dvec3 b = render::to_dvec3(ray.origin) + t * ray.direction;
+  const double t = glm::dot(a - scene::to_dvec3(ray.origin), up) / along;
+  const glm::dvec3 b = scene::to_dvec3(ray.origin) + t * ray.direction;
   // Move everything by a - b: the grabbed point is then seen where b was, under the cursor.
   const double height = view_.target.height_m;
   view_.target = geodetic(ecef(view_.target) + (a - b));
@@ -178,7 +178,7 @@ void CameraController::tilt(double degrees) {
 
 void CameraController::move(double right, double forward) {
   flight_.reset();
-  const render::EnuAxes enu = render::enu_axes_at(view_.target.lat_deg, view_.target.lon_deg);
+  const scene::EnuAxes enu = scene::enu_axes_at(view_.target.lat_deg, view_.target.lon_deg);
   const double h = view_.heading_deg * kRad;
   const glm::dvec3 ahead = std::cos(h) * enu.north + std::sin(h) * enu.east;
   const glm::dvec3 side = std::cos(h) * enu.east - std::sin(h) * enu.north;
@@ -189,7 +189,7 @@ void CameraController::move(double right, double forward) {
   keep_above_ground();
 }
 
-void CameraController::follow(const render::GeoPosition& pivot, std::optional<double> heading_deg) {
+void CameraController::follow(const scene::GeoPosition& pivot, std::optional<double> heading_deg) {
   flight_.reset();
   view_.target = pivot;
   if (heading_deg && std::isfinite(*heading_deg)) view_.heading_deg = std::fmod(*heading_deg + 360.0, 360.0);
@@ -197,13 +197,13 @@ void CameraController::follow(const render::GeoPosition& pivot, std::optional<do
 }
 
 void CameraController::reset_north() {
-  render::LookAt north = view_;
+  scene::LookAt north = view_;
   north.heading_deg = 0.0;
   fly_to(north);
 }
 
-void CameraController::fly_to(const render::LookAt& target) {
-  render::LookAt to = target;
+void CameraController::fly_to(const scene::LookAt& target) {
+  scene::LookAt to = target;
   to.distance_m = std::clamp(to.distance_m, controls_.min_distance_m, controls_.max_distance_m);
   to.pitch_deg = std::clamp(to.pitch_deg, controls_.min_pitch_deg, controls_.max_pitch_deg);
   flight_ = Flight{view_, to, 0.0};
@@ -215,8 +215,8 @@ void CameraController::update(double seconds) {
   flight_->elapsed_s += std::max(0.0, seconds);
   const double t = controls_.fly_seconds > 0.0 ? std::min(1.0, flight_->elapsed_s / controls_.fly_seconds) : 1.0;
   const double e = smoothstep(t);
-  const render::LookAt& a = flight_->from;
-  const render::LookAt& b = flight_->to;
+  const scene::LookAt& a = flight_->from;
+  const scene::LookAt& b = flight_->to;
   view_.target.lat_deg = a.target.lat_deg + e * (b.target.lat_deg - a.target.lat_deg);
   view_.target.lon_deg = a.target.lon_deg + e * heading_delta(a.target.lon_deg, b.target.lon_deg);
   if (view_.target.lon_deg > 180.0) view_.target.lon_deg -= 360.0;
@@ -240,10 +240,10 @@ void CameraController::keep_above_ground() {
   // pivot), then step back. Bounded: the clamps end it.
   for (int i = 0; i < 200; ++i) {
     const glm::dvec3 target = ecef(view_.target);
-    const render::EnuAxes enu = render::enu_axes_at(view_.target.lat_deg, view_.target.lon_deg);
+    const scene::EnuAxes enu = scene::enu_axes_at(view_.target.lat_deg, view_.target.lon_deg);
     const double h = view_.heading_deg * kRad, p = view_.pitch_deg * kRad;
     const glm::dvec3 forward = std::cos(p) * (std::cos(h) * enu.north + std::sin(h) * enu.east) + std::sin(p) * enu.up;
-    const render::GeoPosition at = geodetic(target - view_.distance_m * forward);
+    const scene::GeoPosition at = geodetic(target - view_.distance_m * forward);
     double g = ground_at(at.lat_deg, at.lon_deg);
     if (std::isnan(g)) g = view_.target.height_m;  // unknown ground: the pivot's height
     if (at.height_m >= g + controls_.clearance_m) return;

@@ -1,6 +1,6 @@
 #pragma once
 // The viewer's camera as a person moves it: a pivot on the ground, and the camera at a distance
-// from it with a heading and pitch (render::LookAt). Mouse and keyboard gestures change those:
+// from it with a heading and pitch (scene::LookAt). Mouse and keyboard gestures change those:
 //
 //   orbit   left drag: heading and pitch around the pivot
 //   pan     right drag: the ground point under the cursor follows the cursor
@@ -17,7 +17,7 @@
 #include <functional>
 #include <optional>
 
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::app::view {
 
@@ -36,20 +36,20 @@ struct CameraControls {
 
 class CameraController {
  public:
-  CameraController(const render::LookAt& view, const render::Lens& lens, GroundFunction ground = {},
+  CameraController(const scene::LookAt& view, const scene::Lens& lens, GroundFunction ground = {},
                    const CameraControls& controls = {});
 
   // The look-at that reproduces `camera`: the pivot where its centre ray meets the ground at
   // `ground_height_m` (the ellipsoid raised by it), else a point `fallback_distance_m` ahead.
-  static render::LookAt look_at_from_camera(const render::Camera& camera, double ground_height_m,
+  static scene::LookAt look_at_from_camera(const scene::Camera& camera, double ground_height_m,
                                             double fallback_distance_m = 1000.0);
 
-  const render::LookAt& view() const { return view_; }
-  const render::Lens& lens() const { return lens_; }
+  const scene::LookAt& view() const { return view_; }
+  const scene::Lens& lens() const { return lens_; }
   void set_image_size(std::uint32_t width_px, std::uint32_t height_px);
   void set_ground(GroundFunction ground) { ground_ = std::move(ground); }
   // The renderer's camera for the current view.
-  render::Camera camera() const;
+  scene::Camera camera() const;
 
   void orbit(double dx_px, double dy_px);
   void pan(double from_x_px, double from_y_px, double to_x_px, double to_y_px);
@@ -60,27 +60,27 @@ class CameraController {
   void move(double right, double forward);
   // Replay's camera follow: the pivot jumps to `pivot` (the marker) each frame; with a heading
   // (chase) the camera also turns to look along it, from behind.
-  void follow(const render::GeoPosition& pivot, std::optional<double> heading_deg = std::nullopt);
+  void follow(const scene::GeoPosition& pivot, std::optional<double> heading_deg = std::nullopt);
   void reset_north();  // an animated turn to heading 0
-  void fly_to(const render::LookAt& target);
+  void fly_to(const scene::LookAt& target);
   bool animating() const { return flight_.has_value(); }
   // Advances a flight by `seconds` of wall time.
   void update(double seconds);
   // Where the ray through pixel (x, y) first meets the ground (the ground function where it
   // knows the height, else the pivot's height); nullopt when the ray does not come down to it.
-  std::optional<render::GeoPosition> ground_point_at(double x_px, double y_px) const;
+  std::optional<scene::GeoPosition> ground_point_at(double x_px, double y_px) const;
 
  private:
   struct Flight {
-    render::LookAt from, to;
+    scene::LookAt from, to;
     double elapsed_s = 0.0;
   };
   double ground_at(double lat_deg, double lon_deg) const;  // the ground function, NaN-safe
   void keep_above_ground();
   void set_target_on_ground();  // the pivot's height from the ground function, where known
 
-  render::LookAt view_;
-  render::Lens lens_;
+  scene::LookAt view_;
+  scene::Lens lens_;
   GroundFunction ground_;
   CameraControls controls_;
   std::optional<Flight> flight_;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "render/colormap.hpp"
+#include "scene/colormap.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -54,8 +54,8 @@ struct OverlayLayout {
   float width = 0.0f, height = 0.0f;  // the whole window
 };
 
-OverlayLayout overlay_layout(const std::optional<render::ColorLegend>& legend,
-                             const std::vector<render::TrackKeyEntry>& key, float display_width,
+OverlayLayout overlay_layout(const std::optional<scene::ColorLegend>& legend,
+                             const std::vector<scene::TrackKeyEntry>& key, float display_width,
                              const OverlayText& text) {
   OverlayLayout l;
   l.line = text.size;
@@ -82,8 +82,8 @@ OverlayLayout overlay_layout(const std::optional<render::ColorLegend>& legend,
 
 }  // namespace
 
-render::PixelRect legend_overlay_rect(const std::optional<render::ColorLegend>& legend,
-                                      const std::vector<render::TrackKeyEntry>& key, float display_width,
+scene::PixelRect legend_overlay_rect(const std::optional<scene::ColorLegend>& legend,
+                                      const std::vector<scene::TrackKeyEntry>& key, float display_width,
                                       float display_height) {
   if (!legend && key.empty()) return {};
   const OverlayLayout l = overlay_layout(legend, key, display_width, overlay_text());
@@ -94,8 +94,8 @@ render::PixelRect legend_overlay_rect(const std::optional<render::ColorLegend>& 
           static_cast<int>(std::ceil(display_height - kMargin) - std::floor(top))};
 }
 
-void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
-                         const std::vector<render::TrackKeyEntry>& key) {
+void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
+                         const std::vector<scene::TrackKeyEntry>& key) {
   if (!legend && key.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const OverlayLayout l = overlay_layout(legend, key, display.x, overlay_text());
@@ -125,7 +125,7 @@ void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
     draw->AddRectFilled(corner, ImVec2(corner.x + l.legend_width, corner.y + l.legend_height), kPanel, 6.0f);
     draw->AddText(ImVec2(corner.x + kPadding, corner.y + kPadding), kText, legend->title.c_str());
     // The bar from the same table the track pass samples, a step per entry.
-    const render::ColormapTable& table = render::colormap_table(legend->map);
+    const scene::ColormapTable& table = scene::colormap_table(legend->map);
     const float bar_x = corner.x + kPadding, bar_y = corner.y + kPadding + 1.4f * line;
     for (std::size_t i = 0; i < table.size(); ++i) {
       const float x0 = bar_x + bar_width * static_cast<float>(i) / static_cast<float>(table.size());
@@ -137,7 +137,7 @@ void draw_legend_overlay(const std::optional<render::ColorLegend>& legend,
     draw->AddText(ImVec2(bar_x, label_y), kText, legend->min_label.c_str());
     const float max_width = ImGui::CalcTextSize(legend->max_label.c_str()).x;
     draw->AddText(ImVec2(bar_x + bar_width - max_width, label_y), kText, legend->max_label.c_str());
-    for (const render::LegendTick& tick : legend->ticks) {
+    for (const scene::LegendTick& tick : legend->ticks) {
       const float x = bar_x + bar_width * static_cast<float>(tick.position);
       draw->AddLine(ImVec2(x, bar_y), ImVec2(x, bar_y + bar_height), kText);
       const float w = ImGui::CalcTextSize(tick.label.c_str()).x;

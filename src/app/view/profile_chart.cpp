@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "render/colormap.hpp"
+#include "scene/colormap.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -128,10 +128,10 @@ glm::vec3 point_color(const ViewerTrack& t, const ViewerSettings& settings,
                       const std::optional<track::ValueRange>& range, std::size_t point) {
   if (settings.color_by == track::ColorMetric::solid || !t.by_value || !range) return t.color_srgb;
   const float v = point_value(t, point);
-  if (std::isnan(v)) return render::kMissingValueColorSrgb;
+  if (std::isnan(v)) return scene::kMissingValueColorSrgb;
   const double span = range->max - range->min;
   const double f = span > 0.0 ? (v - range->min) / span : 0.5;
-  return render::colormap_color(settings.colormap, static_cast<float>(f));
+  return scene::colormap_color(settings.colormap, static_cast<float>(f));
 }
 
 std::vector<std::string> statistics_lines(const track::Statistics& s) {

@@ -3,7 +3,7 @@
 // ProfilerTable: plain data, so the panel and its tests need no GL context).
 
 #include "app/view/viewer_model.hpp"
-#include "render/frame_profiler.hpp"
+#include "render/gl/frame_profiler.hpp"
 
 namespace trailray::app::view {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <exception>
 
-#include "render/colormap.hpp"
+#include "scene/colormap.hpp"
 
 namespace trailray::app::view {
 
@@ -41,7 +41,7 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
   }
   if (inputs.tracks_open > 0 && style.colors.empty())
     for (std::size_t i = 0; i < out.tracks.size(); ++i)
-      out.tracks[i].color_srgb = render::palette_color(inputs.tracks_open + i);
+      out.tracks[i].color_srgb = scene::palette_color(inputs.tracks_open + i);
   return out;
 }
 

@@ -6,13 +6,13 @@
 
 namespace trailray::app::view {
 
-std::optional<glm::dvec2> screen_position(const render::Camera& camera, const glm::dvec3& ecef) {
-  const auto p = camera.project(render::to_ecef(ecef));
+std::optional<glm::dvec2> screen_position(const scene::Camera& camera, const glm::dvec3& ecef) {
+  const auto p = camera.project(scene::to_ecef(ecef));
   if (!p) return std::nullopt;
   return glm::dvec2(p->x_px, p->y_px);
 }
 
-HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const render::Camera& camera, double x_px,
+HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const scene::Camera& camera, double x_px,
                             double y_px, double radius_px, std::optional<double> ground_depth_m) {
   // A point on the ground must not count as hidden by the ground it lies on: a few metres, and
   // a little more far away where the terrain mesh is coarser.
@@ -25,7 +25,7 @@ HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const render
   for (std::size_t t = 0; t < tracks.size(); ++t) {
     if (!tracks[t].visible) continue;
     for (std::size_t i = 0; i < tracks[t].ecef.size(); ++i) {
-      const auto p = camera.project(render::to_ecef(tracks[t].ecef[i]));
+      const auto p = camera.project(scene::to_ecef(tracks[t].ecef[i]));
       if (!p) continue;
       const double d = std::hypot(p->x_px - x_px, p->y_px - y_px);
       if (d > radius_px) continue;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/view/viewer_model.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::app::view {
 
@@ -22,11 +22,11 @@ inline constexpr double kPickRadiusPx = 8.0;
 // terrain under the cursor (nullopt: none, nothing is hidden); points behind it by more than a
 // small tolerance are taken only when no point in front is within the radius.
 // HoverState::track is -1 when there is none.
-HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const render::Camera& camera, double x_px,
+HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const scene::Camera& camera, double x_px,
                             double y_px, double radius_px = kPickRadiusPx,
                             std::optional<double> ground_depth_m = std::nullopt);
 
 // Where an ECEF point appears (pixel), nullopt behind the camera.
-std::optional<glm::dvec2> screen_position(const render::Camera& camera, const glm::dvec3& ecef);
+std::optional<glm::dvec2> screen_position(const scene::Camera& camera, const glm::dvec3& ecef);
 
 }  // namespace trailray::app::view

@@ -23,14 +23,14 @@
 #include "app/view/track_picking.hpp"
 #include "app/view/view_script.hpp"
 #include "app/view/viewer_overlay.hpp"
-#include "render/frame_profiler.hpp"
-#include "render/framebuffer_readback.hpp"
-#include "render/framing.hpp"
-#include "render/gl_api.hpp"
-#include "render/imgui_layer.hpp"
+#include "render/gl/frame_profiler.hpp"
+#include "render/gl/framebuffer_readback.hpp"
+#include "scene/framing.hpp"
+#include "render/gl/gl_api.hpp"
+#include "render/platform/imgui_layer.hpp"
 #include "render/scene_renderer.hpp"
-#include "render/sun_position.hpp"
-#include "render/window.hpp"
+#include "scene/sun_position.hpp"
+#include "render/platform/window.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -51,8 +51,8 @@ std::string frame_time_summary(const std::string& what, std::vector<double> ms) 
 
 // Where a framing may put the tracks: out of a corner, within an area of the window.
 struct FramingRoom {
-  render::KeptClearCorner keep_clear;
-  std::optional<render::ImageArea> area;
+  scene::KeptClearCorner keep_clear;
+  std::optional<scene::ImageArea> area;
 };
 
 class ViewerApp {
@@ -64,16 +64,16 @@ class ViewerApp {
   // One frame: input (unless scripted), scene, panels, overlays, swap. `wall_s` drives the
   // replay clock and the camera's flights.
   void frame(double wall_s, bool scripted);
-  void handle_mouse(const render::Camera& camera);
+  void handle_mouse(const scene::Camera& camera);
   void handle_keys(double wall_s);
   void take_dropped_files();
   void adopt(LoadedViewerTracks loaded);
   void sync_track_buffers();
   render::SceneRenderOptions scene_options() const;
   std::pair<TrackStyle, TrackScene> legend_inputs(const render::TrackSceneSettings& settings) const;
-  render::KeptClearCorner legend_corner(const render::Lens& lens) const;
-  FramingRoom framing_room(const render::Lens& lens) const;
-  void update_hover(double x_px, double y_px, const render::Camera& camera);
+  scene::KeptClearCorner legend_corner(const scene::Lens& lens) const;
+  FramingRoom framing_room(const scene::Lens& lens) const;
+  void update_hover(double x_px, double y_px, const scene::Camera& camera);
   void fly_to_track(int index);
   void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
   // `status`: say so in the window too (the P key; not scripted pictures).
@@ -118,7 +118,7 @@ CameraController first_view(const ViewerOptions& o, const TrackPoints& points, t
   if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
   if (points.points.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
-  const render::Camera camera = initial_camera(o.camera, o.lens, points, heights, room.keep_clear, room.area);
+  const scene::Camera camera = initial_camera(o.camera, o.lens, points, heights, room.keep_clear, room.area);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
   return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
 }
@@ -138,7 +138,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
       imgui_(window_),
       renderer_({sources_.heights.get(), sources_.imagery.get()}),
       profiler_(window_.capabilities(), 60),
-      controller_(render::LookAt{}, o.lens) {
+      controller_(scene::LookAt{}, o.lens) {
   if (o.verbose)
     for (const std::string& line : window_.describe()) fmt::print(stderr, "trailray: {}\n", line);
   // Tracks are read before the first frame (like `render`); later files load in the background.
@@ -187,7 +187,7 @@ void ViewerApp::sync_track_buffers() {
 render::SceneRenderOptions ViewerApp::scene_options() const {
   const ViewerSettings& s = model_.settings;
   render::SceneRenderOptions o;
-  o.sun_direction_ecef = render::sun_direction_ecef(sun_unix_time());
+  o.sun_direction_ecef = scene::sun_direction_ecef(sun_unix_time());
   o.neutral_ground_height_m = neutral_;
   o.ssao = s.ssao;
   o.shadows = s.shadows;
@@ -224,12 +224,12 @@ void ViewerApp::take_dropped_files() {
   }
 }
 
-void ViewerApp::update_hover(double x_px, double y_px, const render::Camera& camera) {
+void ViewerApp::update_hover(double x_px, double y_px, const scene::Camera& camera) {
   // The terrain under the cursor (from the tiles in memory): a track point behind it loses to
   // one in front.
   std::optional<double> ground_depth_m;
   if (const auto ground = controller_.ground_point_at(x_px, y_px))
-    if (const auto seen = camera.project(render::ecef_from(*ground))) ground_depth_m = seen->depth_m;
+    if (const auto seen = camera.project(scene::ecef_from(*ground))) ground_depth_m = seen->depth_m;
   const HoverState picked = pick_track_point(model_.tracks, camera, x_px, y_px, kPickRadiusPx, ground_depth_m);
   if (picked.track >= 0 || !model_.hover.from_chart) model_.hover = picked;
 }
@@ -237,20 +237,20 @@ void ViewerApp::update_hover(double x_px, double y_px, const render::Camera& cam
 void ViewerApp::fly_to_track(int index) {
   if (index < 0 || index >= static_cast<int>(model_.tracks.size())) return;
   const ViewerTrack& t = model_.tracks[static_cast<std::size_t>(index)];
-  std::vector<render::GeoPosition> points;
+  std::vector<scene::GeoPosition> points;
   points.reserve(t.ecef.size());
   for (const glm::dvec3& p : t.ecef) {
-    render::GeoPosition g;
+    scene::GeoPosition g;
     GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, g.lat_deg, g.lon_deg, g.height_m);
     points.push_back(g);
   }
-  render::FramingOptions framing;
+  scene::FramingOptions framing;
   framing.lens = controller_.lens();
   framing.preferred_heading_deg = controller_.view().heading_deg;
   const FramingRoom room = framing_room(framing.lens);
   framing.keep_clear = room.keep_clear;
   framing.area = room.area;
-  const auto framed = render::frame_points(points, framing);
+  const auto framed = scene::frame_points(points, framing);
   if (!framed.ok()) return;
   double ground =
       renderer_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
@@ -267,12 +267,12 @@ void ViewerApp::follow_replay() {
   const ViewerTrack& t = model_.tracks[static_cast<std::size_t>(clock.follow_track)];
   const TrackPosition p = position_at(t, clock.time());
   if (!p.valid) return;
-  render::GeoPosition at;
+  scene::GeoPosition at;
   GeographicLib::Geocentric::WGS84().Reverse(p.ecef.x, p.ecef.y, p.ecef.z, at.lat_deg, at.lon_deg, at.height_m);
   std::optional<double> heading;
   if (clock.follow == FollowMode::chase && p.point + 1 < t.ecef.size()) {
     // Look along the way the track goes from here (the segment the marker is on).
-    const render::EnuAxes enu = render::enu_axes_at(at.lat_deg, at.lon_deg);
+    const scene::EnuAxes enu = scene::enu_axes_at(at.lat_deg, at.lon_deg);
     const glm::dvec3 d = t.ecef[p.point + 1] - t.ecef[p.point];
     const double east = glm::dot(d, enu.east), north = glm::dot(d, enu.north);
     if (std::hypot(east, north) > 0.1) heading = std::atan2(east, north) * 180.0 / 3.14159265358979323846;
@@ -280,7 +280,7 @@ void ViewerApp::follow_replay() {
   controller_.follow(at, heading);
 }
 
-void ViewerApp::handle_mouse(const render::Camera& camera) {
+void ViewerApp::handle_mouse(const scene::Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
   if (imgui_.wants_mouse()) return;
   const double x = io.MousePos.x * io.DisplayFramebufferScale.x, y = io.MousePos.y * io.DisplayFramebufferScale.y;
@@ -288,7 +288,7 @@ void ViewerApp::handle_mouse(const render::Camera& camera) {
                          io.MouseDelta.y * io.DisplayFramebufferScale.y);
   if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     if (const auto ground = controller_.ground_point_at(x, y)) {
-      render::LookAt to = controller_.view();
+      scene::LookAt to = controller_.view();
       to.target = *ground;
       to.distance_m *= 0.5;
       controller_.fly_to(to);
@@ -352,7 +352,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   sync_track_buffers();
-  const render::Camera camera = controller_.camera();
+  const scene::Camera camera = controller_.camera();
   if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
 
   OverlayState overlay{
@@ -383,7 +383,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   imgui_.render();
   if (!window_grab_.empty() && width > 0 && height > 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    render::write_srgb_png(window_grab_, render::read_rgba8(0, 0, static_cast<int>(width), static_cast<int>(height)));
+    scene::write_srgb_png(window_grab_, render::read_rgba8(0, 0, static_cast<int>(width), static_cast<int>(height)));
     fmt::print(stderr, "trailray: wrote {} ({}x{}, the window)\n", window_grab_, width, height);
     window_grab_.clear();
   }
@@ -411,19 +411,19 @@ std::pair<TrackStyle, TrackScene> ViewerApp::legend_inputs(const render::TrackSc
 // The corner a framing keeps the tracks out of: the legend's, large enough for the legend window
 // (where it first appears, in the bottom-left corner) and for the legend of screenshots (drawn
 // there too), whichever is larger. Nothing when no legend is shown.
-render::KeptClearCorner ViewerApp::legend_corner(const render::Lens& lens) const {
+scene::KeptClearCorner ViewerApp::legend_corner(const scene::Lens& lens) const {
   if (!model_.settings.legend) return {};
   // The scene's colour settings (not scene_options(): the first view is framed before the tracks
   // have GPU buffers).
   const auto [style, legend_scene] = legend_inputs(track_scene_settings(model_.tracks, model_.settings));
-  const render::KeptClearCorner picture =
+  const scene::KeptClearCorner picture =
       legend_clearance(scene_legend_panel(lens.width_px, lens.height_px, style, legend_scene), lens.height_px);
   if (!panels_) return picture;  // `hide-panels`: no legend window
-  const render::KeptClearCorner window =
+  const scene::KeptClearCorner window =
       legend_clearance(legend_overlay_rect(color_legend_for(style, legend_scene), track_key_for(style, legend_scene),
                                            static_cast<float>(lens.width_px), static_cast<float>(lens.height_px)),
                        lens.height_px);
-  return {render::ImageCorner::bottom_left, std::max(picture.width_px, window.width_px),
+  return {scene::ImageCorner::bottom_left, std::max(picture.width_px, window.width_px),
           std::max(picture.height_px, window.height_px)};
 }
 
@@ -431,14 +431,14 @@ render::KeptClearCorner ViewerApp::legend_corner(const render::Lens& lens) const
 // panel column, below the menu, above the chart), clear of the replay panel's corner; the legend
 // window lies under the column, outside that area (if a wide key reaches into it, the area ends
 // above it). Without panels (`hide-panels`), the whole window clear of the legend.
-FramingRoom ViewerApp::framing_room(const render::Lens& lens) const {
-  const render::KeptClearCorner legend = legend_corner(lens);
+FramingRoom ViewerApp::framing_room(const scene::Lens& lens) const {
+  const scene::KeptClearCorner legend = legend_corner(lens);
   if (!panels_) return {legend, std::nullopt};
   const ViewerSettings& s = model_.settings;
   const auto w = static_cast<float>(lens.width_px), h = static_cast<float>(lens.height_px);
   const float menu = s.show_menu ? kPanelTitleBarHeight : 0.0f;
   const PanelLayout l = default_panel_layout(w, h, menu);
-  render::ImageArea area{0.0, menu, w, h};
+  scene::ImageArea area{0.0, menu, w, h};
   if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right();
   if (s.show_chart) area.bottom_px = l.chart.y;
   if (!legend.empty() && legend.width_px > area.left_px)
@@ -446,8 +446,8 @@ FramingRoom ViewerApp::framing_room(const render::Lens& lens) const {
   // A window too small for the panels and a view (the free part misses the window's centre,
   // which framing needs): frame on all of it.
   if (!(area.left_px < 0.5 * w && area.bottom_px > 0.5 * h)) return {legend, std::nullopt};
-  render::KeptClearCorner replay;
-  if (s.show_replay) replay = {render::ImageCorner::top_right, w - l.replay.x, l.replay.bottom()};
+  scene::KeptClearCorner replay;
+  if (s.show_replay) replay = {scene::ImageCorner::top_right, w - l.replay.x, l.replay.bottom()};
   return {replay, area};
 }
 
@@ -461,7 +461,7 @@ void ViewerApp::screenshot(const std::string& path, bool status) {
     warn(fmt::format("tiles still loading after {} s: the picture has what had arrived", options_.timeout_s));
   const auto [style, legend_scene] = legend_inputs(options.track_settings);
   draw_scene_legend(scene.image, style, legend_scene);
-  render::write_srgb_png(path, scene.image);
+  scene::write_srgb_png(path, scene.image);
   const std::string wrote = fmt::format("wrote {} ({}x{})", path, scene.image.width, scene.image.height);
   if (status) status_ = wrote;
   fmt::print(stderr, "trailray: {}\n", wrote);
@@ -509,7 +509,7 @@ void ViewerApp::run_script(const ViewScript& script) {
         break;
       }
       case Kind::print_marker: {
-        const render::Camera camera = controller_.camera();
+        const scene::Camera camera = controller_.camera();
         for (std::size_t i = 0; i < model_.tracks.size(); ++i) {
           const TrackPosition p = position_at(model_.tracks[i], model_.clock.time());
           const auto s = p.valid ? screen_position(camera, p.ecef) : std::nullopt;
@@ -521,7 +521,7 @@ void ViewerApp::run_script(const ViewScript& script) {
         break;
       }
       case Kind::print_camera: {
-        const render::LookAt& v = controller_.view();
+        const scene::LookAt& v = controller_.view();
         fmt::print("camera: pivot {:.6f},{:.6f},{:.1f} distance {:.1f} heading {:.2f} pitch {:.2f}\n", v.target.lat_deg,
                    v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
         break;

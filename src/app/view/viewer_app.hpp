@@ -14,7 +14,7 @@
 #include "app/scene_inputs.hpp"
 #include "app/terrain_options.hpp"
 #include "app/track_style_options.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "track/io/load.hpp"
 #include "track/metrics.hpp"
 
@@ -22,7 +22,7 @@ namespace trailray::app::view {
 
 struct ViewerOptions {
   std::vector<std::string> tracks;
-  render::Lens lens;  // the window's size and the field of view
+  scene::Lens lens;  // the window's size and the field of view
   CameraRequest camera;
   EffectArgs effects;
   TrackStyle style;

@@ -20,10 +20,10 @@
 
 #include "app/track_scene.hpp"
 #include "app/track_style_options.hpp"
-#include "render/colormap.hpp"
-#include "render/terrain_pass.hpp"
-#include "render/track_buffer.hpp"
-#include "render/track_pass.hpp"
+#include "scene/colormap.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "render/passes/track_buffer.hpp"
+#include "render/passes/track_pass.hpp"
 #include "terrain/tile_source.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
@@ -54,7 +54,7 @@ struct ViewerTrack {
   std::vector<glm::dvec3> ecef;        // where the point is drawn (points without elevation on the ground)
 
   // What the renderer draws: build_track_scene's geometry, values of settings.color_by.
-  render::TrackGeometry geometry;
+  scene::TrackGeometry geometry;
   std::size_t geometry_revision = 0;  // bumped when geometry changes: re-upload the TrackBuffer
 
   // Per-track appearance (track list panel).
@@ -136,7 +136,7 @@ struct ViewerSettings {
 
   // Tracks: one colour scale for all (the renderer and the legend have one).
   track::ColorMetric color_by = track::ColorMetric::solid;
-  render::Colormap colormap = render::Colormap::turbo;
+  scene::Colormap colormap = scene::Colormap::turbo;
   std::optional<track::ValueRange> range;  // nullopt: the robust automatic range of the visible tracks
   render::TrackWidth width;
   render::TrackOcclusion occlusion;

@@ -9,14 +9,14 @@
 #include <string>
 
 #include "app/view/viewer_model.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 #include "terrain/tile_loader.hpp"
 
 namespace trailray::app::view {
 
 struct OverlayState {
   const ViewerModel& model;
-  const render::Camera& camera;
+  const scene::Camera& camera;
   const terrain::LoadProgress& progress;
   const std::string& status;
   double heading_deg = 0.0;

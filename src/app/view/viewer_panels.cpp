@@ -62,7 +62,7 @@ void colour_scale_controls(ViewerModel& model) {
   static constexpr const char* kColormaps[] = {"turbo", "viridis", "magma", "cividis", "diverging"};
   int map = static_cast<int>(s.colormap);
   if (name_combo("colormap", map, std::vector<std::string>(std::begin(kColormaps), std::end(kColormaps))))
-    s.colormap = static_cast<render::Colormap>(map);
+    s.colormap = static_cast<scene::Colormap>(map);
   bool automatic = !s.range.has_value();
   if (ImGui::Checkbox("automatic range", &automatic)) {
     if (automatic)

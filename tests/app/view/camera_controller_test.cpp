@@ -10,10 +10,10 @@ namespace trailray::app::view {
 namespace {
 
 constexpr double kLat = 46.6, kLon = 8.0;
-const render::Lens kLens{45.0, 480, 270};
+const scene::Lens kLens{45.0, 480, 270};
 
-render::LookAt start_view() {
-  render::LookAt v;
+scene::LookAt start_view() {
+  scene::LookAt v;
   v.target = {kLat, kLon, 1000.0};
   v.distance_m = 3000.0;
   v.heading_deg = 30.0;
@@ -24,8 +24,8 @@ render::LookAt start_view() {
 double flat_ground(double, double) { return 1000.0; }
 
 // The pixel where `p` appears now.
-glm::dvec2 pixel_of(const CameraController& c, const render::GeoPosition& p) {
-  const auto s = c.camera().project(render::ecef_from(p));
+glm::dvec2 pixel_of(const CameraController& c, const scene::GeoPosition& p) {
+  const auto s = c.camera().project(scene::ecef_from(p));
   EXPECT_TRUE(s.has_value());
   return s ? glm::dvec2(s->x_px, s->y_px) : glm::dvec2(NAN);
 }
@@ -75,17 +75,17 @@ TEST(CameraController, PanningMovesTheGrabbedGroundPointWithTheCursor) {
 TEST(CameraController, TheCameraStaysAboveRisingGround) {
   // A wall 2500 m high west of the pivot's meridian, behind a camera looking east.
   const auto wall = [](double, double lon) { return lon < kLon - 0.01 ? 3500.0 : 1000.0; };
-  render::LookAt v = start_view();
+  scene::LookAt v = start_view();
   v.heading_deg = 90.0;
   v.pitch_deg = -5.0;
   v.distance_m = 4000.0;  // 4 km west of the pivot: inside the wall
   CameraController c(v, kLens, wall);
-  const render::GeoPosition at = c.camera().geodetic();
+  const scene::GeoPosition at = c.camera().geodetic();
   EXPECT_GE(at.height_m, wall(at.lat_deg, at.lon_deg) + 5.0 - 0.01);
   // Gestures that would push it into the ground are undone the same way.
   c.tilt(+30.0);
   c.orbit(0.0, -400.0);
-  const render::GeoPosition after = c.camera().geodetic();
+  const scene::GeoPosition after = c.camera().geodetic();
   EXPECT_GE(after.height_m, wall(after.lat_deg, after.lon_deg) + 5.0 - 0.01);
   // And without anything in the way the camera keeps what it is given.
   CameraController free(v, kLens, flat_ground);
@@ -94,7 +94,7 @@ TEST(CameraController, TheCameraStaysAboveRisingGround) {
 
 TEST(CameraController, AFlightEndsExactlyAtItsTargetAndPassesInBetween) {
   CameraController c(start_view(), kLens, flat_ground);
-  render::LookAt to = start_view();
+  scene::LookAt to = start_view();
   to.target = {kLat + 0.05, kLon + 0.05, 1000.0};
   to.distance_m = 800.0;
   to.heading_deg = 350.0;  // the short way round: through north, not back through 180
@@ -120,10 +120,10 @@ TEST(CameraController, ResetNorthTurnsTheHeadingToZero) {
 }
 
 TEST(CameraController, ALookAtRecoveredFromItsCameraIsTheSame) {
-  const render::LookAt v = start_view();
-  const auto camera = render::camera_looking_at(v, kLens, 1000.0);
+  const scene::LookAt v = start_view();
+  const auto camera = scene::camera_looking_at(v, kLens, 1000.0);
   ASSERT_TRUE(camera.ok());
-  const render::LookAt back = CameraController::look_at_from_camera(*camera.value, 1000.0);
+  const scene::LookAt back = CameraController::look_at_from_camera(*camera.value, 1000.0);
   EXPECT_NEAR(back.target.lat_deg, v.target.lat_deg, 1e-7);
   EXPECT_NEAR(back.target.lon_deg, v.target.lon_deg, 1e-7);
   EXPECT_NEAR(back.distance_m, v.distance_m, 0.01);
@@ -132,7 +132,7 @@ TEST(CameraController, ALookAtRecoveredFromItsCameraIsTheSame) {
 }
 
 TEST(CameraController, KeysMoveThePivotAlongTheHeading) {
-  render::LookAt v = start_view();
+  scene::LookAt v = start_view();
   v.heading_deg = 0.0;
   CameraController c(v, kLens, flat_ground);
   c.move(0.0, 0.1);  // forward: north, by a tenth of the distance
@@ -149,7 +149,7 @@ namespace {
 
 TEST(CameraController, FollowingMovesThePivotAndChaseTurnsTheHeading) {
   CameraController c(start_view(), kLens, flat_ground);
-  const render::GeoPosition marker{kLat + 0.01, kLon, 1500.0};
+  const scene::GeoPosition marker{kLat + 0.01, kLon, 1500.0};
   c.follow(marker);
   EXPECT_DOUBLE_EQ(c.view().target.lat_deg, kLat + 0.01);
   EXPECT_DOUBLE_EQ(c.view().target.height_m, 1500.0);

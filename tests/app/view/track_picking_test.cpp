@@ -5,24 +5,24 @@
 #include <vector>
 
 #include "app/view/track_picking.hpp"
-#include "render/camera.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::app::view {
 namespace {
 
 // A camera 2 km above Interlaken looking north and down 20 degrees, 640x360.
-render::Camera test_camera() {
-  render::Lens lens;
+scene::Camera test_camera() {
+  scene::Lens lens;
   lens.width_px = 640;
   lens.height_px = 360;
-  const geo::Ecef eye = render::ecef_from({46.68, 7.86, 2600.0});
-  return render::Camera(eye, 0.0, -20.0, lens, render::DepthRange{1.0, 1.0e6});
+  const geo::Ecef eye = scene::ecef_from({46.68, 7.86, 2600.0});
+  return scene::Camera(eye, 0.0, -20.0, lens, scene::DepthRange{1.0, 1.0e6});
 }
 
 // The point `distance_m` from the eye along the ray through pixel (x, y).
-glm::dvec3 along(const render::Camera& camera, double x, double y, double distance_m) {
-  const render::Ray ray = camera.ray_through_pixel(x, y);
-  return render::to_dvec3(ray.origin) + distance_m * ray.direction;
+glm::dvec3 along(const scene::Camera& camera, double x, double y, double distance_m) {
+  const scene::Ray ray = camera.ray_through_pixel(x, y);
+  return scene::to_dvec3(ray.origin) + distance_m * ray.direction;
 }
 
 ViewerTrack track_at(std::vector<glm::dvec3> points) {
@@ -32,7 +32,7 @@ ViewerTrack track_at(std::vector<glm::dvec3> points) {
 }
 
 TEST(TrackPicking, TheNearestPointWithinTheRadius) {
-  const render::Camera camera = test_camera();
+  const scene::Camera camera = test_camera();
   const std::vector<ViewerTrack> tracks = {
       track_at({along(camera, 300, 200, 3000.0), along(camera, 306, 200, 3000.0), along(camera, 100, 50, 3000.0)})};
   HoverState h = pick_track_point(tracks, camera, 304.0, 200.0);
@@ -43,7 +43,7 @@ TEST(TrackPicking, TheNearestPointWithinTheRadius) {
 }
 
 TEST(TrackPicking, HiddenTracksAreNotPicked) {
-  const render::Camera camera = test_camera();
+  const scene::Camera camera = test_camera();
   std::vector<ViewerTrack> tracks = {track_at({along(camera, 300, 200, 3000.0)}),
                                      track_at({along(camera, 303, 200, 2000.0)})};
   EXPECT_EQ(pick_track_point(tracks, camera, 303.0, 200.0).track, 1);
@@ -54,10 +54,10 @@ TEST(TrackPicking, HiddenTracksAreNotPicked) {
 // A track passes in front of a ridge (1500 m away) and again behind it (4000 m): with the cursor
 // exactly on the far pass and the near pass 5 px off, the near pass is what the user sees there.
 TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
-  const render::Camera camera = test_camera();
+  const scene::Camera camera = test_camera();
   const std::vector<ViewerTrack> tracks = {
       track_at({along(camera, 320, 180, 4000.0), along(camera, 325, 180, 1500.0)})};
-  const auto depth = [&](const glm::dvec3& p) { return camera.project(render::to_ecef(p))->depth_m; };
+  const auto depth = [&](const glm::dvec3& p) { return camera.project(scene::to_ecef(p))->depth_m; };
   const double ridge_depth = depth(along(camera, 320, 180, 2500.0));
 
   // Without terrain the nearest in pixels wins: the far pass.
@@ -75,10 +75,10 @@ TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
 
 // A point lying on the ground is not hidden by the ground it lies on.
 TEST(TrackPicking, APointOnTheGroundIsNotHiddenByIt) {
-  const render::Camera camera = test_camera();
+  const scene::Camera camera = test_camera();
   const std::vector<ViewerTrack> tracks = {
       track_at({along(camera, 320, 180, 5000.0), along(camera, 324, 180, 5002.0)})};
-  const double ground = camera.project(render::to_ecef(tracks[0].ecef[0]))->depth_m;
+  const double ground = camera.project(scene::to_ecef(tracks[0].ecef[0]))->depth_m;
   // Both count as visible: the nearer one in pixels wins (the one 2 m behind the ground is not
   // demoted).
   EXPECT_EQ(pick_track_point(tracks, camera, 323.0, 180.0, kPickRadiusPx, ground).point, 1u);

@@ -16,8 +16,8 @@
 #include "app/view/profile_chart.hpp"
 #include "app/view/profiler_table.hpp"
 #include "app/view/viewer_model.hpp"
-#include "render/colormap.hpp"
-#include "render/frame_profiler.hpp"
+#include "scene/colormap.hpp"
+#include "render/gl/frame_profiler.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {
@@ -92,10 +92,10 @@ TEST(ChartMapping, PointColourFollowsTheColourScale) {
   EXPECT_EQ(point_color(tracks[0], settings, std::nullopt, 5), tracks[0].color_srgb);
   apply_color_metric(tracks, track::ColorMetric::altitude);
   settings.color_by = track::ColorMetric::altitude;
-  settings.colormap = render::Colormap::viridis;
+  settings.colormap = scene::Colormap::viridis;
   const track::ValueRange range{1000.0, 1100.0};
-  EXPECT_EQ(point_color(tracks[0], settings, range, 0), render::colormap_color(render::Colormap::viridis, 0.0f));
-  EXPECT_EQ(point_color(tracks[0], settings, range, 100), render::colormap_color(render::Colormap::viridis, 1.0f));
+  EXPECT_EQ(point_color(tracks[0], settings, range, 0), scene::colormap_color(scene::Colormap::viridis, 0.0f));
+  EXPECT_EQ(point_color(tracks[0], settings, range, 100), scene::colormap_color(scene::Colormap::viridis, 1.0f));
   tracks[0].by_value = false;
   EXPECT_EQ(point_color(tracks[0], settings, range, 100), tracks[0].color_srgb);
 }
@@ -216,15 +216,15 @@ TEST_F(HeadlessImGui, HoveringTheChartSetsHoverAndDraggingSelectsARange) {
 // Where the viewer frames the tracks around the legend window: the rectangle it reports is the
 // window ImGui shows, for a colour bar and for a key.
 TEST_F(HeadlessImGui, LegendOverlayRectIsTheLegendWindow) {
-  const render::ColorLegend bar{"Vertical speed (m/s)", render::Colormap::diverging, "\u22123.2", "3.2", {}};
-  const std::vector<render::TrackKeyEntry> key{{"Morning flight", {1.0f, 0.0f, 0.0f}}, {"B", {0.0f, 0.0f, 1.0f}}};
+  const scene::ColorLegend bar{"Vertical speed (m/s)", scene::Colormap::diverging, "\u22123.2", "3.2", {}};
+  const std::vector<scene::TrackKeyEntry> key{{"Morning flight", {1.0f, 0.0f, 0.0f}}, {"B", {0.0f, 0.0f, 1.0f}}};
   for (const bool with_bar : {true, false}) {
     SCOPED_TRACE(with_bar ? "colour bar" : "key");
     ImGui::DestroyContext();
     SetUp();
-    const std::optional<render::ColorLegend> legend = with_bar ? std::optional(bar) : std::nullopt;
-    const std::vector<render::TrackKeyEntry> names = with_bar ? std::vector<render::TrackKeyEntry>{} : key;
-    const render::PixelRect rect = legend_overlay_rect(legend, names, 1280.0f, 720.0f);
+    const std::optional<scene::ColorLegend> legend = with_bar ? std::optional(bar) : std::nullopt;
+    const std::vector<scene::TrackKeyEntry> names = with_bar ? std::vector<scene::TrackKeyEntry>{} : key;
+    const scene::PixelRect rect = legend_overlay_rect(legend, names, 1280.0f, 720.0f);
     for (int i = 0; i < 3; ++i) {  // an auto-sized window takes its size over the first frames
       ImGui::NewFrame();
       draw_legend_overlay(legend, names);

@@ -1,0 +1,56 @@
+#pragma once
+// Screen-space ambient occlusion (shaders/ssao.frag, ssao_blur.frag) at full resolution: how much
+// of the sky each terrain pixel's surroundings hide, from the G-buffer's distances and normals,
+// then a depth-aware 4x4 blur. 1 = open, 0 = buried; the sky is 1. The compose pass multiplies
+// the sky light by it.
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/gl/gl_objects.hpp"
+#include "render/gl/shader_program.hpp"
+
+namespace trailray::render {
+
+inline constexpr int kSsaoSamples = 16;  // shaders/ssao.frag's kSamples
+
+// `count` points in the unit hemisphere around +z, spread by a golden-angle spiral, each at least
+// 10 degrees above the plane, with lengths growing from 0.1 to 1 (denser near the centre, where
+// the occluders that matter most are).
+std::vector<glm::vec3> hemisphere_kernel(int count);
+
+struct SsaoSettings {
+  // The hemisphere's radius as a fraction of the pixel's distance: the scale of the hollows that
+  // darken is the same at every distance (a few percent: valleys, not pebbles).
+  float radius_fraction = 0.08f;
+  // Occlusion counted this many times over (1 - intensity * buried fraction, at least 0): a few
+  // samples within a bounded radius see only the nearest part of what hides the sky, and a
+  // valley should read as clearly as in shaded relief.
+  float intensity = 1.5f;
+};
+
+class SsaoPass {
+ public:
+  // Compiles the shaders (the GL context must be current). Throws ShaderError.
+  SsaoPass();
+
+  // The blurred occlusion of the G-buffer's pixels (an R8 texture of its size, owned by the pass
+  // and valid until the next run). Leaves the framebuffer binding to the caller. Throws
+  // RenderError.
+  const Texture& run(const GBuffer& gbuffer, const scene::Camera& camera, const SsaoSettings& settings = {});
+
+ private:
+  void resize(int width, int height);
+
+  ShaderProgram occlusion_, blur_;
+  VertexArray fullscreen_;
+  std::vector<glm::vec3> kernel_;
+  int width_ = 0, height_ = 0;
+  Texture raw_, blurred_;
+  Framebuffer raw_target_, blurred_target_;
+};
+
+}  // namespace trailray::render

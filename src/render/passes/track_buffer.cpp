@@ -1,0 +1,165 @@
+#include "render/passes/track_buffer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "render/gl/render_error.hpp"
+
+namespace trailray::render {
+namespace {
+
+// Points without a value are stored as this (a NaN might not survive a shader compiler's fast
+// math): the shader tests `value < kMissingValueBelow`.
+constexpr float kMissingValue = -3.0e38f;
+
+int rows_for(std::size_t texels, int width) { return static_cast<int>((texels + width - 1) / width); }
+
+// The narrowest width (at most kMaxTextureWidth) that holds `texels` in as few rows as the widest
+// would: the last row is then nearly full (2049 points take 2 rows of 1025, not of 2048).
+int width_for(std::size_t texels) {
+  const auto max_width = static_cast<std::size_t>(TrackBuffer::kMaxTextureWidth);
+  const std::size_t rows = std::max<std::size_t>(1, (texels + max_width - 1) / max_width);
+  return static_cast<int>(std::max<std::size_t>(1, (texels + rows - 1) / rows));
+}
+
+// Uploads `texels` RGBA32F texels into a width x rows texture (padding the last row).
+Texture upload_rgba32f(std::vector<float>& texels, int width) {
+  const std::size_t count = texels.size() / 4;
+  const int rows = std::max(1, rows_for(count, width));
+  texels.resize(static_cast<std::size_t>(width) * rows * 4, 0.0f);
+  Texture texture = make_texture_2d(GL_RGBA32F, width, rows);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, rows, GL_RGBA, GL_FLOAT, texels.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return texture;
+}
+
+}  // namespace
+
+TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
+  for (std::size_t s = 0; s < geometry.segments.size(); ++s) {
+    const scene::TrackPolyline& line = geometry.segments[s];
+    const std::size_t n = line.points_ecef.size();
+    if (!line.values.empty() && line.values.size() != n)
+      throw std::invalid_argument("track segment " + std::to_string(s) + ": " + std::to_string(line.values.size()) +
+                                  " values for " + std::to_string(n) + " points");
+    if (!line.heights_above_ground_m.empty() && line.heights_above_ground_m.size() != n)
+      throw std::invalid_argument("track segment " + std::to_string(s) + ": " +
+                                  std::to_string(line.heights_above_ground_m.size()) + " heights above ground for " +
+                                  std::to_string(n) + " points");
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec3& p = line.points_ecef[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw std::invalid_argument("track segment " + std::to_string(s) + " point " + std::to_string(i) +
+                                    ": position is not a finite number");
+    }
+    if (n == 0) continue;
+    if (point_count_ + n > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 8))
+      throw RenderError("track: too many points for the GPU layout (" + std::to_string(point_count_ + n) + ")");
+    segments_.push_back({static_cast<std::int32_t>(point_count_), static_cast<std::int32_t>(n)});
+    point_count_ += n;
+    has_values_ = has_values_ || !line.values.empty();
+    has_drops_ = has_drops_ || !line.heights_above_ground_m.empty();
+  }
+
+  // Block origins, kept in double: each segment's points in blocks from its own first point
+  // (a gap between segments, however wide, costs no precision), blocks as large as the points'
+  // spread within them allows (see the header).
+  std::vector<glm::dvec3> all;
+  all.reserve(point_count_);
+  for (const scene::TrackPolyline& line : geometry.segments) all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
+  const auto blocks_reach = [&](std::int32_t size) {
+    for (const Range& range : segments_)
+      for (std::int32_t first = range.first; first < range.first + range.count; first += size)
+        for (std::int32_t i = first + 1; i < std::min(range.first + range.count, first + size); ++i)
+          if (glm::length(all[static_cast<std::size_t>(i)] - all[static_cast<std::size_t>(first)]) > kMaxBlockReachM)
+            return false;
+    return true;
+  };
+  while (block_shift_ > 0 && !blocks_reach(std::int32_t{1} << block_shift_)) --block_shift_;
+  const std::int32_t block_size = std::int32_t{1} << block_shift_;
+  for (Range& range : segments_) {
+    range.first_block = static_cast<std::int32_t>(block_origins_.size());
+    for (std::int32_t i = range.first; i < range.first + range.count; i += block_size)
+      block_origins_.push_back(all[static_cast<std::size_t>(i)]);
+  }
+
+  // Bounding sphere: the box's centre and the farthest point from it.
+  if (!all.empty()) {
+    glm::dvec3 lo = all.front(), hi = all.front();
+    for (const glm::dvec3& p : all) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    centre_ = 0.5 * (lo + hi);
+    for (const glm::dvec3& p : all) radius_ = std::max(radius_, glm::length(p - centre_));
+  }
+
+  texture_width_ = width_for(point_count_);
+  std::vector<float> texels;
+  texels.reserve(point_count_ * 4);
+  std::vector<float> drops;
+  if (has_drops_) drops.reserve(point_count_);
+  std::size_t segment = 0;
+  for (const scene::TrackPolyline& line : geometry.segments) {
+    if (line.points_ecef.empty()) continue;
+    const auto first_block = static_cast<std::size_t>(segments_[segment++].first_block);
+    for (std::size_t i = 0; i < line.points_ecef.size(); ++i) {
+      const glm::dvec3 offset = line.points_ecef[i] - block_origins_[first_block + (i >> block_shift_)];
+      const float value = line.values.empty() || std::isnan(line.values[i]) ? kMissingValue : line.values[i];
+      texels.insert(texels.end(),
+                    {static_cast<float>(offset.x), static_cast<float>(offset.y), static_cast<float>(offset.z), value});
+      if (has_drops_) {
+        const float drop = line.heights_above_ground_m.empty() ? 0.0f : line.heights_above_ground_m[i];
+        drops.push_back(std::isfinite(drop) ? std::max(drop, 0.0f) : 0.0f);
+      }
+    }
+  }
+  points_ = upload_rgba32f(texels, texture_width_);
+  if (has_drops_) {
+    const int rows = std::max(1, rows_for(drops.size(), texture_width_));
+    drops.resize(static_cast<std::size_t>(texture_width_) * rows, 0.0f);
+    drops_ = make_texture_2d(GL_R32F, texture_width_, rows);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_width_, rows, GL_RED, GL_FLOAT, drops.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  block_texture_width_ = width_for(block_origins_.size());
+  std::vector<float> zeros(std::max<std::size_t>(block_origins_.size(), 1) * 4, 0.0f);
+  blocks_ = upload_rgba32f(zeros, block_texture_width_);
+}
+
+std::size_t TrackBuffer::gpu_bytes() const {
+  const auto rows = [](std::size_t texels, int width) {
+    return static_cast<std::size_t>(std::max(1, rows_for(texels, width)));
+  };
+  std::size_t bytes = rows(point_count_, texture_width_) * texture_width_ * 16;
+  bytes += rows(block_origins_.size(), block_texture_width_) * block_texture_width_ * 16;
+  if (has_drops_) bytes += rows(point_count_, texture_width_) * texture_width_ * 4;
+  return bytes;
+}
+
+void TrackBuffer::set_eye(const glm::dvec3& eye_ecef) {
+  if (eye_set_ && eye_ == eye_ecef) return;
+  if (block_origins_.empty()) return;
+  eye_ = eye_ecef;
+  eye_set_ = true;
+  std::vector<float> texels;
+  texels.reserve(block_origins_.size() * 4);
+  for (const glm::dvec3& origin : block_origins_) {
+    const glm::dvec3 offset = origin - eye_ecef;  // in double, rounded once
+    texels.insert(texels.end(),
+                  {static_cast<float>(offset.x), static_cast<float>(offset.y), static_cast<float>(offset.z), 0.0f});
+  }
+  const int rows = std::max(1, rows_for(block_origins_.size(), block_texture_width_));
+  texels.resize(static_cast<std::size_t>(block_texture_width_) * rows * 4, 0.0f);
+  glBindTexture(GL_TEXTURE_2D, blocks_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, block_texture_width_, rows, GL_RGBA, GL_FLOAT, texels.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+}  // namespace trailray::render

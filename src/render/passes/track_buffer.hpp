@@ -1,0 +1,95 @@
+#pragma once
+// A track on the GPU (DESIGN.md "The frame", step 4): its points live only in textures, no
+// vertex buffer. The track pass builds each segment's quad from gl_VertexID and fetches the
+// points it needs.
+//
+// Layout, 16 bytes per point plus 1/16 byte per point of block origins (for recorded tracks):
+//   points    RGBA32F, 2D (at most kMaxTextureWidth wide, as narrow as keeps the row count): texel i is
+//             point i of the track (segments one after the other): xyz = float offset from the
+//             point's block origin (ECEF metres), w = the colour attribute (NaN: no value).
+//   blocks    RGBA32F, one texel per block (block_points() points of a segment): "block origin minus eye", rewritten
+//             each frame by set_eye() from the origins kept in double on the CPU. A point's
+//             camera-relative position is its offset plus its block's texel: no large number
+//             ever reaches the GPU, so a track 300 km from anything stays exact to the
+//             millimetre next to the camera (DESIGN.md precision rule).
+//   drops     R32F, optional (curtains): metres from the point down to the ground.
+// A texture wider than 2048 is not guaranteed by WebGL2; the 2D layout holds a million points
+// in 489 rows.
+//
+// Blocks: each segment's points are cut into blocks from the segment's own first point, so a
+// jump between segments (tracks of one file far apart) costs nothing. Block size:
+// kMaxBlockPoints (256), halved until every point lies within kMaxBlockReachM of its block's
+// origin (its first point), so that a float offset never loses more than about a millimetre. A
+// track recorded every second keeps 256; only sparse points within a segment (a straight 300 km
+// segment, a GPS jump) get small blocks, down to a block per point.
+//
+// Segments are never bridged: the pass draws each segment on its own, and the shader clamps the
+// neighbour lookups (x0, x3) to the segment, so nothing is read past a segment's points.
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "render/gl/gl_objects.hpp"
+#include "scene/track_geometry.hpp"
+
+namespace trailray::render {
+
+class TrackBuffer {
+ public:
+  static constexpr int kMaxTextureWidth = 2048;
+  static constexpr int kMaxBlockPoints = 256;
+  static constexpr double kMaxBlockReachM = 16000.0;  // float spacing there: 1 mm
+
+  struct Range {
+    std::int32_t first = 0;        // index of the segment's first point in the points texture
+    std::int32_t count = 0;        // its points (a segment of one point is a sphere)
+    std::int32_t first_block = 0;  // its first block in the blocks texture: point first + k is
+                                   // relative to block first_block + (k >> block_shift())
+  };
+
+  // Uploads (the GL context must be current). Throws std::invalid_argument when a segment's
+  // values or heights are neither empty nor one per point, or a point is not finite; RenderError
+  // when GL refuses the textures (more points than the largest texture holds).
+  explicit TrackBuffer(const scene::TrackGeometry& geometry);
+
+  std::size_t point_count() const { return point_count_; }
+  const std::vector<Range>& segments() const { return segments_; }
+  bool has_values() const { return has_values_; }
+  bool has_drops() const { return has_drops_; }
+  int block_points() const { return 1 << block_shift_; }
+  int block_shift() const { return block_shift_; }  // log2 of block_points(), for the shaders
+  int texture_width() const { return texture_width_; }
+  const Texture& points() const { return points_; }
+  const Texture& blocks() const { return blocks_; }
+  const Texture& drops() const { return drops_; }  // 0 without curtain heights
+
+  // The bytes of GPU memory the textures take (the figure the issue asks about).
+  std::size_t gpu_bytes() const;
+
+  // A sphere around every point (ECEF), for culling and the shadow cascades' may_hold.
+  glm::dvec3 bounding_centre_ecef() const { return centre_; }
+  double bounding_radius_m() const { return radius_; }
+
+  // Rewrites the block texture for an eye (the camera's position: the passes work in
+  // camera-relative ECEF). Cheap (a texel per block); a no-op when the eye is unchanged.
+  void set_eye(const glm::dvec3& eye_ecef);
+
+ private:
+  std::size_t point_count_ = 0;
+  std::vector<Range> segments_;
+  bool has_values_ = false, has_drops_ = false;
+  int texture_width_ = 1;
+  std::vector<glm::dvec3> block_origins_;
+  glm::dvec3 eye_{0.0};
+  bool eye_set_ = false;
+  glm::dvec3 centre_{0.0};
+  double radius_ = 0.0;
+  Texture points_, blocks_, drops_;
+  int block_texture_width_ = 1;
+  int block_shift_ = 8;
+};
+
+}  // namespace trailray::render

@@ -1,0 +1,141 @@
+#pragma once
+// The track pass (DESIGN.md "The frame", step 4; thesis §3.2, improved): every segment between
+// two consecutive points of a track is a capsule (a cylinder with round ends), drawn as one
+// camera-facing quad built from gl_VertexID (Groß and Gumhold's tight bounding quad) and ray
+// traced in the fragment shader, which writes the exact normal and gl_FragDepth from the hit.
+//
+// Joints: the planes through each joint (thesis eq. 3.7) split the overlap of consecutive
+// capsules; a hit is clipped by a plane only where the neighbouring capsule holds it, so a
+// sharp turn (up to a 180 degree reversal) or a repeated point never leaves a hole, and the
+// union of the capsules is drawn once per pixel (no double blending when translucent).
+//
+// Three draws per frame, each over every segment:
+//   visible  into the G-buffer (albedo, normal, distance, depth-tested against the terrain), so
+//            the sun, the shadows and SSAO light the tracks like the terrain;
+//            where the terrain passes through a tube (a track lying on the ground) it does not
+//            hide it: those hits are drawn here too, in front of the terrain (track_trace.glsl,
+//            terrain_inside_tube), from a copy of the terrain's distances and normals;
+//   overlay  into the overlay target (premultiplied RGBA8 + depth): hits behind the terrain as
+//            translucent "ghosts" (constant alpha down to fade_near_m behind the terrain, fading
+//            to 0 at fade_far_m), the anti-aliased silhouette fringe of visible tubes, and the
+//            curtains; blended over the composed frame once (blend_overlay);
+//   shadow   capsules ray traced along the sun's direction into the cascaded shadow maps: the
+//            tracks cast shadows on the terrain.
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "scene/camera.hpp"
+#include "scene/colormap.hpp"
+#include "render/passes/compose_pass.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/gl/gl_objects.hpp"
+#include "render/gl/shader_program.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "render/passes/track_buffer.hpp"
+
+namespace trailray::render {
+
+// The tube's diameter: metres (perspective) or pixels (constant on screen).
+struct TrackWidth {
+  enum class Unit { metres, pixels };
+  double value = 5.0;
+  Unit unit = Unit::pixels;
+};
+// "8m", "8 m", "6px", "6 px" (value > 0, finite). The error quotes the text and the forms.
+scene::Result<TrackWidth> parse_track_width(std::string_view text);
+
+struct TrackOcclusion {
+  bool enabled = true;        // false (`--occlusion off`): hidden parts are not drawn at all
+  float alpha = 0.45f;        // `--occluded-alpha`
+  float fade_near_m = 100.f;  // `--occlusion-fade NEAR:FAR`: constant alpha to NEAR metres behind
+  float fade_far_m = 1000.f;  // the terrain, fading to 0 at FAR
+};
+
+struct TrackDraw {
+  const TrackBuffer* buffer = nullptr;
+  glm::vec3 color_srgb{0.9f, 0.1f, 0.1f};  // the solid colour (when not by value)
+  bool by_value = false;                    // colour by the buffer's values through the scale
+};
+
+struct TrackSceneSettings {
+  TrackWidth width;
+  double min_width_px = 1.5;  // a distant tube never gets thinner than this (no dotted tracks)
+  TrackOcclusion occlusion;
+  bool curtain = false;       // `--curtain`: a translucent wall down to the ground
+  float curtain_alpha = 0.3f;
+  scene::Colormap colormap = scene::Colormap::turbo;
+  float value_min = 0.0f, value_max = 1.0f;  // the colour scale's range
+  bool cast_shadows = true;
+};
+
+// The overlay target: premultiplied sRGB-encoded colour and its own depth buffer, the size of
+// the frame.
+class TrackOverlayTarget {
+ public:
+  TrackOverlayTarget(int width, int height);  // throws RenderError
+  void bind_and_clear() const;                // colour (0,0,0,0), depth far, viewport
+  int width() const { return frame_.width(); }
+  int height() const { return frame_.height(); }
+  const Texture& color() const { return frame_.color(); }
+
+ private:
+  FrameTarget frame_;  // RGBA8 + 24-bit depth, like the composed frame
+};
+
+class TrackPass {
+ public:
+  TrackPass();  // compiles the programs (the GL context must be current); throws ShaderError
+
+  // Rewrites each buffer's block origins for the camera (call once per frame, before drawing).
+  static void prepare(std::span<const TrackDraw> tracks, const scene::Camera& camera);
+
+  // Into the G-buffer (as TerrainPass left it: the terrain's depth in the depth buffer, no
+  // tracks yet); binds it.
+  void draw_visible(const GBuffer& gbuffer, const scene::Camera& camera, std::span<const TrackDraw> tracks,
+                    const TrackSceneSettings& settings) const;
+
+  // Clears and fills `target`; reads the terrain distance from the G-buffer, which must not
+  // hold the tracks yet (call before draw_visible).
+  void draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
+                    const SceneLighting& lighting, std::span<const TrackDraw> tracks,
+                    const TrackSceneSettings& settings) const;
+
+  // Blends the overlay over the bound framebuffer (the composed frame).
+  void blend_overlay(const TrackOverlayTarget& target) const;
+
+  // Inside ShadowMaps::render's callback: the capsules as casters for one cascade.
+  // `light_view_projection` is the callback's camera-relative matrix, `towards_sun_ecef` a unit
+  // vector, `texel_m` the size of one of the cascade's texels (the quads' margin). The tubes
+  // keep the radius the camera sees them with, so shadow and tube agree.
+  void draw_shadow_casters(const std::array<float, 16>& light_view_projection, const glm::dvec3& towards_sun_ecef,
+                           double texel_m, const scene::Camera& camera, std::span<const TrackDraw> tracks,
+                           const TrackSceneSettings& settings) const;
+
+ private:
+  ShaderProgram visible_, overlay_, shadow_, curtain_, blend_;
+  VertexArray empty_;   // no attributes: everything comes from gl_VertexID
+  VertexArray quads_;   // no attributes either, but the shared quad index buffer
+  Buffer quad_indices_;
+  mutable Texture colormap_;  // 256x1 SRGB8_ALPHA8, remade when the map changes
+  mutable std::optional<scene::Colormap> colormap_loaded_;
+  void bind_colormap(scene::Colormap map, GLuint unit) const;
+  // The terrain's distance and normal, copied out of the G-buffer for draw_visible, which reads
+  // them while it writes the G-buffer (sampling an attached texture would be a feedback loop).
+  // Remade when the frame's size or distance encoding changes.
+  struct TerrainCopy {
+    Texture distance, normal;
+    Framebuffer source, target;  // reads the G-buffer's textures; draws into the copies
+    int width = 0, height = 0;
+    bool packed = false;
+  };
+  mutable TerrainCopy terrain_copy_;
+  void copy_terrain(const GBuffer& gbuffer) const;
+};
+
+}  // namespace trailray::render

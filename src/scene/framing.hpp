@@ -1,0 +1,74 @@
+#pragma once
+// Automatic framing: a camera that shows a set of points (the tracks) whole, from an oblique
+// angle, with the track spread across the image and terrain around it.
+//
+//   - heading: the camera looks along the points' short axis (the direction in which their
+//     horizontal extent is smallest), so the long axis lies across the screen; where the shape
+//     has no clear short axis (round, square, a single point), the preferred heading wins;
+//   - pitch: fixed, -45 degrees by default (an oblique view that shows relief and height);
+//   - distance: the smallest that keeps every point inside the image with the margin (found by
+//     bisection on the exact projection, earth curvature included), the points' image centred,
+//     and at least a minimum width of terrain in view;
+//   - an area of the image (where a viewer's panels leave the view free): the points are framed
+//     into it as into a whole image;
+//   - a corner kept clear (where a legend will be drawn over the picture): when the centred
+//     framing puts a point there, the points are moved out of it, centred in the band above (or
+//     below) it or beside it, or further away, whichever shows them largest; the heading and
+//     pitch stay, only the target moves (and the distance grows as little as it must).
+// Framing knows no terrain: where peaks rise between the camera and the track, the caller may
+// choose a steeper pitch.
+
+#include <limits>
+#include <optional>
+#include <span>
+
+#include "scene/camera.hpp"
+
+namespace trailray::scene {
+
+enum class ImageCorner { top_left, top_right, bottom_left, bottom_right };
+
+// A rectangle in a corner of the image, `width_px` x `height_px` from the corner, that no framed
+// point may project into (a legend's panel and the gap wanted around it). Either size 0: none.
+struct KeptClearCorner {
+  ImageCorner corner = ImageCorner::bottom_left;
+  double width_px = 0.0, height_px = 0.0;
+
+  bool empty() const { return !(width_px > 0.0) || !(height_px > 0.0); }
+};
+
+// A rectangle of the image in pixels (x right, y down from the top-left corner).
+struct ImageArea {
+  double left_px = 0.0, top_px = 0.0, right_px = 0.0, bottom_px = 0.0;
+};
+
+struct FramingOptions {
+  Lens lens;
+  double pitch_deg = -45.0;            // within [-90, -5]
+  double margin_fraction = 0.08;       // of the width (left, right) and height (top, bottom) kept free
+  double preferred_heading_deg = 0.0;  // among equally good headings, the one closest to this
+  double min_view_width_m = 2000.0;    // terrain width in view at the target, however small the track
+  // The terrain height under the points, for the depth range and for points without a height;
+  // NaN: the lowest point's height.
+  double ground_height_m = std::numeric_limits<double>::quiet_NaN();
+  // Where the points must not go. When they cannot be kept out of it (a corner nearly as large
+  // as the image), the framing is the one without it.
+  KeptClearCorner keep_clear;
+  // The part of the image the points are framed into, with the margin inside it (a viewer's
+  // panels cover the rest); nullopt: the whole image. It must lie within the image and hold its
+  // centre.
+  std::optional<ImageArea> area;
+};
+
+struct Framing {
+  LookAt look_at;  // target (the image's centre), distance, heading and pitch
+  Camera camera;
+};
+
+// A camera framing `points` (latitude and longitude in degrees, heights in metres; a point
+// without a height, NaN, is placed on the ground). Points whose latitude or longitude is not a
+// finite number within range are left out; an error when none is left or an option is out of
+// range.
+Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingOptions& options = {});
+
+}  // namespace trailray::scene
