@@ -1,0 +1,67 @@
+#pragma once
+// How a scene is drawn: the one struct the command line parses into (app/options) and the
+// viewer's panels edit, read by the renderer each frame. Plain values, no GL.
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "scene/colormap.hpp"
+#include "track/color_values.hpp"
+
+namespace trailray::scene {
+
+// A tube's diameter: metres (perspective) or pixels (constant on screen).
+struct TrackWidth {
+  enum class Unit { metres, pixels };
+  double value = 5.0;
+  Unit unit = Unit::pixels;
+};
+// "8m", "6px", "6" (pixels): an error message for anything else.
+Result<TrackWidth> parse_track_width(std::string_view text);
+
+// The parts of tracks the terrain hides: drawn translucent ("ghosts"), fading with depth.
+struct TrackOcclusion {
+  bool enabled = true;        // false (`--occlusion off`): hidden parts are not drawn at all
+  float alpha = 0.45f;        // `--occluded-alpha`
+  float fade_near_m = 100.f;  // `--occlusion-fade NEAR:FAR`: constant alpha to NEAR metres behind
+  float fade_far_m = 1000.f;  // the terrain, fading to 0 at FAR
+};
+
+struct TrackStyle {
+  TrackWidth width;
+  double min_width_px = 1.5;  // a distant tube never gets thinner than this (no dotted tracks)
+  TrackOcclusion occlusion;
+  bool curtain = false;  // `--curtain`: a translucent wall down to the ground
+  float curtain_alpha = 0.3f;
+  bool cast_shadows = true;
+  // Colour: by a per-point metric through a colormap over a range, else solid colours.
+  track::ColorMetric color_by = track::ColorMetric::solid;
+  Colormap colormap = Colormap::turbo;
+  std::optional<track::ValueRange> range;  // nullopt: the robust range of the visible tracks' values
+  std::vector<glm::vec3> colors;           // `--color`, sRGB: none (the palette), one for all, or one per track
+};
+
+// Snow by altitude and slope on the terrain.
+struct SnowCover {
+  bool enabled = false;
+  double snowline_m = 2500.0;
+};
+
+struct Shading {
+  bool shadows = true;     // cascaded shadow maps of the sun (`--no-shadows`)
+  bool ssao = true;        // screen-space ambient occlusion (`--no-ssao`)
+  bool atmosphere = true;  // aerial perspective and sky (`--no-atmosphere`: no haze, a flat sky)
+  SnowCover snow;          // `--snow`, `--snowline M`
+};
+
+struct Style {
+  TrackStyle tracks;
+  Shading shading;
+  bool legend = true;  // `--legend`: colour bar or key of track names
+};
+
+}  // namespace trailray::scene
