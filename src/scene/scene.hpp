@@ -1,0 +1,36 @@
+#pragma once
+// A scene: what the renderer draws from a camera (render::Renderer::draw). The terrain (a view
+// onto the height and imagery sources that hands out the tiles a camera needs), the tracks, the
+// style, the sun's time. Front ends (render, view, and later video and the browser) build one and
+// keep it; nothing in it touches GL.
+
+#include <limits>
+#include <optional>
+
+#include "scene/style.hpp"
+#include "scene/track_set.hpp"
+#include "track/color_values.hpp"
+
+namespace trailray::scene {
+
+class TerrainView;
+
+struct Scene {
+  // The terrain: nullptr draws the neutral ground everywhere. Not const: asking it for a camera's
+  // tiles requests the missing ones.
+  TerrainView* terrain = nullptr;
+  const TrackSet* tracks = nullptr;  // nullptr: no tracks
+  Style style;
+  // The colour scale in use (color_range(*tracks, style)); nullopt: solid colours.
+  std::optional<track::ValueRange> color_range;
+  double sun_time_unix_s = 0.0;  // where the sun stands (scene/sun_position.hpp)
+  // Where no source has terrain the neutral ground is drawn at this height; NaN: at the lowest
+  // terrain loaded for the view (0 where there is none).
+  double neutral_ground_m = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The colour scale: style.tracks.range, else the robust range over the values of the visible
+// tracks coloured by value (nullopt: solid, or no value anywhere).
+std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style& style);
+
+}  // namespace trailray::scene

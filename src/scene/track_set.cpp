@@ -1,0 +1,56 @@
+#include "scene/track_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace trailray::scene {
+
+const glm::dvec3& Track::ecef(std::size_t point) const {
+  const std::size_t line = segment_of(point);
+  if (line >= geometry.segments.size() || point < segment_first.at(line))
+    throw std::out_of_range("Track::ecef: no point " + std::to_string(point) + " in '" + name + "'");
+  return geometry.segments[line].points_ecef.at(point - segment_first[line]);
+}
+
+std::size_t Track::segment_of(std::size_t point) const {
+  const auto it = std::upper_bound(segment_first.begin(), segment_first.end(), point);
+  return it == segment_first.begin() ? 0 : static_cast<std::size_t>(it - segment_first.begin()) - 1;
+}
+
+std::optional<double> Track::start_time() const {
+  for (double t : time_unix_s)
+    if (!std::isnan(t)) return t;
+  return std::nullopt;
+}
+
+std::optional<double> Track::end_time() const {
+  for (auto it = time_unix_s.rbegin(); it != time_unix_s.rend(); ++it)
+    if (!std::isnan(*it)) return *it;
+  return std::nullopt;
+}
+
+std::size_t Track::points_with_value() const {
+  std::size_t n = 0;
+  for (const TrackPolyline& line : geometry.segments)
+    n += static_cast<std::size_t>(std::count_if(line.values.begin(), line.values.end(), [](float v) { return !std::isnan(v); }));
+  return n;
+}
+
+TrackId TrackSet::add(Track track) {
+  track.id = next_id_++;
+  tracks_.push_back(std::move(track));
+  return tracks_.back().id;
+}
+
+const Track* TrackSet::find(TrackId id) const {
+  for (const Track& t : tracks_)
+    if (t.id == id) return &t;
+  return nullptr;
+}
+
+Track* TrackSet::find(TrackId id) {
+  return const_cast<Track*>(static_cast<const TrackSet&>(*this).find(id));
+}
+
+}  // namespace trailray::scene

@@ -1,0 +1,94 @@
+#pragma once
+// The tracks of a scene, one model for every front end: each track (or route) of the files
+// opened, cleaned and measured once, with the per-point numbers the chart, tooltips and replay
+// read, and what the renderer draws (its ECEF polylines with colour values and curtain heights,
+// its colour, whether it is shown).
+//
+// A track has an id that stays the same while it is in its set, and a revision that changes
+// whenever what is drawn of it changes (colour values, curtain, geometry): the renderer keeps one
+// GPU buffer per (id, revision), so front ends never hold GPU objects.
+//
+// Points are numbered "flat": the points of a track's non-empty segments one after the other,
+// the order the geometry stores them in, so a point index means the same thing to the chart, the
+// 3D picking and the replay marker.
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/track_geometry.hpp"
+#include "track/color_values.hpp"
+#include "track/metrics.hpp"
+#include "track/model.hpp"
+#include "track/summary.hpp"
+
+namespace trailray::scene {
+
+using TrackId = std::uint64_t;
+
+struct Track {
+  TrackId id = 0;
+  std::uint64_t revision = 0;  // bump_revision() after changing what is drawn
+  std::string name;            // the track's (or route's) name, else the file's name and its number
+  std::string source;          // the file it came from
+
+  track::Track cleaned;         // after clean_track: what is drawn and measured
+  track::TrackMetrics metrics;  // compute_metrics(cleaned)
+  track::TrackSummary summary;  // raw and clean statistics, as `trailray stats` prints them
+
+  // Per flat point (NaN where a point has no such value).
+  std::vector<std::size_t> segment_first;  // flat index of each non-empty segment's first point
+  std::vector<double> distance_m;          // cumulative 2D distance from the start (gaps add nothing)
+  std::vector<double> time_unix_s;         // timestamp
+  std::vector<double> elapsed_s;           // since the track's first timestamp
+  std::vector<double> altitude_m;          // recorded elevation
+  std::vector<double> ground_m;            // terrain height below (NaN: no terrain, or not sampled yet)
+  std::vector<double> speed_kmh;           // windowed horizontal speed
+  std::vector<double> vspeed_ms;           // windowed vertical speed, positive climbing
+  std::vector<double> heart_rate_bpm;      // recorded
+
+  // What is drawn: one polyline per non-empty segment, points in ECEF (points without an
+  // elevation on the ground), the colour values of the style's metric, curtain heights.
+  TrackGeometry geometry;
+  bool visible = true;
+  glm::vec3 color_srgb{1.0f, 0.0f, 0.0f};
+  bool by_value = true;  // coloured by the style's metric (when it is not solid), else color_srgb
+
+  std::size_t point_count() const { return distance_m.size(); }
+  // Where flat point `point` is drawn (ECEF).
+  const glm::dvec3& ecef(std::size_t point) const;
+  // The segment holding a flat point index.
+  std::size_t segment_of(std::size_t point) const;
+  // The first and last timestamp (nullopt: no timed point).
+  std::optional<double> start_time() const;
+  std::optional<double> end_time() const;
+  // Points with a colour value.
+  std::size_t points_with_value() const;
+  void bump_revision() { ++revision; }
+};
+
+class TrackSet {
+ public:
+  // Adds a track and gives it a new id (returned).
+  TrackId add(Track track);
+  // nullptr when no track has that id.
+  const Track* find(TrackId id) const;
+  Track* find(TrackId id);
+
+  std::vector<Track>& tracks() { return tracks_; }
+  const std::vector<Track>& tracks() const { return tracks_; }
+  std::size_t size() const { return tracks_.size(); }
+  bool empty() const { return tracks_.empty(); }
+  Track& operator[](std::size_t i) { return tracks_[i]; }
+  const Track& operator[](std::size_t i) const { return tracks_[i]; }
+
+ private:
+  std::vector<Track> tracks_;
+  TrackId next_id_ = 1;
+};
+
+}  // namespace trailray::scene
