@@ -1,6 +1,6 @@
 #pragma once
 // A streaming XML reader for the GPX and TCX readers (a scanner of our own, see
-// xml_stream.cpp for why): memory stays bounded by the largest single piece of markup, not the
+// xml_scanner.cpp for why): memory stays bounded by the largest single piece of markup, not the
 // file, and every event knows its line and column. Input may be UTF-8, UTF-16, ISO-8859-1/15 or
 // Windows-1252 (xml_encoding.hpp); handlers always see UTF-8.
 //
