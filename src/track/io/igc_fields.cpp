@@ -1,0 +1,145 @@
+// IGC field readers (igc_fields.hpp).
+
+#include "track/io/igc_fields.hpp"
+
+#include <array>
+#include <utility>
+
+#include "track/io/parse_util.hpp"
+
+namespace trailray::track::detail {
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Structurally valid UTF-8 (lead and continuation bytes; overlong 3/4-byte forms not checked).
+bool valid_utf8(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    if (c < 0x80)
+      n = 0;
+    else if (c >= 0xc2 && c <= 0xdf)
+      n = 1;
+    else if (c >= 0xe0 && c <= 0xef)
+      n = 2;
+    else if (c >= 0xf0 && c <= 0xf4)
+      n = 3;
+    else
+      return false;
+    if (n > s.size() - i - 1) return false;
+    for (std::size_t k = 1; k <= n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
+    i += n + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool is_alnum(char c) { return is_digit(c) || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+bool read_digits(std::string_view s, std::size_t pos, std::size_t n, std::int64_t& out) {
+  if (pos > s.size() || n > s.size() - pos) return false;
+  std::int64_t v = 0;
+  for (std::size_t i = pos; i < pos + n; ++i) {
+    if (!is_digit(s[i])) return false;
+    v = v * 10 + (s[i] - '0');
+  }
+  out = v;
+  return true;
+}
+
+bool read_altitude(std::string_view s, std::size_t pos, std::int64_t& out) {
+  if (pos + 5 > s.size()) return false;
+  if (s[pos] == '-') {
+    std::int64_t v = 0;
+    if (!read_digits(s, pos + 1, 4, v)) return false;
+    out = -v;
+    return true;
+  }
+  return read_digits(s, pos, 5, out);
+}
+
+bool numeric_extension(std::string_view v) {
+  std::size_t i = 0;
+  while (i < v.size() && v[i] == ' ') ++i;
+  if (i < v.size() && (v[i] == '-' || v[i] == '+')) ++i;
+  if (i == v.size()) return false;
+  for (; i < v.size(); ++i)
+    if (!is_digit(v[i])) return false;
+  return true;
+}
+
+std::string excerpt(std::string_view s) {
+  std::string out(s.substr(0, 40));
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  if (s.size() > 40) out += "...";
+  return out;
+}
+
+std::string header_text(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  const bool utf8 = valid_utf8(s);
+  for (char ch : s) {
+    auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f) {
+      out.push_back(' ');
+    } else if (c < 0x80 || utf8) {
+      out.push_back(ch);
+    } else {
+      out.push_back(static_cast<char>(0xc0 | (c >> 6)));
+      out.push_back(static_cast<char>(0x80 | (c & 0x3f)));
+    }
+  }
+  return std::string(trim(out));
+}
+
+const char* header_key(std::string_view code) {
+  static constexpr std::array<std::pair<std::string_view, const char*>, 22> kKeys{{
+      {"PLT", "pilot"},
+      {"CM2", "copilot"},
+      {"GTY", "glider_type"},
+      {"GID", "glider_id"},
+      {"CID", "competition_id"},
+      {"CCL", "competition_class"},
+      {"SIT", "site"},
+      {"RFW", "firmware"},
+      {"RHW", "hardware"},
+      {"FTY", "recorder"},
+      {"DTM", "gps_datum"},
+      {"ALP", "altitude_pressure"},
+      {"ALG", "altitude_gps"},
+      {"GPS", "gps_receiver"},
+      {"PRS", "pressure_sensor"},
+      {"TZN", "timezone"},
+      {"TZO", "timezone"},
+      {"FXA", "fix_accuracy"},
+      {"FRS", "security"},
+      {"CLB", "club"},
+      {"UNT", "units"},
+      {"MOP", "means_of_propulsion"},
+  }};
+  for (const auto& [c, key] : kKeys)
+    if (c == code) return key;
+  return nullptr;
+}
+
+const char* manufacturer_name(std::string_view code) {
+  static constexpr std::array<std::pair<std::string_view, const char*>, 19> kNames{{
+      {"ACT", "Aircotec"},  {"CAM", "Cambridge"},         {"CNI", "ClearNav"},
+      {"DSX", "Data Swan"}, {"EWA", "EW Avionics"},       {"FIL", "Filser"},
+      {"FLA", "FLARM"},     {"GCS", "Garrecht"},          {"IMI", "IMI Gliding"},
+      {"LGS", "Logstream"}, {"LXN", "LX Navigation"},     {"LXV", "LXNAV"},
+      {"NAV", "Naviter"},   {"NKL", "Nielsen Kellerman"}, {"PES", "Peschges"},
+      {"XCS", "XCSoar"},    {"XCT", "XCTrack"},           {"XSX", "Skytraxx"},
+      {"ZAN", "Zander"},
+  }};
+  for (const auto& [c, name] : kNames)
+    if (c == code) return name;
+  return nullptr;
+}
+
+}  // namespace trailray::track::detail
