@@ -12,7 +12,7 @@
 
 #include "app/bench_datasets.hpp"
 #include "app/bench_runner.hpp"
-#include "app/render_command.hpp"
+#include "app/camera_options.hpp"
 
 namespace trailray::app {
 namespace {
@@ -62,17 +62,17 @@ nlohmann::json row_json(const BenchRow& r) {
 }
 
 std::string table(const std::vector<BenchRow>& rows) {
-  std::string out = fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>8} {:>8} {:>8}\n", "dataset",
-                                "points", "capsule", "cap+ovl", "ribbon", "tube", "cap/rib", "cap/tube", "cap B/pt",
-                                "tube B/pt", "mem c/t");
+  std::string out =
+      fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>8} {:>8} {:>8}\n", "dataset", "points",
+                  "capsule", "cap+ovl", "ribbon", "tube", "cap/rib", "cap/tube", "cap B/pt", "tube B/pt", "mem c/t");
   out += fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10}\n", "", "", "ms", "ms", "ms", "ms");
   for (const BenchRow& r : rows)
-    out += fmt::format("{:<44} {:>8} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>8.2f} {:>8.2f} {:>8.1f} {:>8.1f} {:>8.3f}\n",
-                       r.name.size() > 44 ? r.name.substr(0, 41) + "..." : r.name, r.points, r.capsule_ms,
-                       r.capsule_total_ms, r.ribbon_ms, r.tube_ms, ratio(r.capsule_ms, r.ribbon_ms),
-                       ratio(r.capsule_ms, r.tube_ms), per_point(r.capsule_bytes, r.points),
-                       per_point(r.tube_bytes, r.points),
-                       ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes)));
+    out += fmt::format(
+        "{:<44} {:>8} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>8.2f} {:>8.2f} {:>8.1f} {:>8.1f} {:>8.3f}\n",
+        r.name.size() > 44 ? r.name.substr(0, 41) + "..." : r.name, r.points, r.capsule_ms, r.capsule_total_ms,
+        r.ribbon_ms, r.tube_ms, ratio(r.capsule_ms, r.ribbon_ms), ratio(r.capsule_ms, r.tube_ms),
+        per_point(r.capsule_bytes, r.points), per_point(r.tube_bytes, r.points),
+        ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes)));
   return out;
 }
 
@@ -81,9 +81,14 @@ nlohmann::json targets_json(const BenchRow& r) {
   const double over_ribbon = ratio(r.capsule_ms, r.ribbon_ms), over_tube = ratio(r.capsule_ms, r.tube_ms);
   const double memory = ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes));
   return {{"dataset", r.name},
-          {"capsule_over_ribbon", {{"value", over_ribbon}, {"target", kTargetCapsuleOverRibbon}, {"met", over_ribbon <= kTargetCapsuleOverRibbon}}},
-          {"capsule_over_tube", {{"value", over_tube}, {"target", kTargetCapsuleOverTube}, {"met", over_tube <= kTargetCapsuleOverTube}}},
-          {"capsule_over_tube_bytes", {{"value", memory}, {"target", kTargetMemoryRatio}, {"met", memory <= kTargetMemoryRatio}}}};
+          {"capsule_over_ribbon",
+           {{"value", over_ribbon},
+            {"target", kTargetCapsuleOverRibbon},
+            {"met", over_ribbon <= kTargetCapsuleOverRibbon}}},
+          {"capsule_over_tube",
+           {{"value", over_tube}, {"target", kTargetCapsuleOverTube}, {"met", over_tube <= kTargetCapsuleOverTube}}},
+          {"capsule_over_tube_bytes",
+           {{"value", memory}, {"target", kTargetMemoryRatio}, {"met", memory <= kTargetMemoryRatio}}}};
 }
 
 std::string targets_text(const nlohmann::json& t) {
@@ -98,7 +103,9 @@ int run_bench_tracks(const BenchArgs& a) {
   const auto counts = parse_point_counts(a.points);
   if (!counts.ok()) throw CLI::ValidationError("--points", counts.error);
   const auto size = parse_image_size(a.size);
-  if (!size) throw CLI::ValidationError("--size", fmt::format("'{}' is not WxH with W and H in 1..16384, e.g. 1920x1080", a.size));
+  if (!size)
+    throw CLI::ValidationError("--size",
+                               fmt::format("'{}' is not WxH with W and H in 1..16384, e.g. 1920x1080", a.size));
   if (a.frames < 1 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 1..{}", a.frames, kMaxFrames));
 
@@ -110,7 +117,8 @@ int run_bench_tracks(const BenchArgs& a) {
   settings.lens = scene::Lens{scene::kDefaultVerticalFovDeg, size->width, size->height};
   settings.frames = a.frames;
   TrackBench bench(settings);
-  const std::string timing = bench.gpu_timing() ? "gpu (EXT_disjoint_timer_query)" : "cpu (wall time around the draw and glFinish)";
+  const std::string timing =
+      bench.gpu_timing() ? "gpu (EXT_disjoint_timer_query)" : "cpu (wall time around the draw and glFinish)";
   fmt::print(stderr, "bench: {} at {}x{}, {} timed frames after {} warm-up, track width {} px, timing: {}\n",
              bench.renderer(), size->width, size->height, a.frames, settings.warmup_frames, settings.width_px, timing);
 
@@ -122,7 +130,8 @@ int run_bench_tracks(const BenchArgs& a) {
     const auto start = std::chrono::steady_clock::now();
     fmt::print(stderr, "bench: [{}/{}] {} ({} points):", ++index, total, d.name, d.point_count());
     BenchRow row = bench.run(d, [](const std::string& technique) { fmt::print(stderr, " {}", technique); });
-    fmt::print(stderr, " ({:.1f} s)\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    fmt::print(stderr, " ({:.1f} s)\n",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (d.kind == "random_walk" && (!largest_walk || row.points >= largest_walk->points)) largest_walk = row;
     rows.push_back(std::move(row));
   };
@@ -162,12 +171,14 @@ int run_bench_tracks(const BenchArgs& a) {
 
 scene::Result<std::vector<std::size_t>> parse_point_counts(std::string_view text) {
   scene::Result<std::vector<std::size_t>> r;
-  const std::string form = fmt::format("point counts in 2..{}, separated by commas, e.g. 10000,100000", kMaxBenchPoints);
+  const std::string form =
+      fmt::format("point counts in 2..{}, separated by commas, e.g. 10000,100000", kMaxBenchPoints);
   std::vector<std::size_t> counts;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
-    const std::string item = trim(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    const std::string item =
+        trim(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
     std::size_t value = 0;
     const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size() || value < 2 || value > kMaxBenchPoints) {
@@ -198,7 +209,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--points", args->points, "Random walk sizes (default 10000,100000,1000000)")->type_name("LIST");
   cmd->add_option("--size", args->size, "Picture size in pixels (default 1920x1080)")->type_name("WxH");
   cmd->add_option("--frames", args->frames, "Timed frames per technique and dataset (default 20)")->type_name("N");
-  cmd->add_option("--data", args->data, "Folder with gpx/ and igc/ subfolders of real tracks, or none (default ../shared/data)")
+  cmd->add_option("--data", args->data,
+                  "Folder with gpx/ and igc/ subfolders of real tracks, or none (default ../shared/data)")
       ->type_name("DIR");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of the table");
   cmd->callback([args, &exit_code] { exit_code = run_bench_tracks(*args); });

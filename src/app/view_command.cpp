@@ -5,10 +5,9 @@
 #include <cmath>
 #include <memory>
 
-#include "app/render_command.hpp"
-#include "app/scene_inputs.hpp"
+#include "app/camera_options.hpp"
+#include "app/style_options.hpp"
 #include "app/track_options.hpp"
-#include "app/track_style_options.hpp"
 #include "app/view/viewer_app.hpp"
 
 namespace trailray::app {
@@ -20,8 +19,7 @@ struct ViewArgs {
   std::vector<std::string> tracks;
   std::string size = "1280x720";
   CameraArgs camera;
-  EffectArgs effects;
-  TrackStyleArgs style;
+  StyleArgs style;
   track::ReadOptions read;
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
@@ -32,20 +30,16 @@ struct ViewArgs {
 };
 
 int run_view(const ViewArgs& a) {
-  const auto size = parse_image_size(a.size);
-  if (!size) throw CLI::ValidationError("--size", fmt::format("'{}' is not WxH, e.g. 1280x720", a.size));
   view::ViewerOptions o;
-  o.lens = {a.camera.fov_deg, size->width, size->height};
-  if (auto problem = scene::lens_problem(o.lens)) throw CLI::ValidationError("--fov/--size", *problem);
+  o.lens = parse_lens(a.size, a.camera.fov_deg);
   o.camera = parse_camera_request(a.camera, !a.tracks.empty());
   if (a.frames < 0 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 0..{}", a.frames, kMaxFrames));
   if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
     throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
-  if (!a.effects.time.empty()) sun_time(a.effects.time, {});  // a bad --time is a usage error, before any window
+  o.sun_time_unix = parse_sun_time(a.style.time);  // a bad --time is a usage error, before any window
   o.tracks = a.tracks;
-  o.effects = a.effects;
-  o.style = parse_track_style(a.style);
+  o.style = parse_style(a.style);
   o.read = a.read;
   o.analysis = a.analysis;
   o.terrain = a.terrain;
@@ -76,7 +70,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
   cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to show (the view frames them)")->type_name("FILE");
   cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");
   add_camera_options(*cmd, args->camera);
-  add_effect_options(*cmd, args->effects);
+  add_shading_options(*cmd, args->style);
   cmd->add_option("--timeout", args->timeout_s, "Seconds a scripted screenshot waits for terrain tiles (default 120)")
       ->type_name("S");
   cmd->add_flag("--verbose", args->verbose, "Log the GL context");

@@ -50,6 +50,8 @@ struct Track {
   std::vector<double> speed_kmh;           // windowed horizontal speed
   std::vector<double> vspeed_ms;           // windowed vertical speed, positive climbing
   std::vector<double> heart_rate_bpm;      // recorded
+  std::vector<std::size_t> timed_points;   // the flat indices of the points with a time, in order
+  bool times_rise = true;                  // their times never go back (cleaned tracks' do not)
 
   // What is drawn: one polyline per non-empty segment, points in ECEF (points without an
   // elevation on the ground), the colour values of the style's metric, curtain heights.
@@ -85,6 +87,8 @@ class TrackSet {
   bool empty() const { return tracks_.empty(); }
   Track& operator[](std::size_t i) { return tracks_[i]; }
   const Track& operator[](std::size_t i) const { return tracks_[i]; }
+  Track& at(std::size_t i) { return tracks_.at(i); }
+  const Track& at(std::size_t i) const { return tracks_.at(i); }
 
  private:
   std::vector<Track> tracks_;

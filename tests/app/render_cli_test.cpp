@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render_command.hpp"
+#include "app/camera_options.hpp"
 #include "run_command.hpp"
 #include "terrain/image_codec.hpp"
 #include "terrain/tile_fixtures.hpp"
@@ -196,7 +196,8 @@ TEST(RenderCli, ImageryFromATmsFolderDrapesTheDem) {
   const std::string common = prefix + "--terrain " + shell_quote(dem.string()) + " --imagery " +
                              shell_quote(ortho.string()) +
                              " --look-at 47.1,13.0,1500 --distance 90000 --heading 0 --pitch -30"
-                             " --time 2024-06-18T10:00:00Z --size 160x90 --verbose -o " + shell_quote(env.out());
+                             " --time 2024-06-18T10:00:00Z --size 160x90 --verbose -o " +
+                             shell_quote(env.out());
   const auto tms = run_command(common + " --imagery-scheme tms 2>&1");
   ASSERT_EQ(tms.status, 0) << tms.out;
   const auto xyz = run_command(common + " 2>&1");
@@ -211,7 +212,8 @@ TEST(RenderCli, ImageryFromATmsFolderDrapesTheDem) {
   EXPECT_EQ(imagery_tiles(xyz.out), 0) << xyz.out;  // read as XYZ the rows land elsewhere: no imagery here
   // --verbose also says what the terrain holds on the GPU: meshes for every tile drawn, and
   // textures for the imagery tiles.
-  const std::regex gpu(R"(GPU memory for terrain: meshes ([0-9.]+) MiB \(([0-9]+) tiles\), imagery ([0-9.]+) MiB \(([0-9]+) tiles\))");
+  const std::regex gpu(
+      R"(GPU memory for terrain: meshes ([0-9.]+) MiB \(([0-9]+) tiles\), imagery ([0-9.]+) MiB \(([0-9]+) tiles\))");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(tms.out, m, gpu)) << tms.out;
   EXPECT_GT(std::stod(m[1]), 0.0);

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "app/track_legend.hpp"
-#include "app/track_scene.hpp"
-#include "app/track_style_options.hpp"
-#include "render/gl/framebuffer_readback.hpp"
+#include "app/style_options.hpp"
 #include "scene/legend.hpp"
+#include "scene/legend_content.hpp"
+#include "scene/rgba_image.hpp"
+#include "scene/track_building.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
@@ -58,24 +58,62 @@ track::Track east_track(const std::string& name, double north_m) {
   return t;
 }
 
-std::vector<LoadedTrackFile> files_with(std::vector<track::Track> tracks) {
-  LoadedTrackFile f;
+std::vector<scene::LoadedTrackFile> files_with(std::vector<track::Track> tracks) {
+  scene::LoadedTrackFile f;
   f.path = "tracks.gpx";
   f.file.tracks = std::move(tracks);
   return {f};
 }
 
-TrackStyle style_of(const std::string& metric, const std::string& colormap = {}, const std::string& legend = "on") {
-  TrackStyleArgs args;
+scene::Style style_of(const std::string& metric, const std::string& colormap = {}, const std::string& legend = "on") {
+  StyleArgs args;
   args.color_by = metric;
   args.colormap = colormap;
   args.legend = legend;
-  return parse_track_style(args);
+  return parse_style(args);
 }
 
-TrackScene scene_of(const std::vector<LoadedTrackFile>& files, const TrackStyle& style) {
-  return build_track_scene(files, style, {}, [](const std::string&) {});
+// The files' tracks as `render` builds them, and the scene that draws them in a style.
+struct TestScene {
+  scene::TrackSet tracks;
+  scene::Scene scene;
+
+  TestScene(const std::vector<scene::LoadedTrackFile>& files, const scene::Style& style) {
+    scene::CollectedDiagnostics ignored;
+    for (scene::Track& t : scene::build_tracks(files, style.tracks, {}, ignored)) tracks.add(std::move(t));
+    scene.tracks = &tracks;
+    scene.style = style;
+    scene.color_range = scene::color_range(tracks, style);
+  }
+  TestScene(const TestScene&) = delete;
+  TestScene& operator=(const TestScene&) = delete;
+};
+
+TestScene scene_of(const std::vector<scene::LoadedTrackFile>& files, const scene::Style& style) {
+  return TestScene(files, style);
 }
+
+// The legend's content and drawing for the scene's tracks in `style` (which may differ from the
+// one the tracks were built in, e.g. the legend switched off).
+std::optional<scene::ColorLegend> color_legend_for(const scene::Style& style, const TestScene& built) {
+  return scene::color_legend_for(style.tracks, built.scene.color_range);
+}
+std::vector<scene::TrackKeyEntry> track_key_for(const scene::Style& style, const TestScene& built) {
+  return scene::track_key_for(style.tracks, built.tracks);
+}
+scene::Scene restyled(const TestScene& built, const scene::Style& style) {
+  scene::Scene s = built.scene;
+  s.style = style;
+  return s;
+}
+void draw_scene_legend(scene::RgbaImage& image, const scene::Style& style, const TestScene& built) {
+  scene::draw_scene_legend(image, restyled(built, style));
+}
+scene::PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const scene::Style& style,
+                                    const TestScene& built) {
+  return scene::scene_legend_panel(width, height, restyled(built, style));
+}
+using scene::legend_clearance;
 
 scene::RgbaImage grey_image(std::uint32_t width, std::uint32_t height) {
   return {width, height, std::vector<std::uint8_t>(std::size_t{width} * height * 4, 128)};
@@ -83,8 +121,8 @@ scene::RgbaImage grey_image(std::uint32_t width, std::uint32_t height) {
 
 TEST(TrackLegend, SpeedDoublingHalfwayGivesTheRangeOfItsTwoSpeeds) {
   const track::Track raw = doubling_speed_track();
-  const TrackStyle style = style_of("speed");
-  const TrackScene scene = scene_of(files_with({raw}), style);
+  const scene::Style style = style_of("speed");
+  const TestScene scene = scene_of(files_with({raw}), style);
   const auto legend = color_legend_for(style, scene);
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->title, "Speed (km/h)");
@@ -108,11 +146,11 @@ TEST(TrackLegend, SpeedDoublingHalfwayGivesTheRangeOfItsTwoSpeeds) {
 }
 
 TEST(TrackLegend, RangeFromTheOptionIsWhatTheLegendShows) {
-  TrackStyleArgs args;
+  StyleArgs args;
   args.color_by = "speed";
   args.range = "5:35";
   args.colormap = "viridis";
-  const TrackStyle style = parse_track_style(args);
+  const scene::Style style = parse_style(args);
   const auto legend = color_legend_for(style, scene_of(files_with({doubling_speed_track()}), style));
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->min_label, "5.0");
@@ -127,7 +165,7 @@ TEST(TrackLegend, VerticalSpeedIsDivergingWithAZeroTick) {
     const double n = static_cast<double>(i);
     points[i].ele = 1000.0 + (i < 40 ? 4.0 * n : 160.0 - 2.0 * (n - 40.0));
   }
-  const TrackStyle style = style_of("vspeed");
+  const scene::Style style = style_of("vspeed");
   const auto legend = color_legend_for(style, scene_of(files_with({t}), style));
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->title, "Vertical speed (m/s)");
@@ -139,7 +177,7 @@ TEST(TrackLegend, VerticalSpeedIsDivergingWithAZeroTick) {
 }
 
 TEST(TrackLegend, ElapsedTimeIsTitledInHoursAndMinutes) {
-  const TrackStyle style = style_of("time");
+  const scene::Style style = style_of("time");
   const auto legend = color_legend_for(style, scene_of(files_with({doubling_speed_track()}), style));
   ASSERT_TRUE(legend.has_value());
   EXPECT_EQ(legend->title, "Elapsed time (h:mm)");
@@ -147,16 +185,16 @@ TEST(TrackLegend, ElapsedTimeIsTitledInHoursAndMinutes) {
 }
 
 TEST(TrackLegend, NoColourBarForSolidTracksOrWithoutValues) {
-  const TrackStyle solid = style_of("solid");
+  const scene::Style solid = style_of("solid");
   EXPECT_FALSE(color_legend_for(solid, scene_of(files_with({doubling_speed_track()}), solid)));
   // Heart rate: this track recorded none.
-  const TrackStyle hr = style_of("hr");
+  const scene::Style hr = style_of("hr");
   EXPECT_FALSE(color_legend_for(hr, scene_of(files_with({doubling_speed_track()}), hr)));
 }
 
 TEST(TrackLegend, KeyListsSeveralSolidTracksByNameAndColour) {
-  const TrackStyle solid = style_of("solid");
-  const TrackScene scene =
+  const scene::Style solid = style_of("solid");
+  const TestScene scene =
       scene_of(files_with({east_track("Alpha", 0.0), east_track("", 300.0), east_track("Gamma", 600.0)}), solid);
   const auto key = track_key_for(solid, scene);
   ASSERT_EQ(key.size(), 3u);
@@ -167,9 +205,9 @@ TEST(TrackLegend, KeyListsSeveralSolidTracksByNameAndColour) {
 }
 
 TEST(TrackLegend, OneTrackOrColourByValueGetsNoKey) {
-  const TrackStyle solid = style_of("solid");
+  const scene::Style solid = style_of("solid");
   EXPECT_TRUE(track_key_for(solid, scene_of(files_with({east_track("Alone", 0.0)}), solid)).empty());
-  const TrackStyle speed = style_of("speed");
+  const scene::Style speed = style_of("speed");
   EXPECT_TRUE(
       track_key_for(speed, scene_of(files_with({east_track("A", 0.0), east_track("B", 300.0)}), speed)).empty());
 }
@@ -180,8 +218,8 @@ TEST(TrackLegend, DrawnInTheBottomLeftOnlyWhenOn) {
   for (const char* metric : {"speed", "solid"}) {
     const auto several = files_with({east_track("A", 0.0), east_track("B", 300.0)});
     const auto& used = std::string(metric) == "solid" ? several : files;
-    const TrackStyle on = style_of(metric), off = style_of(metric, {}, "off");
-    const TrackScene scene = scene_of(used, on);
+    const scene::Style on = style_of(metric), off = style_of(metric, {}, "off");
+    const TestScene scene = scene_of(used, on);
     const scene::RgbaImage blank = grey_image(640, 360);
     scene::RgbaImage with = blank, without = blank;
     draw_scene_legend(with, on, scene);
@@ -206,8 +244,8 @@ TEST(TrackLegend, ClearanceIsTheDrawnPanelWithItsGap) {
   const auto several = files_with({east_track("A", 0.0), east_track("B", 300.0)});
   for (const char* metric : {"speed", "solid"}) {
     SCOPED_TRACE(metric);
-    const TrackStyle on = style_of(metric), off = style_of(metric, {}, "off");
-    const TrackScene scene = scene_of(std::string(metric) == "solid" ? several : files, on);
+    const scene::Style on = style_of(metric), off = style_of(metric, {}, "off");
+    const TestScene scene = scene_of(std::string(metric) == "solid" ? several : files, on);
     scene::RgbaImage image = grey_image(640, 360);
     const scene::RgbaImage blank = image;
     draw_scene_legend(image, on, scene);
@@ -232,13 +270,13 @@ TEST(TrackLegend, ClearanceIsTheDrawnPanelWithItsGap) {
     EXPECT_TRUE(scene_legend_panel(640, 360, off, scene).empty());
     EXPECT_TRUE(legend_clearance(scene_legend_panel(640, 360, off, scene), 360).empty());
   }
-  const TrackStyle solid = style_of("solid");
+  const scene::Style solid = style_of("solid");
   EXPECT_TRUE(scene_legend_panel(640, 360, solid, scene_of(files_with({east_track("Alone", 0.0)}), solid)).empty());
 }
 
 TEST(TrackLegend, OneSolidTrackDrawsNoLegend) {
-  const TrackStyle solid = style_of("solid");
-  const TrackScene scene = scene_of(files_with({east_track("Alone", 0.0)}), solid);
+  const scene::Style solid = style_of("solid");
+  const TestScene scene = scene_of(files_with({east_track("Alone", 0.0)}), solid);
   const scene::RgbaImage blank = grey_image(320, 180);
   scene::RgbaImage image = blank;
   draw_scene_legend(image, solid, scene);

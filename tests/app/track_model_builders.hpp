@@ -1,5 +1,5 @@
 #pragma once
-// Track files held in memory for the tests of build_track_scene and the viewer: straight lines
+// Track files held in memory for the tests of scene::build_tracks and the viewer: straight lines
 // heading east with known spacing, times and elevations, so distances, speeds and positions are
 // known in advance.
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/track_cli_support.hpp"
-#include "app/track_scene.hpp"
+#include "scene/track_files.hpp"
 #include "track/model.hpp"
 
 namespace trailray::app::test_tracks {
@@ -40,8 +40,8 @@ inline track::Track track_of(std::string name, std::vector<track::Segment> segme
   return t;
 }
 
-inline LoadedTrackFile file_of(std::string path, std::vector<track::Track> tracks) {
-  LoadedTrackFile f;
+inline scene::LoadedTrackFile file_of(std::string path, std::vector<track::Track> tracks) {
+  scene::LoadedTrackFile f;
   f.path = std::move(path);
   f.file.tracks = std::move(tracks);
   return f;

@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "app/track_legend.hpp"
-#include "app/track_scene.hpp"
-#include "app/track_style_options.hpp"
+#include "app/style_options.hpp"
 #include "scene/camera.hpp"
 #include "scene/colormap.hpp"
 #include "scene/legend.hpp"
+#include "scene/legend_content.hpp"
 #include "scene/text_raster.hpp"
+#include "scene/track_building.hpp"
 #include "track/io/load.hpp"
 #include "track_cli_support.hpp"
 
@@ -267,20 +267,22 @@ TEST(TrackRenderCli, SpeedThatDoublesShowsBothEndsOfTheColormap) {
 // Where the legend of these tracks goes in a kWidth x kHeight picture, found by drawing the same
 // legend on a blank image.
 scene::LegendLayout legend_layout(const std::string& gpx, const std::vector<std::string>& style_args) {
-  app::TrackStyleArgs args;
+  app::StyleArgs args;
   for (std::size_t i = 0; i + 1 < style_args.size(); i += 2)
     if (style_args[i] == "--color-by") args.color_by = style_args[i + 1];
-  const app::TrackStyle style = app::parse_track_style(args);
+  const scene::Style style = app::parse_style(args);
   const track::ReadResult read = track::load_track_file(gpx);
   EXPECT_TRUE(read.ok());
-  const app::TrackScene scene = app::build_track_scene({{gpx, read.file}}, style, {}, [](const std::string&) {});
+  scene::CollectedDiagnostics ignored;
+  scene::TrackSet tracks;
+  for (scene::Track& t : scene::build_tracks({{gpx, read.file}}, style.tracks, {}, ignored)) tracks.add(std::move(t));
   scene::RgbaImage blank{kWidth, kHeight, std::vector<std::uint8_t>(std::size_t{kWidth} * kHeight * 4, 128)};
   scene::TextRasterizer text;
   scene::LegendLayout layout;
-  if (const auto legend = app::color_legend_for(style, scene))
+  if (const auto legend = scene::color_legend_for(style.tracks, scene::color_range(tracks, style)))
     layout = scene::draw_color_legend(blank, text, *legend);
   else
-    layout = scene::draw_track_key(blank, text, app::track_key_for(style, scene));
+    layout = scene::draw_track_key(blank, text, scene::track_key_for(style.tracks, tracks));
   EXPECT_TRUE(layout.drawn) << "the legend fits a " << kWidth << "x" << kHeight << " picture";
   return layout;
 }

@@ -1,4 +1,4 @@
-// build_track_scene on track files held in memory: segments and points kept (empty segments
+// scene::build_tracks on track files held in memory: segments and points kept (empty segments
 // dropped, gaps not joined), routes drawn as tracks, names, colour values per point (NaN where a
 // point has none, never Inf), the colour scale's range (--range over automatic), --color once
 // or per track, points without elevation on the ground, curtain heights.
@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "app/track_scene.hpp"
-#include "app/track_style_options.hpp"
+#include "app/style_options.hpp"
 #include "scene/camera.hpp"
 #include "scene/colormap.hpp"
+#include "scene/scene.hpp"
+#include "scene/track_building.hpp"
 #include "terrain/synthetic_height_source.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
@@ -26,36 +27,53 @@ namespace {
 
 using namespace test_tracks;  // line, track_of, file_of, kLat, kLon, kT0
 
-TrackStyle style_of(TrackStyleArgs args = {}) { return parse_track_style(args); }
+scene::Style style_of(StyleArgs args = {}) { return parse_style(args); }
 
-TrackStyle style_by(const std::string& metric, const std::string& range = {}) {
-  TrackStyleArgs args;
+scene::Style style_by(const std::string& metric, const std::string& range = {}) {
+  StyleArgs args;
   args.color_by = metric;
   args.range = range;
-  return parse_track_style(args);
+  return parse_style(args);
 }
 
 struct Warnings {
-  std::vector<std::string> seen;
-  std::function<void(const std::string&)> sink() {
-    return [this](const std::string& w) { seen.push_back(w); };
-  }
+  scene::CollectedDiagnostics diagnostics;
+  const std::vector<std::string>& seen = diagnostics.warnings;
 };
 
-TrackScene build(const std::vector<LoadedTrackFile>& files, const TrackStyle& style, Warnings* warnings = nullptr,
-                 bool smooth = true) {
-  TrackSceneInputs inputs;
-  inputs.neutral_ground_m = 900.0;
-  inputs.analysis.clean.smooth = smooth;
+// The tracks of the files as `render` builds them, the colour scale over them, their points.
+struct Built {
+  scene::TrackSet tracks;
+  std::optional<track::ValueRange> range;
+  std::size_t points = 0;
+};
+
+Built build_with(const std::vector<scene::LoadedTrackFile>& files, const scene::Style& style,
+                 const scene::TrackBuildOptions& options, Warnings* warnings = nullptr) {
   Warnings ignored;
-  return build_track_scene(files, style, inputs, (warnings != nullptr ? warnings : &ignored)->sink());
+  Built out;
+  for (scene::Track& t :
+       scene::build_tracks(files, style.tracks, options, (warnings != nullptr ? warnings : &ignored)->diagnostics)) {
+    out.points += t.point_count();
+    out.tracks.add(std::move(t));
+  }
+  out.range = scene::color_range(out.tracks, style);
+  return out;
+}
+
+Built build(const std::vector<scene::LoadedTrackFile>& files, const scene::Style& style, Warnings* warnings = nullptr,
+            bool smooth = true) {
+  scene::TrackBuildOptions options;
+  options.neutral_ground_m = 900.0;
+  options.analysis.clean.smooth = smooth;
+  return build_with(files, style, options, warnings);
 }
 
 TEST(TrackScene, KeepsSegmentsAndPointsAndDropsEmptySegments) {
   const auto files =
       std::vector{file_of("walk.gpx", {track_of("Walk", {line(20, 25.0, 10.0, 1000.0), track::Segment{},
                                                          line(15, 25.0, 10.0, 1000.0, 2000.0, kT0 + 1000.0)})})};
-  const TrackScene scene = build(files, style_of());
+  const Built scene = build(files, style_of());
   ASSERT_EQ(scene.tracks.size(), 1u);
   const auto& segments = scene.tracks[0].geometry.segments;
   ASSERT_EQ(segments.size(), 2u) << "the empty segment is dropped, the two others stay apart";
@@ -73,7 +91,7 @@ TEST(TrackScene, KeepsSegmentsAndPointsAndDropsEmptySegments) {
 
 TEST(TrackScene, PointsWithoutSmoothingAreTheRecordedOnesInEcef) {
   const track::Segment recorded = line(10, 30.0, 10.0, 1234.0);
-  const TrackScene scene = build({file_of("a.gpx", {track_of("A", {recorded})})}, style_of(), nullptr, false);
+  const Built scene = build({file_of("a.gpx", {track_of("A", {recorded})})}, style_of(), nullptr, false);
   ASSERT_EQ(scene.tracks.size(), 1u);
   const auto& points = scene.tracks[0].geometry.segments.at(0).points_ecef;
   ASSERT_EQ(points.size(), recorded.points.size());
@@ -85,11 +103,11 @@ TEST(TrackScene, PointsWithoutSmoothingAreTheRecordedOnesInEcef) {
 }
 
 TEST(TrackScene, PointsWithoutElevationLieOnTheNeutralGroundAndCurtainsReachIt) {
-  TrackStyleArgs args;
+  StyleArgs args;
   args.curtain = true;
   track::Segment flat = line(8, 30.0, 10.0, track::kMissing);
   track::Segment high = line(8, 30.0, 10.0, 1150.0, 0.0, kT0 + 500.0);
-  const TrackScene scene = build({file_of("a.gpx", {track_of("A", {flat, high})})}, style_of(args), nullptr, false);
+  const Built scene = build({file_of("a.gpx", {track_of("A", {flat, high})})}, style_of(args), nullptr, false);
   const auto& segments = scene.tracks.at(0).geometry.segments;
   ASSERT_EQ(segments.size(), 2u);
   for (std::size_t i = 0; i < flat.points.size(); ++i) {
@@ -106,14 +124,14 @@ TEST(TrackScene, PointsWithoutElevationLieOnTheNeutralGroundAndCurtainsReachIt) 
 TEST(TrackScene, SpeedValuesOnePerPointAndFinite) {
   // 25 m every 10 s: 9 km/h everywhere.
   const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(30, 25.0, 10.0, 1000.0)})})};
-  const TrackScene scene = build(files, style_by("speed"));
+  const Built scene = build(files, style_by("speed"));
   const auto& segment = scene.tracks.at(0).geometry.segments.at(0);
   ASSERT_EQ(segment.values.size(), segment.points_ecef.size());
   for (float v : segment.values) {
     ASSERT_TRUE(std::isfinite(v));
     EXPECT_NEAR(v, 9.0, 0.3);
   }
-  EXPECT_EQ(scene.tracks[0].points_with_value, segment.points_ecef.size());
+  EXPECT_EQ(scene.tracks[0].points_with_value(), segment.points_ecef.size());
   ASSERT_TRUE(scene.range.has_value());
   // Every value the same: the range is widened around it, not empty.
   EXPECT_LT(scene.range->min, 9.0);
@@ -125,13 +143,13 @@ TEST(TrackScene, MissingValuesStayNaNAndARangeComesFromTheOthers) {
   const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(30, 25.0, 10.0, 1000.0)}),
                                                    track_of("B", {line(30, 25.0, track::kMissing, 1000.0, 0.0)})})};
   Warnings warnings;
-  const TrackScene scene = build(files, style_by("speed"), &warnings);
+  const Built scene = build(files, style_by("speed"), &warnings);
   ASSERT_EQ(scene.tracks.size(), 2u);
   const auto& b = scene.tracks[1].geometry.segments.at(0);
   ASSERT_EQ(b.values.size(), b.points_ecef.size());
   for (float v : b.values) EXPECT_TRUE(std::isnan(v));
-  EXPECT_EQ(scene.tracks[1].points_with_value, 0u);
-  EXPECT_EQ(scene.tracks[0].points_with_value, scene.tracks[0].geometry.segments[0].points_ecef.size());
+  EXPECT_EQ(scene.tracks[1].points_with_value(), 0u);
+  EXPECT_EQ(scene.tracks[0].points_with_value(), scene.tracks[0].geometry.segments[0].points_ecef.size());
   ASSERT_TRUE(scene.range.has_value());
   EXPECT_TRUE(std::isfinite(scene.range->min) && std::isfinite(scene.range->max));
   EXPECT_TRUE(warnings.seen.empty());
@@ -140,7 +158,7 @@ TEST(TrackScene, MissingValuesStayNaNAndARangeComesFromTheOthers) {
 TEST(TrackScene, NoValueAnywhereWarnsAndHasNoRange) {
   const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(30, 25.0, track::kMissing, 1000.0)})})};
   Warnings warnings;
-  const TrackScene scene = build(files, style_by("speed"), &warnings);
+  const Built scene = build(files, style_by("speed"), &warnings);
   EXPECT_FALSE(scene.range.has_value());
   ASSERT_EQ(warnings.seen.size(), 1u);
   EXPECT_NE(warnings.seen[0].find("speed"), std::string::npos) << warnings.seen[0];
@@ -155,10 +173,10 @@ TEST(TrackScene, AutomaticRangeIsTheRobustRangeOfAllValues) {
   const track::Segment fast = line(40, 56.0, 10.0, 1000.0, 40 * 28.0, kT0 + 400.0);
   s.points.insert(s.points.end(), fast.points.begin(), fast.points.end());
   const auto files = std::vector{file_of("a.gpx", {track_of("A", {s})})};
-  const TrackScene scene = build(files, style_by("speed"));
+  const Built scene = build(files, style_by("speed"));
   ASSERT_TRUE(scene.range.has_value());
   std::vector<std::vector<float>> all;
-  for (const auto& t : scene.tracks)
+  for (const auto& t : scene.tracks.tracks())
     for (const auto& seg : t.geometry.segments) all.push_back(seg.values);
   const auto expected = track::robust_range(all, false);
   ASSERT_TRUE(expected.has_value());
@@ -168,7 +186,7 @@ TEST(TrackScene, AutomaticRangeIsTheRobustRangeOfAllValues) {
   EXPECT_NEAR(scene.range->max, 56.0 * 0.36, 0.3);
 
   // --range wins over the automatic one.
-  const TrackScene given = build(files, style_by("speed", "0:50"));
+  const Built given = build(files, style_by("speed", "0:50"));
   ASSERT_TRUE(given.range.has_value());
   EXPECT_EQ(given.range->min, 0.0);
   EXPECT_EQ(given.range->max, 50.0);
@@ -180,19 +198,19 @@ TEST(TrackScene, VerticalSpeedRangeIsSymmetricAboutZero) {
     const double n = static_cast<double>(i);
     s.points[i].ele = 1000.0 + (i < 20 ? 5.0 * n : 100.0 - 2.0 * (n - 20.0));
   }
-  const TrackScene scene = build({file_of("a.gpx", {track_of("A", {s})})}, style_by("vspeed"));
+  const Built scene = build({file_of("a.gpx", {track_of("A", {s})})}, style_by("vspeed"));
   ASSERT_TRUE(scene.range.has_value());
   EXPECT_DOUBLE_EQ(scene.range->min, -scene.range->max);
   EXPECT_NEAR(scene.range->max, 0.5, 0.1);  // 5 m per 10 s climbing
 }
 
 TEST(TrackScene, RoutesAreDrawnAsTracks) {
-  LoadedTrackFile f = file_of("plan.gpx", {});
+  scene::LoadedTrackFile f = file_of("plan.gpx", {});
   track::Route route;
   route.name = "Planned";
   route.points = line(12, 40.0, track::kMissing, 1000.0).points;
   f.file.routes.push_back(route);
-  const TrackScene scene = build({f}, style_of());
+  const Built scene = build({f}, style_of());
   ASSERT_EQ(scene.tracks.size(), 1u);
   EXPECT_EQ(scene.tracks[0].name, "Planned");
   ASSERT_EQ(scene.tracks[0].geometry.segments.size(), 1u);
@@ -200,13 +218,15 @@ TEST(TrackScene, RoutesAreDrawnAsTracks) {
 }
 
 TEST(TrackScene, NamesAreTheTracksOwnElseTheFileNameAndNumber) {
-  LoadedTrackFile several = file_of("/some/folder/walk.gpx", {track_of("Morning", {line(5, 30.0, 10.0, 1000.0)}),
-                                                              track_of("", {line(5, 30.0, 10.0, 1000.0, 500.0)})});
+  scene::LoadedTrackFile several =
+      file_of("/some/folder/walk.gpx",
+              {track_of("Morning", {line(5, 30.0, 10.0, 1000.0)}), track_of("", {line(5, 30.0, 10.0, 1000.0, 500.0)})});
   track::Route route;
   route.points = line(5, 30.0, track::kMissing, 1000.0, 1000.0).points;
   several.file.routes.push_back(route);
-  const LoadedTrackFile single = file_of("other/ride.gpx", {track_of("", {line(5, 30.0, 10.0, 1000.0, 2000.0)})});
-  const TrackScene scene = build({several, single}, style_of());
+  const scene::LoadedTrackFile single =
+      file_of("other/ride.gpx", {track_of("", {line(5, 30.0, 10.0, 1000.0, 2000.0)})});
+  const Built scene = build({several, single}, style_of());
   ASSERT_EQ(scene.tracks.size(), 4u);
   EXPECT_EQ(scene.tracks[0].name, "Morning");
   EXPECT_EQ(scene.tracks[1].name, "walk.gpx #2");
@@ -218,23 +238,24 @@ TEST(TrackScene, ColoursFromThePaletteOnceOrPerTrack) {
   const auto files = std::vector{file_of(
       "a.gpx", {track_of("A", {line(5, 30.0, 10.0, 1000.0)}), track_of("B", {line(5, 30.0, 10.0, 1000.0, 500.0)}),
                 track_of("C", {line(5, 30.0, 10.0, 1000.0, 1000.0)})})};
-  const TrackScene palette = build(files, style_of());
+  const Built palette = build(files, style_of());
   ASSERT_EQ(palette.tracks.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(palette.tracks[i].color_srgb, scene::palette_color(i)) << i;
   EXPECT_NE(palette.tracks[0].color_srgb, palette.tracks[1].color_srgb);
 
-  TrackStyleArgs once;
+  StyleArgs once;
   once.colors = {"#00ff00"};
-  for (const auto& t : build(files, style_of(once)).tracks) EXPECT_EQ(t.color_srgb, glm::vec3(0.0f, 1.0f, 0.0f));
+  const Built one_colour = build(files, style_of(once));
+  for (const auto& t : one_colour.tracks.tracks()) EXPECT_EQ(t.color_srgb, glm::vec3(0.0f, 1.0f, 0.0f));
 
-  TrackStyleArgs each;
+  StyleArgs each;
   each.colors = {"#ff0000", "#00ff00", "#0000ff"};
-  const TrackScene per_track = build(files, style_of(each));
+  const Built per_track = build(files, style_of(each));
   EXPECT_EQ(per_track.tracks[0].color_srgb, glm::vec3(1.0f, 0.0f, 0.0f));
   EXPECT_EQ(per_track.tracks[1].color_srgb, glm::vec3(0.0f, 1.0f, 0.0f));
   EXPECT_EQ(per_track.tracks[2].color_srgb, glm::vec3(0.0f, 0.0f, 1.0f));
 
-  TrackStyleArgs two;
+  StyleArgs two;
   two.colors = {"#ff0000", "#00ff00"};
   try {
     build(files, style_of(two));
@@ -256,21 +277,20 @@ TEST(TrackScene, HeightAboveGroundNeedsTerrain) {
   }
 }
 
-
-// keep_analysis (the viewer): each track's cleaned points, metrics and summary come out with the
-// geometry, the same as cleaning and summarizing the raw track again would give; without it
-// (render) they stay empty.
+// Each track's cleaned points and metrics come out with the geometry, the same as cleaning the
+// raw track again would give; with `inspect` (the viewer) its summary too, which `render` does
+// not need.
 TEST(TrackScene, KeptAnalysisIsTheCleanedTrackAndItsSummary) {
   track::Segment noisy = line(30, 25.0, 5.0, 800.0);
   noisy.points[10].ele = 5000.0;  // a spike cleaning removes or flattens
   const track::Track raw = track_of("A", {noisy, track::Segment{}, line(8, 40.0, 5.0, 900.0, 2000.0, kT0 + 900.0)});
   const auto files = std::vector{file_of("a.gpx", {raw})};
-  TrackSceneInputs inputs;
+  scene::TrackBuildOptions inputs;
   inputs.neutral_ground_m = 900.0;
-  inputs.keep_analysis = true;
-  const TrackScene kept = build_track_scene(files, style_by("speed"), inputs, [](const std::string&) {});
+  inputs.inspect = true;
+  const Built kept = build_with(files, style_by("speed"), inputs);
   ASSERT_EQ(kept.tracks.size(), 1u);
-  const SceneTrack& t = kept.tracks[0];
+  const scene::Track& t = kept.tracks[0];
 
   track::CleanReport report;
   const track::Track cleaned = track::clean_track(raw, inputs.analysis.clean, report);
@@ -291,37 +311,36 @@ TEST(TrackScene, KeptAnalysisIsTheCleanedTrackAndItsSummary) {
   EXPECT_DOUBLE_EQ(*t.summary.raw.max_elevation_m, 5000.0);
   ASSERT_EQ(t.summary.segments.size(), 3u);
   EXPECT_EQ(t.summary.segments[2].clean.points, expected.segments[2].clean.points);
-  EXPECT_TRUE(t.ground_m.empty()) << "no terrain was given";
+  for (double h : t.ground_m) EXPECT_TRUE(std::isnan(h)) << "no terrain was given";
 
   // The drawn points are the kept ones.
   ASSERT_EQ(t.geometry.segments.size(), 2u);
   EXPECT_EQ(t.geometry.segments[1].points_ecef.size(), t.cleaned.segments[2].points.size());
 
-  const TrackScene plain = build(files, style_by("speed"), nullptr, true);
-  EXPECT_TRUE(plain.tracks[0].cleaned.segments.empty());
-  EXPECT_TRUE(plain.tracks[0].metrics.segments.empty());
-  EXPECT_EQ(plain.tracks[0].summary.raw.points, 0u);
+  const Built plain = build(files, style_by("speed"), nullptr, true);
+  EXPECT_EQ(plain.tracks[0].cleaned.segments.size(), 3u);
+  EXPECT_EQ(plain.tracks[0].summary.raw.points, 0u) << "no summary without inspect";
 }
-
 
 // With terrain the viewer gets the ground below every point, not only where a metric needs it.
 TEST(TrackScene, KeptAnalysisHasTheGroundBelowEveryPointWithTerrain) {
   test::SyntheticHeightSource heights(65, terrain::SampleLayout::pixel_is_point, 12);
   const auto files = std::vector{file_of("a.gpx", {track_of("A", {line(6, 30.0, 10.0, 1500.0)})})};
-  TrackSceneInputs inputs;
+  scene::TrackBuildOptions inputs;
   inputs.heights = &heights;
-  inputs.keep_analysis = true;
-  const TrackScene scene = build_track_scene(files, style_of(), inputs, [](const std::string&) {});
+  inputs.inspect = true;
+  const Built scene = build_with(files, style_of(), inputs);
   ASSERT_EQ(scene.tracks.size(), 1u);
-  const SceneTrack& t = scene.tracks[0];
-  ASSERT_EQ(t.ground_m.size(), 1u);
-  ASSERT_EQ(t.ground_m[0].size(), t.cleaned.segments[0].points.size());
-  for (double h : t.ground_m[0]) {
+  const scene::Track& t = scene.tracks[0];
+  ASSERT_EQ(t.ground_m.size(), t.cleaned.segments[0].points.size());
+  for (double h : t.ground_m) {
     EXPECT_TRUE(std::isfinite(h));
     EXPECT_GT(h, 100.0);  // the synthetic plane rises from 100 m at the world's corner
   }
-  inputs.keep_analysis = false;
-  EXPECT_TRUE(build_track_scene(files, style_of(), inputs, [](const std::string&) {}).tracks[0].ground_m.empty());
+  // Without inspect the ground is sampled only where the style needs it: not here.
+  inputs.inspect = false;
+  const Built plain = build_with(files, style_of(), inputs);
+  for (double h : plain.tracks[0].ground_m) EXPECT_TRUE(std::isnan(h));
 }
 
 }  // namespace

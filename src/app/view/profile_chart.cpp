@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "scene/colormap.hpp"
+#include "scene/track_building.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -31,7 +32,7 @@ ImU32 to_imgui(const glm::vec3& srgb, float alpha = 1.0f) {
 }
 
 // The flat colour value of a point (the geometry's lines are the non-empty segments, in order).
-float point_value(const ViewerTrack& t, std::size_t point) {
+float point_value(const scene::Track& t, std::size_t point) {
   const std::size_t seg = t.segment_of(point);
   if (seg >= t.geometry.segments.size()) return std::numeric_limits<float>::quiet_NaN();
   const auto& values = t.geometry.segments[seg].values;
@@ -65,12 +66,12 @@ void draw_selection_statistics(const ViewerModel& model, int track) {
 
 }  // namespace
 
-double chart_x(const ViewerTrack& t, ChartAxis axis, std::size_t point) {
+double chart_x(const scene::Track& t, ChartAxis axis, std::size_t point) {
   if (point >= t.point_count()) return std::numeric_limits<double>::quiet_NaN();
   return axis == ChartAxis::distance ? t.distance_m[point] : t.elapsed_s[point];
 }
 
-std::optional<ChartExtent> chart_extent(const ViewerTrack& t, ChartAxis axis) {
+std::optional<ChartExtent> chart_extent(const scene::Track& t, ChartAxis axis) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   ChartExtent e{inf, -inf, inf, -inf};
   for (std::size_t i = 0; i < t.point_count(); ++i) {
@@ -104,7 +105,7 @@ float pixel_at_x(double x, float plot_left, float plot_width, const ChartExtent&
   return plot_left + static_cast<float>(f) * plot_width;
 }
 
-std::optional<std::size_t> point_at_x(const ViewerTrack& t, ChartAxis axis, double x) {
+std::optional<std::size_t> point_at_x(const scene::Track& t, ChartAxis axis, double x) {
   std::optional<std::size_t> best;
   double best_d = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < t.point_count(); ++i) {
@@ -117,21 +118,21 @@ std::optional<std::size_t> point_at_x(const ViewerTrack& t, ChartAxis axis, doub
   return best;
 }
 
-std::optional<std::size_t> hover_point(const ViewerTrack& t, ChartAxis axis, float mouse_x, float plot_left,
+std::optional<std::size_t> hover_point(const scene::Track& t, ChartAxis axis, float mouse_x, float plot_left,
                                        float plot_width) {
   const auto extent = chart_extent(t, axis);
   if (!extent) return std::nullopt;
   return point_at_x(t, axis, x_at_pixel(mouse_x, plot_left, plot_width, *extent));
 }
 
-glm::vec3 point_color(const ViewerTrack& t, const ViewerSettings& settings,
+glm::vec3 point_color(const scene::Track& t, const ViewerSettings& settings,
                       const std::optional<track::ValueRange>& range, std::size_t point) {
-  if (settings.color_by == track::ColorMetric::solid || !t.by_value || !range) return t.color_srgb;
+  if (settings.style.tracks.color_by == track::ColorMetric::solid || !t.by_value || !range) return t.color_srgb;
   const float v = point_value(t, point);
   if (std::isnan(v)) return scene::kMissingValueColorSrgb;
   const double span = range->max - range->min;
   const double f = span > 0.0 ? (v - range->min) / span : 0.5;
-  return scene::colormap_color(settings.colormap, static_cast<float>(f));
+  return scene::colormap_color(settings.style.tracks.colormap, static_cast<float>(f));
 }
 
 std::vector<std::string> statistics_lines(const track::Statistics& s) {
@@ -154,7 +155,7 @@ void draw_profile_chart(ViewerModel& model) {
     ImGui::TextDisabled("No track loaded.");
     return;
   }
-  ViewerTrack& t = model.tracks[static_cast<std::size_t>(ti)];
+  scene::Track& t = model.tracks[static_cast<std::size_t>(ti)];
   ViewerSettings& settings = model.settings;
 
   int axis = settings.chart_axis == ChartAxis::distance ? 0 : 1;
@@ -216,7 +217,7 @@ void draw_profile_chart(ViewerModel& model) {
 
   // Terrain and altitude, one vertex per pixel column at most (a million points stay cheap),
   // never joined across a segment gap.
-  const auto range = effective_range(model.tracks, settings);
+  const auto range = model.color_range();
   for (std::size_t seg = 0; seg < t.segment_first.size(); ++seg) {
     const std::size_t first = t.segment_first[seg];
     const std::size_t end = seg + 1 < t.segment_first.size() ? t.segment_first[seg + 1] : t.point_count();
@@ -260,7 +261,8 @@ void draw_profile_chart(ViewerModel& model) {
   }
   if (ImGui::IsItemDeactivated()) {
     if (model.selection.track == ti && !model.selection.statistics && model.selection.last > model.selection.first)
-      model.selection.statistics = range_statistics(t, model.selection.first, model.selection.last, model.analysis);
+      model.selection.statistics =
+          scene::range_statistics(t, model.selection.first, model.selection.last, model.analysis);
     else if (!dragged())
       model.selection = {};
   }

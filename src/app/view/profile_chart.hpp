@@ -20,7 +20,7 @@ namespace trailray::app::view {
 
 // A point's position along the chart's x axis: cumulative distance in metres, or seconds since
 // the track's first timestamp (NaN for a point without a time).
-double chart_x(const ViewerTrack& track, ChartAxis axis, std::size_t point);
+double chart_x(const scene::Track& track, ChartAxis axis, std::size_t point);
 
 // What the chart spans: x over the points that have an x, y over altitudes and ground heights
 // (a flat range is widened by 1 m each way). nullopt: no point has an x (time axis without times),
@@ -29,7 +29,7 @@ struct ChartExtent {
   double x_min = 0.0, x_max = 0.0;
   double y_min = 0.0, y_max = 0.0;
 };
-std::optional<ChartExtent> chart_extent(const ViewerTrack& track, ChartAxis axis);
+std::optional<ChartExtent> chart_extent(const scene::Track& track, ChartAxis axis);
 
 // Pixel column <-> x value over a plot `plot_width` pixels wide starting at `plot_left` (the
 // mouse is clamped to the plot).
@@ -37,15 +37,15 @@ double x_at_pixel(float pixel_x, float plot_left, float plot_width, const ChartE
 float pixel_at_x(double x, float plot_left, float plot_width, const ChartExtent& extent);
 
 // The point whose x is nearest to `x` (the first of equals); nullopt when no point has an x.
-std::optional<std::size_t> point_at_x(const ViewerTrack& track, ChartAxis axis, double x);
+std::optional<std::size_t> point_at_x(const scene::Track& track, ChartAxis axis, double x);
 
 // The point under the mouse: point_at_x(x_at_pixel(mouse_x)).
-std::optional<std::size_t> hover_point(const ViewerTrack& track, ChartAxis axis, float mouse_x, float plot_left,
+std::optional<std::size_t> hover_point(const scene::Track& track, ChartAxis axis, float mouse_x, float plot_left,
                                        float plot_width);
 
 // The colour (sRGB 0..1) the 3D view gives a point: by value through the colormap when the track
 // is coloured by a metric and the scale has a range, else the track's solid colour.
-glm::vec3 point_color(const ViewerTrack& track, const ViewerSettings& settings,
+glm::vec3 point_color(const scene::Track& track, const ViewerSettings& settings,
                       const std::optional<track::ValueRange>& range, std::size_t point);
 
 // The statistics the chart's selection and the statistics panel show, one line each:

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <ctime>
 
-#include "app/view/viewer_model.hpp"
+#include "app/view/tooltip.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -29,7 +29,7 @@ std::string line(const char* label, double value, const char* format_with_unit) 
 
 }  // namespace
 
-std::vector<std::string> tooltip_lines(const ViewerTrack& t, std::size_t i) {
+std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
   if (i >= t.point_count()) return {};
   const double time = t.time_unix_s[i];
   const double agl = t.altitude_m[i] - t.ground_m[i];  // NaN when either is missing

@@ -3,45 +3,41 @@
 #include <cmath>
 #include <exception>
 
-#include "scene/colormap.hpp"
-
 namespace trailray::app::view {
 
 LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs) {
   LoadedViewerTracks out;
-  const auto warn = [&out](const std::string& w) { out.warnings.push_back(w); };
-  std::vector<std::string> readable;
+  scene::CollectedDiagnostics diagnostics;
+  std::vector<scene::LoadedTrackFile> files;
   for (const std::string& path : paths) {
     try {
-      TrackPoints one = load_track_points({path}, inputs.read, warn);
-      for (LoadedTrackFile& f : one.files) add_track_points(out.points, std::move(f));
-      readable.push_back(path);
+      files.push_back(scene::read_track_file(path, inputs.read, diagnostics));
+      out.recorded.add(files.back().file);
     } catch (const std::exception& e) {
       out.errors.emplace_back(e.what());
     }
   }
-  if (out.points.files.empty()) return out;
+  out.warnings = diagnostics.warnings;
+  if (files.empty()) return out;
+  scene::TrackBuildOptions options;
+  options.heights = inputs.heights;
+  options.analysis = inputs.analysis;
+  options.inspect = true;
   // The neutral ground (under points without elevation): as given, else the lowest point.
-  double neutral = inputs.neutral_ground_m;
-  if (std::isnan(neutral)) neutral = lowest_height(out.points.points);
-  if (std::isnan(neutral)) neutral = 0.0;
-  TrackStyle style = inputs.style;
+  options.neutral_ground_m = inputs.neutral_ground_m;
+  if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = out.recorded.lowest_m;
+  if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = 0.0;
+  scene::TrackStyle style = inputs.style;
   // Per-track --color counts the command line's tracks; later files take the palette.
   if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
-  TrackSceneInputs scene_inputs;
-  scene_inputs.heights = inputs.heights;
-  scene_inputs.neutral_ground_m = neutral;
-  scene_inputs.analysis = inputs.analysis;
+  scene::CollectedDiagnostics build_diagnostics;
   try {
-    out.tracks = build_viewer_tracks(out.points.files, style, scene_inputs, warn);
+    out.tracks = scene::build_tracks(files, style, options, build_diagnostics, inputs.tracks_open);
   } catch (const std::exception& e) {
     out.errors.emplace_back(e.what());
     out.tracks.clear();
-    return out;
   }
-  if (inputs.tracks_open > 0 && style.colors.empty())
-    for (std::size_t i = 0; i < out.tracks.size(); ++i)
-      out.tracks[i].color_srgb = scene::palette_color(inputs.tracks_open + i);
+  out.warnings.insert(out.warnings.end(), build_diagnostics.warnings.begin(), build_diagnostics.warnings.end());
   return out;
 }
 

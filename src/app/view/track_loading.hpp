@@ -1,20 +1,22 @@
 #pragma once
-// Track files into viewer tracks, without GL (so a background thread can do it while the window
-// keeps drawing): each file read on its own, so one that cannot be read becomes an error line
-// and the others still load (issue 6: "everything already open stays").
+// Track files into scene tracks without GL (so a background thread can do it while the window
+// keeps drawing): each file read on its own, so one that cannot be read becomes an error line and
+// the others still load (everything already open stays).
 
 #include <future>
 #include <string>
 #include <vector>
 
-#include "app/scene_inputs.hpp"
-#include "app/view/viewer_model.hpp"
+#include "scene/style.hpp"
+#include "scene/track_building.hpp"
+#include "scene/track_files.hpp"
+#include "scene/track_set.hpp"
 
 namespace trailray::app::view {
 
 struct LoadedViewerTracks {
-  std::vector<ViewerTrack> tracks;
-  TrackPoints points;               // the readable files' points (framing, the sun's time)
+  std::vector<scene::Track> tracks;
+  scene::RecordedPoints recorded;   // the readable files' points (framing, the sun's time)
   std::vector<std::string> errors;  // one per file that failed, naming it
   std::vector<std::string> warnings;
 };
@@ -22,7 +24,7 @@ struct LoadedViewerTracks {
 struct TrackLoadInputs {
   track::ReadOptions read;
   track::AnalysisOptions analysis;
-  TrackStyle style;
+  scene::TrackStyle style;
   terrain::HeightSource* heights = nullptr;  // ground heights under the points (may load tiles)
   double neutral_ground_m = 0.0;             // NaN: the lowest point of the files read
   // Tracks already open: a new file continues the palette after them and, when --color gave

@@ -1,6 +1,6 @@
 #pragma once
 // Which track point is under the cursor in the 3D view: the visible tracks' points projected
-// with the camera on the CPU (ViewerTrack::ecef), the nearest one to the cursor within a few
+// with the camera on the CPU (their geometry), the nearest one to the cursor within a few
 // pixels. Points hidden by terrain count too (the track pass shows them as ghosts), but one in
 // front of the terrain wins: where a track passes in front of a ridge and again behind it, the
 // cursor on the near pass reads the near pass.
@@ -22,9 +22,8 @@ inline constexpr double kPickRadiusPx = 8.0;
 // terrain under the cursor (nullopt: none, nothing is hidden); points behind it by more than a
 // small tolerance are taken only when no point in front is within the radius.
 // HoverState::track is -1 when there is none.
-HoverState pick_track_point(const std::vector<ViewerTrack>& tracks, const scene::Camera& camera, double x_px,
-                            double y_px, double radius_px = kPickRadiusPx,
-                            std::optional<double> ground_depth_m = std::nullopt);
+HoverState pick_track_point(const scene::TrackSet& tracks, const scene::Camera& camera, double x_px, double y_px,
+                            double radius_px = kPickRadiusPx, std::optional<double> ground_depth_m = std::nullopt);
 
 // Where an ECEF point appears (pixel), nullopt behind the camera.
 std::optional<glm::dvec2> screen_position(const scene::Camera& camera, const glm::dvec3& ecef);

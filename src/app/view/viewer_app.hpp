@@ -1,8 +1,8 @@
 #pragma once
 // `trailray view`: the window, its frame loop and the scripted runs. Each frame: input (camera
-// gestures, keys, dropped files), the scene through the same SceneRenderer as `trailray render`
+// gestures, keys, dropped files), the scene drawn by the same renderer as `trailray render`
 // without waiting for tiles (they stream in coarse-to-fine, a loading indicator counts them),
-// blitted into the window, then the panels (draw_panels), the tooltip and the markers on top.
+// blitted into the window, then the panels, the tooltip and the markers on top.
 //
 // Scripted (`--frames N`, `--script FILE`, `--screenshot OUT.png`): the same loop, driven by the
 // commands instead of a person; pictures wait for the view's tiles, so they are complete.
@@ -11,12 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_inputs.hpp"
+#include "app/camera_options.hpp"
 #include "app/terrain_options.hpp"
-#include "app/track_style_options.hpp"
 #include "scene/camera.hpp"
+#include "scene/style.hpp"
 #include "track/io/load.hpp"
 #include "track/metrics.hpp"
+#include "track/statistics.hpp"
+#include "track/summary.hpp"
 
 namespace trailray::app::view {
 
@@ -24,8 +26,8 @@ struct ViewerOptions {
   std::vector<std::string> tracks;
   scene::Lens lens;  // the window's size and the field of view
   CameraRequest camera;
-  EffectArgs effects;
-  TrackStyle style;
+  scene::Style style;
+  std::optional<double> sun_time_unix;  // --time; nullopt: the tracks' day at noon
   track::ReadOptions read;
   track::AnalysisOptions analysis;
   TerrainOptions terrain;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "app/view/tooltip.hpp"
 #include "app/view/track_picking.hpp"
 
 namespace trailray::app::view {
@@ -27,7 +28,7 @@ void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius) {
 
 void replay_markers(const OverlayState& s, ImDrawList* list) {
   if (!s.model.clock.span()) return;
-  for (const ViewerTrack& t : s.model.tracks) {
+  for (const scene::Track& t : s.model.tracks.tracks()) {
     if (!t.visible) continue;
     const TrackPosition p = position_at(t, s.model.clock.time());
     if (!p.valid) continue;
@@ -38,9 +39,9 @@ void replay_markers(const OverlayState& s, ImDrawList* list) {
 void hover(const OverlayState& s, ImDrawList* list) {
   const HoverState& h = s.model.hover;
   if (h.track < 0 || h.track >= static_cast<int>(s.model.tracks.size())) return;
-  const ViewerTrack& t = s.model.tracks[static_cast<std::size_t>(h.track)];
-  if (h.point >= t.ecef.size()) return;
-  if (const auto px = screen_position(s.camera, t.ecef[h.point]))
+  const scene::Track& t = s.model.tracks[static_cast<std::size_t>(h.track)];
+  if (h.point >= t.point_count()) return;
+  if (const auto px = screen_position(s.camera, t.ecef(h.point)))
     marker(list, to_screen(*px), IM_COL32(20, 20, 20, 255), 4.0f);
   if (h.from_chart) return;
   if (s.cursor) {

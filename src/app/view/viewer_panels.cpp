@@ -11,7 +11,7 @@
 
 #include "app/view/panel_layout.hpp"
 #include "app/view/profile_chart.hpp"
-#include "app/view/viewer_model.hpp"
+#include "app/view/viewer_panels.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -39,12 +39,12 @@ bool name_combo(const char* label, int& index, const Names& names) {
 
 std::vector<std::string> track_names(const ViewerModel& model) {
   std::vector<std::string> names;
-  for (const ViewerTrack& t : model.tracks) names.push_back(t.name);
+  for (const scene::Track& t : model.tracks.tracks()) names.push_back(t.name);
   return names;
 }
 
 void colour_scale_controls(ViewerModel& model) {
-  ViewerSettings& s = model.settings;
+  scene::TrackStyle& s = model.settings.style.tracks;
   int metric = static_cast<int>(s.color_by);
   if (name_combo("colour by", metric, track::color_metric_names())) {
     const track::ColorMetric previous = s.color_by;
@@ -68,9 +68,9 @@ void colour_scale_controls(ViewerModel& model) {
     if (automatic)
       s.range.reset();
     else
-      s.range = effective_range(model.tracks, s).value_or(track::ValueRange{0.0, 1.0});
+      s.range = model.color_range().value_or(track::ValueRange{0.0, 1.0});
   }
-  const auto range = effective_range(model.tracks, s);
+  const auto range = model.color_range();
   const std::string unit(track::color_metric_unit(s.color_by));
   if (s.range) {
     double lo = s.range->min, hi = s.range->max;
@@ -85,18 +85,18 @@ void colour_scale_controls(ViewerModel& model) {
   }
 }
 
-void width_controls(ViewerSettings& s) {
+void width_controls(scene::TrackStyle& s) {
   float width = static_cast<float>(s.width.value);
-  const bool pixels = s.width.unit == render::TrackWidth::Unit::pixels;
+  const bool pixels = s.width.unit == scene::TrackWidth::Unit::pixels;
   if (ImGui::SliderFloat("width", &width, pixels ? 1.0f : 0.5f, pixels ? 30.0f : 200.0f, pixels ? "%.1f px" : "%.1f m",
                          ImGuiSliderFlags_Logarithmic) &&
       width > 0.0f)
     s.width.value = width;
   int unit = pixels ? 0 : 1;
   ImGui::SameLine();
-  if (ImGui::RadioButton("px", &unit, 0) && !pixels) s.width = {5.0, render::TrackWidth::Unit::pixels};
+  if (ImGui::RadioButton("px", &unit, 0) && !pixels) s.width = {5.0, scene::TrackWidth::Unit::pixels};
   ImGui::SameLine();
-  if (ImGui::RadioButton("m", &unit, 1) && pixels) s.width = {10.0, render::TrackWidth::Unit::metres};
+  if (ImGui::RadioButton("m", &unit, 1) && pixels) s.width = {10.0, scene::TrackWidth::Unit::metres};
 }
 
 // The panels' first placement for the window's size now (later the user's own).
@@ -124,7 +124,7 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
   if (model.loading) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading terrain...");
   if (model.tracks.empty()) ImGui::TextDisabled("No track: drop a GPX, IGC or TCX file onto the window.");
   for (std::size_t i = 0; i < model.tracks.size(); ++i) {
-    ViewerTrack& t = model.tracks[i];
+    scene::Track& t = model.tracks[i];
     ImGui::PushID(static_cast<int>(i));
     ImGui::Checkbox("##visible", &t.visible);
     ImGui::SameLine();
@@ -135,7 +135,7 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
       model.selected_track = static_cast<int>(i);
     ImGui::SameLine();
     if (ImGui::SmallButton("fly to")) actions.fly_to_track = static_cast<int>(i);
-    if (model.settings.color_by != track::ColorMetric::solid) {
+    if (model.settings.style.tracks.color_by != track::ColorMetric::solid) {
       ImGui::Indent();
       ImGui::Checkbox("by value", &t.by_value);
       ImGui::Unindent();
@@ -143,10 +143,10 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     ImGui::PopID();
   }
   ImGui::Separator();
-  ViewerSettings& s = model.settings;
+  scene::TrackStyle& s = model.settings.style.tracks;
   width_controls(s);
   colour_scale_controls(model);
-  ImGui::Checkbox("legend", &s.legend);
+  ImGui::Checkbox("legend", &model.settings.style.legend);
   ImGui::SameLine();
   if (ImGui::Checkbox("curtain", &s.curtain)) apply_curtain(model.tracks, s.curtain);
   ImGui::End();
@@ -163,7 +163,7 @@ void statistics_window(ViewerModel& model) {
   } else {
     int selected = std::clamp(model.selected_track, 0, static_cast<int>(model.tracks.size()) - 1);
     if (name_combo("track", selected, track_names(model))) model.selected_track = selected;
-    const ViewerTrack& t = model.tracks[static_cast<std::size_t>(selected)];
+    const scene::Track& t = model.tracks[static_cast<std::size_t>(selected)];
     ImGui::TextDisabled("%s", t.source.c_str());
     for (const std::string& line : statistics_lines(t.summary.clean)) ImGui::TextUnformatted(line.c_str());
   }
@@ -189,13 +189,14 @@ void shading_window(ViewerModel& model) {
   float hours = static_cast<float>((s.sun_time_unix - day_start) / 3600.0);
   if (ImGui::SliderFloat("time of day (UTC)", &hours, 0.0f, 24.0f, "%.2f h"))
     s.sun_time_unix = day_start + std::clamp(static_cast<double>(hours), 0.0, 24.0 - 1e-6) * 3600.0;
-  ImGui::Checkbox("shadows", &s.shadows);
-  ImGui::Checkbox("ambient occlusion (SSAO)", &s.ssao);
-  ImGui::Checkbox("atmosphere", &s.atmosphere);
-  ImGui::Checkbox("snow", &s.snow.enabled);
-  if (s.snow.enabled) {
-    float snowline = static_cast<float>(s.snow.snowline_m);
-    if (ImGui::SliderFloat("snowline", &snowline, 0.0f, 5000.0f, "%.0f m")) s.snow.snowline_m = snowline;
+  scene::Shading& shading = s.style.shading;
+  ImGui::Checkbox("shadows", &shading.shadows);
+  ImGui::Checkbox("ambient occlusion (SSAO)", &shading.ssao);
+  ImGui::Checkbox("atmosphere", &shading.atmosphere);
+  ImGui::Checkbox("snow", &shading.snow.enabled);
+  if (shading.snow.enabled) {
+    float snowline = static_cast<float>(shading.snow.snowline_m);
+    if (ImGui::SliderFloat("snowline", &snowline, 0.0f, 5000.0f, "%.0f m")) shading.snow.snowline_m = snowline;
   }
   ImGui::End();
 }
@@ -206,7 +207,7 @@ void occlusion_window(ViewerModel& model) {
     ImGui::End();
     return;
   }
-  render::TrackOcclusion& o = model.settings.occlusion;
+  scene::TrackOcclusion& o = model.settings.style.tracks.occlusion;
   ImGui::Checkbox("show hidden parts", &o.enabled);
   ImGui::SliderFloat("alpha", &o.alpha, 0.0f, 1.0f, "%.2f");
   float near_m = o.fade_near_m, far_m = o.fade_far_m;
@@ -229,9 +230,9 @@ void profiler_window(ViewerModel& model) {
   const ProfilerTable& p = model.profile;
   ImGui::Text("%.1f FPS (%.2f ms per frame)", p.fps, p.frame_ms);
   constexpr double kMiB = 1024.0 * 1024.0;
-  ImGui::Text("GPU terrain: meshes %.0f of %.0f MiB, imagery %.0f of %.0f MiB", static_cast<double>(p.mesh_bytes) / kMiB,
-              static_cast<double>(p.mesh_budget_bytes) / kMiB, static_cast<double>(p.imagery_bytes) / kMiB,
-              static_cast<double>(p.imagery_budget_bytes) / kMiB);
+  ImGui::Text("GPU terrain: meshes %.0f of %.0f MiB, imagery %.0f of %.0f MiB",
+              static_cast<double>(p.mesh_bytes) / kMiB, static_cast<double>(p.mesh_budget_bytes) / kMiB,
+              static_cast<double>(p.imagery_bytes) / kMiB, static_cast<double>(p.imagery_budget_bytes) / kMiB);
   if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
     ImGui::TableSetupColumn("pass");
     ImGui::TableSetupColumn("CPU ms");

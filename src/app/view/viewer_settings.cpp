@@ -1,48 +1,33 @@
-// ViewerSettings to and from what `render` uses: the command line's track style in, the track
-// pass's settings out.
+// The viewer model's shared computations: the cached colour scale, colouring every track.
 #include <cmath>
 
 #include "app/view/viewer_model.hpp"
+#include "scene/scene.hpp"
+#include "scene/track_building.hpp"
 
 namespace trailray::app::view {
 
-ViewerSettings settings_from_style(const TrackStyle& style) {
-  ViewerSettings s;
-  s.color_by = style.metric;
-  s.colormap = style.settings.colormap;
-  s.range = style.range;
-  s.width = style.settings.width;
-  s.occlusion = style.settings.occlusion;
-  s.curtain = style.settings.curtain;
-  s.legend = style.legend;
-  return s;
+const std::optional<track::ValueRange>& ColorRangeCache::get(const scene::TrackSet& tracks, const scene::Style& style) {
+  Key key{style.tracks.color_by, std::nullopt, {}};
+  if (style.tracks.range) key.range = std::pair{style.tracks.range->min, style.tracks.range->max};
+  key.tracks.reserve(tracks.size() * 2);
+  for (const scene::Track& t : tracks.tracks()) {
+    key.tracks.push_back(t.id);
+    key.tracks.push_back((t.revision << 2) | (t.visible ? 2u : 0u) | (t.by_value ? 1u : 0u));
+  }
+  if (!key_ || !(*key_ == key)) {
+    value_ = scene::color_range(tracks, style);
+    key_ = std::move(key);
+  }
+  return value_;
 }
 
-std::optional<track::ValueRange> effective_range(const std::vector<ViewerTrack>& tracks,
-                                                 const ViewerSettings& settings) {
-  if (settings.color_by == track::ColorMetric::solid) return std::nullopt;
-  if (settings.range) return settings.range;
-  std::vector<std::vector<float>> values;
-  for (const ViewerTrack& t : tracks) {
-    if (!t.visible || !t.by_value) continue;
-    for (const auto& line : t.geometry.segments)
-      if (!line.values.empty()) values.push_back(line.values);
-  }
-  return track::robust_range(values, track::color_metric_is_signed(settings.color_by));
+void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric) {
+  for (scene::Track& t : tracks.tracks()) scene::apply_color_metric(t, metric);
 }
 
-render::TrackSceneSettings track_scene_settings(const std::vector<ViewerTrack>& tracks,
-                                                const ViewerSettings& settings) {
-  render::TrackSceneSettings out;
-  out.width = settings.width;
-  out.occlusion = settings.occlusion;
-  out.curtain = settings.curtain;
-  out.colormap = settings.colormap;
-  if (const auto range = effective_range(tracks, settings)) {
-    out.value_min = static_cast<float>(range->min);
-    out.value_max = static_cast<float>(range->max);
-  }
-  return out;
+void apply_curtain(scene::TrackSet& tracks, bool on) {
+  for (scene::Track& t : tracks.tracks()) scene::apply_curtain(t, on);
 }
 
 }  // namespace trailray::app::view

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "app/view/viewer_model.hpp"
+#include "app/view/replay.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {
@@ -15,52 +15,74 @@ namespace {
 using namespace test_tracks;
 
 // 11 points 100 m and 10 s apart, then after a 10-minute gap 11 more.
-ViewerTrack gapped_track() {
+scene::Track gapped_track() {
   return viewer_tracks({file_of(
       "a.gpx", {track_of("a", {line(11, 100.0, 10.0, 500.0), line(11, 100.0, 10.0, 500.0, 5000.0, kT0 + 700.0)})})})[0];
 }
 
 TEST(PositionAt, InterpolatesBetweenPoints) {
-  const ViewerTrack t = gapped_track();
+  const scene::Track t = gapped_track();
   const TrackPosition p = position_at(t, kT0 + 25.0);
   ASSERT_TRUE(p.valid);
   EXPECT_TRUE(p.active);
   EXPECT_EQ(p.point, 2u);
   EXPECT_DOUBLE_EQ(p.fraction, 0.5);
-  const glm::dvec3 mid = (t.ecef[2] + t.ecef[3]) * 0.5;
+  const glm::dvec3 mid = (t.ecef(2) + t.ecef(3)) * 0.5;
   EXPECT_LT(glm::length(p.ecef - mid), 1e-6);
   // On a point exactly.
   const TrackPosition on = position_at(t, kT0 + 30.0);
   EXPECT_EQ(on.point, 3u);
   EXPECT_DOUBLE_EQ(on.fraction, 0.0);
-  EXPECT_EQ(on.ecef, t.ecef[3]);
+  EXPECT_EQ(on.ecef, t.ecef(3));
 }
 
 TEST(PositionAt, WaitsBeforeTheStartAfterTheEndAndInAGap) {
-  const ViewerTrack t = gapped_track();
+  const scene::Track t = gapped_track();
   const TrackPosition before = position_at(t, kT0 - 100.0);
   EXPECT_TRUE(before.valid);
   EXPECT_FALSE(before.active);
   EXPECT_EQ(before.point, 0u);
-  EXPECT_EQ(before.ecef, t.ecef[0]);
+  EXPECT_EQ(before.ecef, t.ecef(0));
   const TrackPosition after = position_at(t, kT0 + 10000.0);
   EXPECT_FALSE(after.active);
   EXPECT_EQ(after.point, 21u);
-  EXPECT_EQ(after.ecef, t.ecef[21]);
+  EXPECT_EQ(after.ecef, t.ecef(21));
   // In the gap (segment 1 ends at +100 s, segment 2 starts at +700 s): at segment 1's last point,
   // not somewhere on the straight line across the gap.
   const TrackPosition gap = position_at(t, kT0 + 400.0);
   EXPECT_TRUE(gap.active);
   EXPECT_EQ(gap.point, 10u);
   EXPECT_DOUBLE_EQ(gap.fraction, 0.0);
-  EXPECT_EQ(gap.ecef, t.ecef[10]);
+  EXPECT_EQ(gap.ecef, t.ecef(10));
   EXPECT_EQ(position_at(t, kT0 + 705.0).point, 11u);
 }
 
 TEST(PositionAt, TrackWithoutTimesHasNoPosition) {
-  const ViewerTrack t = viewer_tracks({file_of("r.gpx", {track_of("r", {line(5, 100.0, kNoTime, 500.0)})})})[0];
-  EXPECT_FALSE(position_at(t, kT0).valid);
-  EXPECT_FALSE(common_time_span({t}).has_value());
+  const scene::TrackSet tracks = viewer_tracks({file_of("r.gpx", {track_of("r", {line(5, 100.0, kNoTime, 500.0)})})});
+  EXPECT_FALSE(position_at(tracks[0], kT0).valid);
+  EXPECT_FALSE(common_time_span(tracks).has_value());
+}
+
+// The binary search over rising times finds what a scan in file order finds; times that go back
+// (a later segment starting before the previous one ended) take the scan.
+TEST(PositionAt, RisingTimesAreSearchedAndOthersScanned) {
+  const scene::Track rising = gapped_track();
+  ASSERT_TRUE(rising.times_rise);
+  ASSERT_EQ(rising.timed_points.size(), 22u);
+  scene::Track scanned = rising;
+  scanned.times_rise = false;  // the same track through the scan
+  for (double dt = -50.0; dt <= 1000.0; dt += 7.5) {
+    const TrackPosition a = position_at(rising, kT0 + dt), b = position_at(scanned, kT0 + dt);
+    EXPECT_EQ(a.point, b.point) << dt;
+    EXPECT_DOUBLE_EQ(a.fraction, b.fraction) << dt;
+    EXPECT_EQ(a.active, b.active) << dt;
+  }
+  // The second segment starts 50 s before the first ends: the scan stops at the first point
+  // after the time, so at +20 s the marker is on the first segment.
+  const scene::Track back = viewer_tracks({file_of(
+      "b.gpx", {track_of("b", {line(11, 100.0, 10.0, 500.0), line(11, 100.0, 10.0, 500.0, 5000.0, kT0 + 50.0)})})})[0];
+  EXPECT_FALSE(back.times_rise);
+  EXPECT_EQ(position_at(back, kT0 + 20.0).point, 2u);
 }
 
 TEST(CommonTimeSpan, FromEarliestStartToLatestEnd) {

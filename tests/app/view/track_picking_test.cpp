@@ -25,16 +25,24 @@ glm::dvec3 along(const scene::Camera& camera, double x, double y, double distanc
   return scene::to_dvec3(ray.origin) + distance_m * ray.direction;
 }
 
-ViewerTrack track_at(std::vector<glm::dvec3> points) {
-  ViewerTrack t;
-  t.ecef = std::move(points);
+// A track of one segment through the points (picking reads only the drawn geometry).
+scene::Track track_at(std::vector<glm::dvec3> points) {
+  scene::Track t;
+  t.segment_first = {0};
+  t.geometry.segments.push_back({std::move(points), {}, {}});
   return t;
+}
+
+scene::TrackSet set_of(std::vector<scene::Track> tracks) {
+  scene::TrackSet set;
+  for (scene::Track& t : tracks) set.add(std::move(t));
+  return set;
 }
 
 TEST(TrackPicking, TheNearestPointWithinTheRadius) {
   const scene::Camera camera = test_camera();
-  const std::vector<ViewerTrack> tracks = {
-      track_at({along(camera, 300, 200, 3000.0), along(camera, 306, 200, 3000.0), along(camera, 100, 50, 3000.0)})};
+  const scene::TrackSet tracks = set_of(
+      {track_at({along(camera, 300, 200, 3000.0), along(camera, 306, 200, 3000.0), along(camera, 100, 50, 3000.0)})});
   HoverState h = pick_track_point(tracks, camera, 304.0, 200.0);
   EXPECT_EQ(h.track, 0);
   EXPECT_EQ(h.point, 1u);  // 2 px away, the other 4 px
@@ -44,8 +52,8 @@ TEST(TrackPicking, TheNearestPointWithinTheRadius) {
 
 TEST(TrackPicking, HiddenTracksAreNotPicked) {
   const scene::Camera camera = test_camera();
-  std::vector<ViewerTrack> tracks = {track_at({along(camera, 300, 200, 3000.0)}),
-                                     track_at({along(camera, 303, 200, 2000.0)})};
+  scene::TrackSet tracks =
+      set_of({track_at({along(camera, 300, 200, 3000.0)}), track_at({along(camera, 303, 200, 2000.0)})});
   EXPECT_EQ(pick_track_point(tracks, camera, 303.0, 200.0).track, 1);
   tracks[1].visible = false;
   EXPECT_EQ(pick_track_point(tracks, camera, 303.0, 200.0).track, 0);
@@ -55,8 +63,7 @@ TEST(TrackPicking, HiddenTracksAreNotPicked) {
 // exactly on the far pass and the near pass 5 px off, the near pass is what the user sees there.
 TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
   const scene::Camera camera = test_camera();
-  const std::vector<ViewerTrack> tracks = {
-      track_at({along(camera, 320, 180, 4000.0), along(camera, 325, 180, 1500.0)})};
+  const scene::TrackSet tracks = set_of({track_at({along(camera, 320, 180, 4000.0), along(camera, 325, 180, 1500.0)})});
   const auto depth = [&](const glm::dvec3& p) { return camera.project(scene::to_ecef(p))->depth_m; };
   const double ridge_depth = depth(along(camera, 320, 180, 2500.0));
 
@@ -65,9 +72,12 @@ TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
   // The ridge hides the far pass: the near one wins although it is farther from the cursor.
   EXPECT_EQ(pick_track_point(tracks, camera, 320.0, 180.0, kPickRadiusPx, ridge_depth).point, 1u);
   // Terrain beyond both: nothing hidden, the nearest in pixels again.
-  EXPECT_EQ(pick_track_point(tracks, camera, 320.0, 180.0, kPickRadiusPx, depth(tracks[0].ecef[0]) + 500.0).point, 0u);
+  EXPECT_EQ(pick_track_point(tracks, camera, 320.0, 180.0, kPickRadiusPx,
+                             depth(tracks[0].geometry.segments[0].points_ecef[0]) + 500.0)
+                .point,
+            0u);
   // A hidden point is still picked when it is the only one (the pass draws it as a ghost).
-  const std::vector<ViewerTrack> far_only = {track_at({tracks[0].ecef[0]})};
+  const scene::TrackSet far_only = set_of({track_at({tracks[0].geometry.segments[0].points_ecef[0]})});
   const HoverState ghost = pick_track_point(far_only, camera, 320.0, 180.0, kPickRadiusPx, ridge_depth);
   EXPECT_EQ(ghost.track, 0);
   EXPECT_EQ(ghost.point, 0u);
@@ -76,9 +86,8 @@ TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
 // A point lying on the ground is not hidden by the ground it lies on.
 TEST(TrackPicking, APointOnTheGroundIsNotHiddenByIt) {
   const scene::Camera camera = test_camera();
-  const std::vector<ViewerTrack> tracks = {
-      track_at({along(camera, 320, 180, 5000.0), along(camera, 324, 180, 5002.0)})};
-  const double ground = camera.project(scene::to_ecef(tracks[0].ecef[0]))->depth_m;
+  const scene::TrackSet tracks = set_of({track_at({along(camera, 320, 180, 5000.0), along(camera, 324, 180, 5002.0)})});
+  const double ground = camera.project(scene::to_ecef(tracks[0].geometry.segments[0].points_ecef[0]))->depth_m;
   // Both count as visible: the nearer one in pixels wins (the one 2 m behind the ground is not
   // demoted).
   EXPECT_EQ(pick_track_point(tracks, camera, 323.0, 180.0, kPickRadiusPx, ground).point, 1u);

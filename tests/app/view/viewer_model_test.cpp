@@ -1,5 +1,5 @@
 // The viewer's track model: per-point arrays (distance, time, altitude, ground, speed), the same
-// geometry as build_track_scene, statistics of a range equal to `stats` of a file holding only
+// geometry whether built for the viewer or for `render`, statistics of a range equal to `stats` of a file holding only
 // that range, colour-by and curtain changes, the effective colour scale, and the tooltip's text.
 
 #include <gtest/gtest.h>
@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "app/view/tooltip.hpp"
 #include "app/view/viewer_model.hpp"
+#include "scene/scene.hpp"
+#include "scene/track_building.hpp"
 #include "track/summary.hpp"
 #include "viewer_test_tracks.hpp"
 
@@ -19,7 +22,7 @@ using namespace test_tracks;
 
 // Two segments of 11 points, 100 m and 10 s apart, the second 5 km further east and 10 minutes
 // later, at 500 m then 700 m.
-std::vector<LoadedTrackFile> two_segment_file() {
+std::vector<scene::LoadedTrackFile> two_segment_file() {
   return {file_of("walk.gpx", {track_of("walk", {line(11, 100.0, 10.0, 500.0),
                                                  line(11, 100.0, 10.0, 700.0, 5000.0, kT0 + 600.0)})})};
 }
@@ -27,7 +30,7 @@ std::vector<LoadedTrackFile> two_segment_file() {
 TEST(ViewerTrack, PerPointArraysFollowTheCleanedTrackAcrossSegments) {
   const auto tracks = viewer_tracks(two_segment_file());
   ASSERT_EQ(tracks.size(), 1u);
-  const ViewerTrack& t = tracks[0];
+  const scene::Track& t = tracks[0];
   EXPECT_EQ(t.name, "walk");
   EXPECT_EQ(t.source, "walk.gpx");
   ASSERT_EQ(t.point_count(), 22u);
@@ -60,14 +63,18 @@ TEST(ViewerTrack, PerPointArraysFollowTheCleanedTrackAcrossSegments) {
   EXPECT_NEAR(t.summary.clean.distance_2d_m, 2000.0, 10.0);
 }
 
-TEST(ViewerTrack, GeometryAndColoursAreBuildTrackScenes) {
+TEST(ViewerTrack, GeometryAndColoursAreTheSameAsRendersBuild) {
   const auto files = two_segment_file();
-  TrackStyleArgs args;
+  StyleArgs args;
   args.color_by = "speed";
   const auto tracks = viewer_tracks(files, args);
-  const TrackScene scene = build_track_scene(files, parse_track_style(args), {}, [](const std::string&) {});
+  struct {
+    std::vector<scene::Track> tracks;
+  } scene;
+  scene::CollectedDiagnostics ignored;
+  scene.tracks = scene::build_tracks(files, parse_style(args).tracks, {}, ignored);
   ASSERT_EQ(tracks.size(), scene.tracks.size());
-  const ViewerTrack& t = tracks[0];
+  const scene::Track& t = tracks[0];
   ASSERT_EQ(t.geometry.segments.size(), scene.tracks[0].geometry.segments.size());
   std::size_t flat = 0;
   for (std::size_t s = 0; s < t.geometry.segments.size(); ++s) {
@@ -76,7 +83,7 @@ TEST(ViewerTrack, GeometryAndColoursAreBuildTrackScenes) {
     ASSERT_EQ(mine.points_ecef.size(), theirs.points_ecef.size());
     for (std::size_t i = 0; i < mine.points_ecef.size(); ++i, ++flat) {
       EXPECT_EQ(mine.points_ecef[i], theirs.points_ecef[i]);
-      EXPECT_EQ(t.ecef[flat], theirs.points_ecef[i]);
+      EXPECT_EQ(t.ecef(flat), theirs.points_ecef[i]);
       EXPECT_EQ(mine.values[i], theirs.values[i]);
     }
   }
@@ -84,7 +91,7 @@ TEST(ViewerTrack, GeometryAndColoursAreBuildTrackScenes) {
 }
 
 TEST(ViewerTrack, RoutesAndSeveralTracksKeepRendersOrderAndNames) {
-  LoadedTrackFile f =
+  scene::LoadedTrackFile f =
       file_of("day.gpx", {track_of("", {line(3, 100.0, 10.0, 500.0)}), track_of("b", {line(4, 100.0, 10.0, 500.0)})});
   f.file.routes.push_back({"planned", line(5, 100.0, kNoTime, 500.0).points});
   const auto tracks = viewer_tracks({f});
@@ -100,7 +107,7 @@ TEST(ViewerTrack, RoutesAndSeveralTracksKeepRendersOrderAndNames) {
 
 TEST(ViewerTrack, RangeStatisticsAreStatsOfTheCutTrack) {
   const auto tracks = viewer_tracks(two_segment_file());
-  const ViewerTrack& t = tracks[0];
+  const scene::Track& t = tracks[0];
   // Points 4..15: the end of segment 1 and the start of segment 2.
   const auto cut = cut_track(t, 4, 15);
   ASSERT_EQ(cut.segments.size(), 2u);
@@ -139,7 +146,7 @@ TEST(ViewerTrack, ClimbOfARangeCountsOnlyItsPoints) {
   for (int i = 0; i <= 20; ++i)
     s.points[static_cast<std::size_t>(i)].ele = i <= 10 ? 100.0 + 10.0 * i : 200.0 - 10.0 * (i - 10);
   const auto tracks = viewer_tracks({file_of("hill.gpx", {track_of("hill", {s})})});
-  const ViewerTrack& t = tracks[0];
+  const scene::Track& t = tracks[0];
   const auto up = range_statistics(t, 0, 10);
   const auto down = range_statistics(t, 10, 20);
   ASSERT_TRUE(up && down);
@@ -153,25 +160,25 @@ TEST(ViewerTrack, ClimbOfARangeCountsOnlyItsPoints) {
 
 TEST(ViewerTrack, ColourByChangesValuesAndRevision) {
   auto tracks = viewer_tracks(two_segment_file());
-  ViewerTrack& t = tracks[0];
+  scene::Track& t = tracks[0];
   EXPECT_TRUE(t.geometry.segments[0].values.empty());
-  const std::size_t before = t.geometry_revision;
+  const std::uint64_t before = t.revision;
   apply_color_metric(tracks, track::ColorMetric::altitude);
-  EXPECT_GT(t.geometry_revision, before);
+  EXPECT_GT(t.revision, before);
   ASSERT_EQ(t.geometry.segments[1].values.size(), 11u);
   EXPECT_FLOAT_EQ(t.geometry.segments[1].values[3], 700.0f);
-  ViewerSettings settings;
-  settings.color_by = track::ColorMetric::altitude;
-  const auto range = effective_range(tracks, settings);
+  scene::Style settings;
+  settings.tracks.color_by = track::ColorMetric::altitude;
+  const auto range = scene::color_range(tracks, settings);
   ASSERT_TRUE(range.has_value());
   EXPECT_NEAR(range->min, 500.0, 1e-6);
   EXPECT_NEAR(range->max, 700.0, 1e-6);
   // A manual range wins; a hidden track (or one drawn solid) leaves the automatic range.
-  settings.range = track::ValueRange{0.0, 1000.0};
-  EXPECT_EQ(track_scene_settings(tracks, settings).value_max, 1000.0f);
-  settings.range.reset();
+  settings.tracks.range = track::ValueRange{0.0, 1000.0};
+  EXPECT_EQ(scene::color_range(tracks, settings)->max, 1000.0);
+  settings.tracks.range.reset();
   t.visible = false;
-  EXPECT_FALSE(effective_range(tracks, settings).has_value());
+  EXPECT_FALSE(scene::color_range(tracks, settings).has_value());
   // Back to solid: no values.
   apply_color_metric(tracks, track::ColorMetric::solid);
   EXPECT_TRUE(t.geometry.segments[0].values.empty());
@@ -179,9 +186,9 @@ TEST(ViewerTrack, ColourByChangesValuesAndRevision) {
 
 TEST(ViewerTrack, CurtainHeightsFromAltitudeAndGround) {
   auto tracks = viewer_tracks(two_segment_file());
-  ViewerTrack& t = tracks[0];
+  scene::Track& t = tracks[0];
   std::vector<std::vector<double>> ground{std::vector<double>(11, 420.0), std::vector<double>(11, track::kMissing)};
-  fill_point_arrays(t, ground);
+  scene::fill_point_arrays(t, ground);
   apply_curtain(tracks, true);
   ASSERT_EQ(t.geometry.segments[0].heights_above_ground_m.size(), 11u);
   EXPECT_FLOAT_EQ(t.geometry.segments[0].heights_above_ground_m[2], 80.0f);
@@ -192,8 +199,8 @@ TEST(ViewerTrack, CurtainHeightsFromAltitudeAndGround) {
 
 TEST(ViewerTrack, FillPointArraysRejectsMismatchedGround) {
   auto tracks = viewer_tracks(two_segment_file());
-  EXPECT_THROW(fill_point_arrays(tracks[0], {std::vector<double>(11, 0.0)}), std::invalid_argument);
-  EXPECT_THROW(fill_point_arrays(tracks[0], {std::vector<double>(11, 0.0), std::vector<double>(3, 0.0)}),
+  EXPECT_THROW(scene::fill_point_arrays(tracks[0], {std::vector<double>(11, 0.0)}), std::invalid_argument);
+  EXPECT_THROW(scene::fill_point_arrays(tracks[0], {std::vector<double>(11, 0.0), std::vector<double>(3, 0.0)}),
                std::invalid_argument);
 }
 
@@ -204,7 +211,7 @@ TEST(Tooltip, KnownPointReadsItsValuesWithUnits) {
     s.points[i].heart_rate = 140.0f;
   }
   auto tracks = viewer_tracks({file_of("climb.gpx", {track_of("climb", {s})})});
-  fill_point_arrays(tracks[0], {std::vector<double>(11, 450.0)});
+  scene::fill_point_arrays(tracks[0], {std::vector<double>(11, 450.0)});
   const auto lines = tooltip_lines(tracks[0], 4);
   ASSERT_EQ(lines.size(), 6u);
   EXPECT_EQ(lines[0], "time: 2024-06-18 10:00:40 UTC");

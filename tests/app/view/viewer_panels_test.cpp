@@ -16,8 +16,9 @@
 #include "app/view/profile_chart.hpp"
 #include "app/view/profiler_table.hpp"
 #include "app/view/viewer_model.hpp"
-#include "scene/colormap.hpp"
+#include "app/view/viewer_panels.hpp"
 #include "render/gl/frame_profiler.hpp"
+#include "scene/colormap.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {
@@ -26,7 +27,7 @@ namespace {
 using namespace test_tracks;
 
 // 101 points 10 m and 1 s apart, climbing 1 m a point from 1000 m.
-ViewerTrack ramp() {
+scene::Track ramp() {
   track::Segment s = line(101, 10.0, 1.0, 0.0);
   for (std::size_t i = 0; i < s.points.size(); ++i) s.points[i].ele = 1000.0 + static_cast<double>(i);
   return viewer_tracks({file_of("ramp.gpx", {track_of("ramp", {s})})})[0];
@@ -56,7 +57,7 @@ class HeadlessImGui : public ::testing::Test {
 };
 
 TEST(ChartMapping, MousePixelToNearestPoint) {
-  const ViewerTrack t = ramp();
+  const scene::Track t = ramp();
   const auto extent = chart_extent(t, ChartAxis::distance);
   ASSERT_TRUE(extent.has_value());
   EXPECT_DOUBLE_EQ(extent->x_min, 0.0);
@@ -78,7 +79,7 @@ TEST(ChartMapping, MousePixelToNearestPoint) {
 }
 
 TEST(ChartMapping, PointsWithoutTimeAreNotOnTheTimeAxis) {
-  ViewerTrack t = ramp();
+  scene::Track t = ramp();
   for (std::size_t i = 0; i < 10; ++i) t.elapsed_s[i] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(point_at_x(t, ChartAxis::time, 0.0), 10u);
   for (double& e : t.elapsed_s) e = std::numeric_limits<double>::quiet_NaN();
@@ -87,12 +88,13 @@ TEST(ChartMapping, PointsWithoutTimeAreNotOnTheTimeAxis) {
 }
 
 TEST(ChartMapping, PointColourFollowsTheColourScale) {
-  std::vector<ViewerTrack> tracks{ramp()};
+  scene::TrackSet tracks;
+  tracks.add(ramp());
   ViewerSettings settings;
   EXPECT_EQ(point_color(tracks[0], settings, std::nullopt, 5), tracks[0].color_srgb);
   apply_color_metric(tracks, track::ColorMetric::altitude);
-  settings.color_by = track::ColorMetric::altitude;
-  settings.colormap = scene::Colormap::viridis;
+  settings.style.tracks.color_by = track::ColorMetric::altitude;
+  settings.style.tracks.colormap = scene::Colormap::viridis;
   const track::ValueRange range{1000.0, 1100.0};
   EXPECT_EQ(point_color(tracks[0], settings, range, 0), scene::colormap_color(scene::Colormap::viridis, 0.0f));
   EXPECT_EQ(point_color(tracks[0], settings, range, 100), scene::colormap_color(scene::Colormap::viridis, 1.0f));
@@ -120,7 +122,7 @@ TEST_F(HeadlessImGui, EveryPanelDrawsWithAndWithoutTracks) {
   empty.settings.show_shading = empty.settings.show_occlusion = empty.settings.show_profiler = true;
   EXPECT_GT(frame(empty), 0);
   ViewerModel model;
-  model.tracks.push_back(ramp());
+  model.tracks.add(ramp());
   model.settings.show_shading = model.settings.show_occlusion = model.settings.show_profiler = true;
   model.errors.push_back("bad.gpx: not a track file");
   model.profile.rows.push_back({"tiles", 1.5, std::nullopt});
@@ -135,7 +137,7 @@ TEST_F(HeadlessImGui, EveryPanelDrawsWithAndWithoutTracks) {
 
 TEST_F(HeadlessImGui, DrawPanelsRunsTheReplayClock) {
   ViewerModel model;
-  model.tracks.push_back(ramp());
+  model.tracks.add(ramp());
   frame(model);
   model.clock.set_speed(10.0);
   model.clock.play();
@@ -145,7 +147,7 @@ TEST_F(HeadlessImGui, DrawPanelsRunsTheReplayClock) {
 
 TEST_F(HeadlessImGui, HoveringTheChartSetsHoverAndDraggingSelectsARange) {
   ViewerModel model;
-  model.tracks.push_back(ramp());
+  model.tracks.add(ramp());
   model.settings.show_tracks = model.settings.show_statistics = model.settings.show_replay = false;
   model.settings.show_menu = false;
   frame(model);
@@ -199,7 +201,7 @@ TEST_F(HeadlessImGui, HoveringTheChartSetsHoverAndDraggingSelectsARange) {
   EXPECT_NEAR(static_cast<double>(model.selection.first), 20.0, 1.0);
   EXPECT_NEAR(static_cast<double>(model.selection.last), 60.0, 1.0);
   ASSERT_TRUE(model.selection.statistics.has_value());
-  const auto expected = range_statistics(model.tracks[0], model.selection.first, model.selection.last);
+  const auto expected = scene::range_statistics(model.tracks[0], model.selection.first, model.selection.last);
   EXPECT_EQ(model.selection.statistics->points, model.selection.last - model.selection.first + 1);
   EXPECT_DOUBLE_EQ(model.selection.statistics->distance_2d_m, expected->distance_2d_m);
   EXPECT_NEAR(model.selection.statistics->elevation_gain_m.value_or(-1.0),

@@ -1,23 +1,26 @@
 #pragma once
 // The viewer's tracks built from the shared in-memory track files (app/track_model_builders.hpp).
 
-#include <cmath>
-#include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
+#include "app/style_options.hpp"
 #include "app/track_model_builders.hpp"
-#include "app/track_scene.hpp"
-#include "app/track_style_options.hpp"
 #include "app/view/viewer_model.hpp"
+#include "scene/track_building.hpp"
 
 namespace trailray::app::view::test_tracks {
 
 using namespace trailray::app::test_tracks;  // line, track_of, file_of, kLat, kLon, kT0, kNoTime
 
-inline std::vector<ViewerTrack> viewer_tracks(const std::vector<LoadedTrackFile>& files, TrackStyleArgs args = {}) {
-  return build_viewer_tracks(files, parse_track_style(args), TrackSceneInputs{}, [](const std::string&) {});
+// As the viewer builds them (inspect: summaries), without terrain.
+inline scene::TrackSet viewer_tracks(const std::vector<scene::LoadedTrackFile>& files, StyleArgs args = {}) {
+  scene::TrackBuildOptions options;
+  options.inspect = true;
+  scene::CollectedDiagnostics ignored;
+  scene::TrackSet set;
+  for (scene::Track& t : scene::build_tracks(files, parse_style(args).tracks, options, ignored)) set.add(std::move(t));
+  return set;
 }
 
 }  // namespace trailray::app::view::test_tracks

@@ -1,38 +1,43 @@
 // The replay: one clock for every track, and where each track is at a clock time.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
-#include "app/view/viewer_model.hpp"
+#include "app/view/replay.hpp"
 
 namespace trailray::app::view {
 namespace {
 
-TrackPosition on_point(const ViewerTrack& t, std::size_t i, bool active) {
-  return {true, active, i, 0.0, t.ecef.at(i)};
-}
+TrackPosition on_point(const scene::Track& t, std::size_t i, bool active) { return {true, active, i, 0.0, t.ecef(i)}; }
 
-}  // namespace
-
-TrackPosition position_at(const ViewerTrack& t, double time) {
-  const auto start = t.start_time();
-  const auto end = t.end_time();
-  if (!start || t.ecef.size() != t.point_count()) return {};
-  const std::size_t n = t.point_count();
-  // The last timed point at or before `time`, in file order (cleaned times rise within a
-  // segment; a later segment that starts earlier than the previous one ended stops the scan).
+// The last timed point at or before `time`, in file order (cleaned times rise within a segment;
+// a later segment that starts earlier than the previous one ended stops the scan).
+std::optional<std::size_t> last_point_before(const scene::Track& t, double time) {
+  if (t.times_rise) {
+    const auto after = std::upper_bound(t.timed_points.begin(), t.timed_points.end(), time,
+                                        [&t](double when, std::size_t i) { return when < t.time_unix_s[i]; });
+    if (after == t.timed_points.begin()) return std::nullopt;
+    return *std::prev(after);
+  }
   std::optional<std::size_t> before;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double ti = t.time_unix_s[i];
-    if (std::isnan(ti)) continue;
-    if (ti <= time)
+  for (std::size_t i : t.timed_points) {
+    if (t.time_unix_s[i] <= time)
       before = i;
     else if (before)
       break;
   }
-  if (!before) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (!std::isnan(t.time_unix_s[i])) return on_point(t, i, false);
-  }
+  return before;
+}
+
+}  // namespace
+
+TrackPosition position_at(const scene::Track& t, double time) {
+  const auto start = t.start_time();
+  const auto end = t.end_time();
+  if (!start) return {};
+  const std::size_t n = t.point_count();
+  const std::optional<std::size_t> before = last_point_before(t, time);
+  if (!before) return on_point(t, t.timed_points.front(), false);
   const std::size_t a = *before;
   const bool active = time >= *start && time <= *end;
   // The next timed point in the same segment: interpolate towards it; none: wait at `a`.
@@ -46,14 +51,14 @@ TrackPosition position_at(const ViewerTrack& t, double time) {
     const double f = std::clamp((time - ta) / (tj - ta), 0.0, 1.0);
     if (f <= 0.0) return on_point(t, a, active);
     // Untimed points between a and j (rare) are skipped: the marker moves straight from a to j.
-    return {true, active, a, f, t.ecef[a] + (t.ecef[j] - t.ecef[a]) * f};
+    return {true, active, a, f, t.ecef(a) + (t.ecef(j) - t.ecef(a)) * f};
   }
   return on_point(t, a, active);
 }
 
-std::optional<TimeSpan> common_time_span(const std::vector<ViewerTrack>& tracks) {
+std::optional<TimeSpan> common_time_span(const scene::TrackSet& tracks) {
   std::optional<TimeSpan> span;
-  for (const ViewerTrack& t : tracks) {
+  for (const scene::Track& t : tracks.tracks()) {
     const auto s = t.start_time();
     const auto e = t.end_time();
     if (!s || !e) continue;

@@ -1,10 +1,12 @@
-#include "app/track_style_options.hpp"
+#include "app/style_options.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <charconv>
 #include <cmath>
+
+#include "track/io/parse_util.hpp"
 
 namespace trailray::app {
 namespace {
@@ -17,7 +19,7 @@ bool parse_on_off(const std::string& text, const char* option) {
 
 }  // namespace
 
-void add_track_style_options(CLI::App& command, TrackStyleArgs& args) {
+void add_track_style_options(CLI::App& command, StyleArgs& args) {
   const std::string metrics = fmt::format("{}", fmt::join(track::color_metric_names(), "|"));
   command
       .add_option("--width", args.width,
@@ -59,51 +61,77 @@ void add_track_style_options(CLI::App& command, TrackStyleArgs& args) {
                    "A translucent wall from the track down to the terrain, coloured like the track (for flights)");
 }
 
-TrackStyle parse_track_style(const TrackStyleArgs& args) {
-  TrackStyle style;
-  auto width = render::parse_track_width(args.width);
+void add_shading_options(CLI::App& cmd, StyleArgs& args) {
+  cmd.add_option("--time", args.time, "Date and time for the sun, ISO 8601 (e.g. 2024-06-18T12:00:00Z)")
+      ->type_name("ISO8601");
+  cmd.add_flag("--no-ssao", args.no_ssao, "No ambient occlusion (valleys and hollows not darkened)");
+  cmd.add_flag("--no-atmosphere", args.no_atmosphere, "No aerial perspective or sky gradient (no haze, a flat sky)");
+  cmd.add_flag("--no-shadows", args.no_shadows, "No cast shadows (slopes still shaded by their angle to the sun)");
+  cmd.add_flag("--snow", args.snow,
+               "Snow cover: white from the snowline up, on slopes under about 40-50 degrees (rock faces stay bare)");
+  cmd.add_option("--snowline", args.snowline_m, "Altitude of the snowline for --snow, metres (default 2500)")
+      ->check(CLI::Range(-500.0, 9000.0))
+      ->type_name("M");
+}
+
+scene::Style parse_style(const StyleArgs& args) {
+  scene::Style out;
+  scene::TrackStyle& style = out.tracks;
+  auto width = scene::parse_track_width(args.width);
   if (!width.ok()) throw CLI::ValidationError(width.error);
-  style.settings.width = *width.value;
+  style.width = *width.value;
 
   const auto metric = track::parse_color_metric(args.color_by);
   if (!metric)
     throw CLI::ValidationError("--color-by", fmt::format("'{}' is not one of {}", args.color_by,
                                                          fmt::join(track::color_metric_names(), ", ")));
-  style.metric = *metric;
-  style.settings.colormap =
-      track::color_metric_is_signed(*metric) ? scene::Colormap::diverging : scene::Colormap::turbo;
+  style.color_by = *metric;
+  style.colormap = track::color_metric_is_signed(*metric) ? scene::Colormap::diverging : scene::Colormap::turbo;
   if (!args.colormap.empty()) {
     const auto map = scene::parse_colormap(args.colormap);
     if (!map)
       throw CLI::ValidationError(
           "--colormap", fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging", args.colormap));
-    style.settings.colormap = *map;
+    style.colormap = *map;
   }
   if (!args.range.empty()) {
     style.range = track::parse_value_range(args.range);
     if (!style.range)
-      throw CLI::ValidationError("--range",
-                                 fmt::format("'{}' is not MIN:MAX with finite numbers and MIN < MAX, e.g. 0:30", args.range));
+      throw CLI::ValidationError(
+          "--range", fmt::format("'{}' is not MIN:MAX with finite numbers and MIN < MAX, e.g. 0:30", args.range));
   }
   for (const std::string& text : args.colors) {
     const auto color = scene::parse_hex_color(text);
-    if (!color) throw CLI::ValidationError("--color", fmt::format("'{}' is not a colour like '#e6194b' or '#f80'", text));
+    if (!color)
+      throw CLI::ValidationError("--color", fmt::format("'{}' is not a colour like '#e6194b' or '#f80'", text));
     style.colors.push_back(*color);
   }
-  style.legend = parse_on_off(args.legend, "--legend");
-  style.settings.occlusion.enabled = parse_on_off(args.occlusion, "--occlusion");
+  out.legend = parse_on_off(args.legend, "--legend");
+  style.occlusion.enabled = parse_on_off(args.occlusion, "--occlusion");
   if (!(args.occluded_alpha >= 0.0 && args.occluded_alpha <= 1.0))
     throw CLI::ValidationError("--occluded-alpha", fmt::format("'{}' is not an opacity in 0..1", args.occluded_alpha));
-  style.settings.occlusion.alpha = static_cast<float>(args.occluded_alpha);
+  style.occlusion.alpha = static_cast<float>(args.occluded_alpha);
   const auto fade = track::parse_value_range(args.occlusion_fade);
   if (!fade || fade->min < 0.0)
-    throw CLI::ValidationError("--occlusion-fade",
-                               fmt::format("'{}' is not NEAR:FAR in metres with 0 <= NEAR < FAR, e.g. 100:1000",
-                                           args.occlusion_fade));
-  style.settings.occlusion.fade_near_m = static_cast<float>(fade->min);
-  style.settings.occlusion.fade_far_m = static_cast<float>(fade->max);
-  style.settings.curtain = args.curtain;
-  return style;
+    throw CLI::ValidationError(
+        "--occlusion-fade",
+        fmt::format("'{}' is not NEAR:FAR in metres with 0 <= NEAR < FAR, e.g. 100:1000", args.occlusion_fade));
+  style.occlusion.fade_near_m = static_cast<float>(fade->min);
+  style.occlusion.fade_far_m = static_cast<float>(fade->max);
+  style.curtain = args.curtain;
+  out.shading.ssao = !args.no_ssao;
+  out.shading.atmosphere = !args.no_atmosphere;
+  out.shading.shadows = !args.no_shadows;
+  out.shading.snow = {args.snow, args.snowline_m};
+  return out;
+}
+
+std::optional<double> parse_sun_time(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const auto t = track::parse_iso8601(text);
+  if (!t)
+    throw CLI::ValidationError("--time", "'" + text + "' is not an ISO 8601 date and time, e.g. 2024-06-18T12:00:00Z");
+  return *t;
 }
 
 }  // namespace trailray::app

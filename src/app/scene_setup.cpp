@@ -1,0 +1,72 @@
+#include "app/scene_setup.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "terrain/height_sampler.hpp"
+#include "terrain/source_factory.hpp"
+
+namespace trailray::app {
+
+SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
+                              const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
+                              scene::Diagnostics& diagnostics) {
+  const std::vector<scene::LoadedTrackFile> files = scene::read_track_files(paths, read, diagnostics);
+  SceneTracks out;
+  out.recorded = scene::recorded_points(files);
+  out.neutral_ground_m = std::isnan(out.recorded.lowest_m) ? 0.0 : out.recorded.lowest_m;
+  scene::TrackBuildOptions build = options;
+  build.neutral_ground_m = out.neutral_ground_m;
+  for (scene::Track& t : scene::build_tracks(files, style, build, diagnostics)) out.tracks.add(std::move(t));
+  return out;
+}
+
+double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded) {
+  return given ? *given : scene::default_sun_time(recorded);
+}
+
+TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagnostics& diagnostics) {
+  const terrain::TerrainConfig config = resolve_terrain_config(options);
+  terrain::SourceContext context{config.network, config.cache,
+                                 [&diagnostics](std::string w) { diagnostics.warning("terrain: " + w); }};
+  terrain::SourceSettings height_settings = config.terrain;
+  if (options.terrain_zoom) height_settings.max_zoom = *options.terrain_zoom;
+  TerrainSources sources;
+  sources.heights = terrain::open_height_source(height_settings, context);
+  // Imagery from --imagery, else the config file's, else the built-in default (README); `none`
+  // gives the hypsometric tint, which shows the relief best. Tiles it cannot deliver (offline,
+  // unreachable) are tinted too, after one warning.
+  sources.imagery = terrain::open_imagery_source(config.imagery, context);
+  return sources;
+}
+
+double ground_height_at(terrain::HeightSource* source, double lat, double lon) {
+  if (source == nullptr) return std::numeric_limits<double>::quiet_NaN();
+  terrain::HeightSampler sampler(*source);
+  return sampler.sample(lat, lon);
+}
+
+scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens,
+                             const scene::RecordedPoints& recorded, terrain::HeightSource* heights,
+                             const scene::KeptClearCorner& keep_clear, const std::optional<scene::ImageArea>& area) {
+  // The neutral ground's height: the tracks' lowest point (DESIGN.md), else sea level.
+  const double neutral = recorded.lowest_m;
+  if (request.placement || request.look_at) {
+    const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
+    double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
+    if (std::isnan(ground)) ground = std::isnan(neutral) ? 0.0 : neutral;
+    auto made = request.placement ? scene::camera_at(*request.placement, lens, ground)
+                                  : scene::camera_looking_at(*request.look_at, lens, ground);
+    if (!made.ok()) throw CLI::ValidationError(request.placement ? "--camera" : "--look-at", made.error);
+    return std::move(*made.value);
+  }
+  scene::FramingOptions framing;
+  framing.lens = lens;
+  framing.keep_clear = keep_clear;
+  framing.area = area;
+  auto framed = scene::frame_points(recorded.positions, framing);
+  if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
+  return framed.value->camera;
+}
+
+}  // namespace trailray::app

@@ -1,0 +1,57 @@
+#pragma once
+// From options to a scene, shared by the commands that draw (`render`, `view`): the terrain and
+// imagery sources, the tracks read and built, the sun's time, the first camera.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/camera_options.hpp"
+#include "app/terrain_options.hpp"
+#include "scene/diagnostics.hpp"
+#include "scene/framing.hpp"
+#include "scene/style.hpp"
+#include "scene/track_building.hpp"
+#include "scene/track_files.hpp"
+#include "scene/track_set.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::app {
+
+struct TerrainSources {
+  std::unique_ptr<terrain::HeightSource> heights;   // nullptr: --terrain none
+  std::unique_ptr<terrain::ImagerySource> imagery;  // nullptr: the hypsometric tint
+};
+// The sources of --terrain/--imagery, the configuration file and the defaults; the sources'
+// warnings go to `diagnostics`. Throws terrain::ConfigError and the sources' errors.
+TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagnostics& diagnostics);
+
+// The terrain height at a place from the source (NaN where it has none, or without a source).
+double ground_height_at(terrain::HeightSource* source, double lat, double lon);
+
+// Tracks read from files and built for the scene.
+struct SceneTracks {
+  scene::TrackSet tracks;
+  scene::RecordedPoints recorded;  // the files' points as recorded (framing, the sun's day)
+  double neutral_ground_m = 0.0;   // the lowest recorded height, else 0: under points without one
+};
+// Reads every file (the first that cannot be read throws, naming it) and builds its tracks
+// (build_tracks' errors).
+SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
+                              const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
+                              scene::Diagnostics& diagnostics);
+
+// The sun's time: --time when given, else the tracks' day at noon (scene::default_sun_time).
+double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded);
+
+// The first camera: the request's (never changed), else one framing the recorded points out of
+// `keep_clear` (where the legend will be drawn), into `area` of the image (nullopt: all of it).
+// Throws CLI::ValidationError for a camera the options make impossible, std::runtime_error when
+// the tracks cannot be framed.
+scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens,
+                             const scene::RecordedPoints& recorded, terrain::HeightSource* heights,
+                             const scene::KeptClearCorner& keep_clear = {},
+                             const std::optional<scene::ImageArea>& area = std::nullopt);
+
+}  // namespace trailray::app

@@ -1,0 +1,17 @@
+#pragma once
+// The numbers of one track point, as the 3D view's tooltip and `--script print-hover` print them.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scene/track_set.hpp"
+
+namespace trailray::app::view {
+
+// "time", "altitude", "height above ground", "speed", "vertical speed", "heart rate", one line
+// each as "label: value unit" (km/h, m/s, m, bpm; the time as "YYYY-MM-DD hh:mm:ss UTC"); a
+// missing value reads "—". Empty for an index out of range.
+std::vector<std::string> tooltip_lines(const scene::Track& track, std::size_t point);
+
+}  // namespace trailray::app::view

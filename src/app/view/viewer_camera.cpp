@@ -1,0 +1,128 @@
+// The viewer's camera: the first view, flights to a track, the replay's follow, and where a
+// framing may put the tracks (clear of the panels and the legend).
+#include <GeographicLib/Geocentric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "app/view/legend_overlay.hpp"
+#include "app/view/panel_layout.hpp"
+#include "app/view/viewer_shell.hpp"
+#include "scene/legend_content.hpp"
+
+namespace trailray::app::view {
+namespace {
+
+// The lowest height among the points (NaN: none has one).
+double lowest_height(const std::vector<scene::GeoPosition>& points) {
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& p : points)
+    if (!std::isnan(p.height_m) && !(p.height_m >= lowest)) lowest = p.height_m;
+  return lowest;
+}
+
+}  // namespace
+
+// The first view: the options' camera, else framed on the tracks where the panels and the
+// legend leave the window free; the pivot on the ground.
+CameraController first_view(const ViewerOptions& o, const scene::RecordedPoints& recorded,
+                            terrain::HeightSource* heights, double neutral, const FramingRoom& room) {
+  if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
+  if (recorded.positions.empty() && !o.camera.placement)
+    throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
+  const scene::Camera camera = initial_camera(o.camera, o.lens, recorded, heights, room.keep_clear, room.area);
+  // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
+  return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
+}
+
+void ViewerApp::fly_to_track(int index) {
+  if (index < 0 || index >= static_cast<int>(model_.tracks.size())) return;
+  const scene::Track& t = model_.tracks[static_cast<std::size_t>(index)];
+  std::vector<scene::GeoPosition> points;
+  points.reserve(t.point_count());
+  for (const scene::TrackPolyline& line : t.geometry.segments)
+    for (const glm::dvec3& p : line.points_ecef) {
+      scene::GeoPosition g;
+      GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, g.lat_deg, g.lon_deg, g.height_m);
+      points.push_back(g);
+    }
+  scene::FramingOptions framing;
+  framing.lens = controller_.lens();
+  framing.preferred_heading_deg = controller_.view().heading_deg;
+  const FramingRoom room = framing_room(framing.lens);
+  framing.keep_clear = room.keep_clear;
+  framing.area = room.area;
+  const auto framed = scene::frame_points(points, framing);
+  if (!framed.ok()) return;
+  double ground =
+      renderer_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
+  if (std::isnan(ground)) ground = lowest_height(points);
+  if (std::isnan(ground)) ground = neutral_;
+  controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
+}
+
+void ViewerApp::follow_replay() {
+  const ReplayClock& clock = model_.clock;
+  if (clock.follow == FollowMode::off || clock.follow_track < 0 ||
+      clock.follow_track >= static_cast<int>(model_.tracks.size()))
+    return;
+  const scene::Track& t = model_.tracks[static_cast<std::size_t>(clock.follow_track)];
+  const TrackPosition p = position_at(t, clock.time());
+  if (!p.valid) return;
+  scene::GeoPosition at;
+  GeographicLib::Geocentric::WGS84().Reverse(p.ecef.x, p.ecef.y, p.ecef.z, at.lat_deg, at.lon_deg, at.height_m);
+  std::optional<double> heading;
+  if (clock.follow == FollowMode::chase && p.point + 1 < t.point_count()) {
+    // Look along the way the track goes from here (the segment the marker is on).
+    const scene::EnuAxes enu = scene::enu_axes_at(at.lat_deg, at.lon_deg);
+    const glm::dvec3 d = t.ecef(p.point + 1) - t.ecef(p.point);
+    const double east = glm::dot(d, enu.east), north = glm::dot(d, enu.north);
+    if (std::hypot(east, north) > 0.1) heading = std::atan2(east, north) * 180.0 / 3.14159265358979323846;
+  }
+  controller_.follow(at, heading);
+}
+
+// The corner a framing keeps the tracks out of: the legend's, large enough for the legend window
+// (where it first appears, in the bottom-left corner) and for the legend of screenshots (drawn
+// there too), whichever is larger. Nothing when no legend is shown.
+scene::KeptClearCorner ViewerApp::legend_corner(const scene::Lens& lens) {
+  if (!model_.settings.style.legend) return {};
+  const scene::Scene s = scene();
+  const scene::KeptClearCorner picture =
+      scene::legend_clearance(scene::scene_legend_panel(lens.width_px, lens.height_px, s), lens.height_px);
+  if (!panels_) return picture;  // `hide-panels`: no legend window
+  const scene::KeptClearCorner window = scene::legend_clearance(
+      legend_overlay_rect(scene::color_legend_for(s.style.tracks, s.color_range),
+                          scene::track_key_for(s.style.tracks, model_.tracks), static_cast<float>(lens.width_px),
+                          static_cast<float>(lens.height_px)),
+      lens.height_px);
+  return {scene::ImageCorner::bottom_left, std::max(picture.width_px, window.width_px),
+          std::max(picture.height_px, window.height_px)};
+}
+
+// With the panels shown, the part of the window their first layout leaves free (right of the
+// panel column, below the menu, above the chart), clear of the replay panel's corner; the legend
+// window lies under the column, outside that area (if a wide key reaches into it, the area ends
+// above it). Without panels (`hide-panels`), the whole window clear of the legend.
+FramingRoom ViewerApp::framing_room(const scene::Lens& lens) {
+  const scene::KeptClearCorner legend = legend_corner(lens);
+  if (!panels_) return {legend, std::nullopt};
+  const ViewerSettings& s = model_.settings;
+  const auto w = static_cast<float>(lens.width_px), h = static_cast<float>(lens.height_px);
+  const float menu = s.show_menu ? kPanelTitleBarHeight : 0.0f;
+  const PanelLayout l = default_panel_layout(w, h, menu);
+  scene::ImageArea area{0.0, menu, w, h};
+  if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right();
+  if (s.show_chart) area.bottom_px = l.chart.y;
+  if (!legend.empty() && legend.width_px > area.left_px)
+    area.bottom_px = std::min(area.bottom_px, static_cast<double>(h) - legend.height_px);
+  // A window too small for the panels and a view (the free part misses the window's centre,
+  // which framing needs): frame on all of it.
+  if (!(area.left_px < 0.5 * w && area.bottom_px > 0.5 * h)) return {legend, std::nullopt};
+  scene::KeptClearCorner replay;
+  if (s.show_replay) replay = {scene::ImageCorner::top_right, w - l.replay.x, l.replay.bottom()};
+  return {replay, area};
+}
+
+}  // namespace trailray::app::view

@@ -1,0 +1,19 @@
+#pragma once
+// The viewer's windows (ImGui): track list, statistics, shading, occlusion, profiler, profile
+// chart, replay, errors. Each edits the model in place.
+
+#include "app/view/viewer_model.hpp"
+
+namespace trailray::app::view {
+
+// What the user asked for in the panels this frame, for the shell to carry out.
+struct PanelActions {
+  int fly_to_track = -1;  // "fly to" pressed on a track (-1: none)
+};
+
+// Draws every open window and applies their edits to the model. Call each frame between
+// ImGui::NewFrame and ImGui::Render; `wall_seconds` since the last frame drives the replay clock.
+// Colour-by and curtain changes recompute the tracks' values (their revisions change).
+PanelActions draw_panels(ViewerModel& model, double wall_seconds);
+
+}  // namespace trailray::app::view

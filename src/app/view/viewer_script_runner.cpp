@@ -1,0 +1,105 @@
+// `trailray view --script`: each command carried out on the viewer, then its frames drawn.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "app/view/tooltip.hpp"
+#include "app/view/track_picking.hpp"
+#include "app/view/viewer_shell.hpp"
+
+namespace trailray::app::view {
+
+void ViewerApp::run_script(const ViewScript& script) {
+  for (const ScriptCommand& c : script.commands) {
+    const int frames = run_script_command(c, script);
+    std::fflush(stdout);
+    for (int i = 0; i < frames; ++i) frame(0.0, true);
+  }
+}
+
+int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& script) {
+  const glm::dvec2 centre(controller_.lens().width_px / 2.0, controller_.lens().height_px / 2.0);
+  {
+    using Kind = ScriptCommand::Kind;
+    const auto fail = [&](const std::string& why) {
+      throw ScriptError(fmt::format("{}:{}: {}", script.file, c.line, why));
+    };
+    int frames = 1;
+    switch (c.kind) {
+      case Kind::orbit:
+        controller_.orbit(c.x, c.y);
+        break;
+      case Kind::pan:
+        controller_.pan(centre.x, centre.y, centre.x + c.x, centre.y + c.y);
+        break;
+      case Kind::zoom:
+        controller_.zoom(c.x, centre.x, centre.y);
+        break;
+      case Kind::select:
+        if (c.x >= static_cast<double>(model_.tracks.size()) || c.x != std::floor(c.x))
+          fail(fmt::format("select {}: there {} {} track{} (0..{})", c.x, model_.tracks.size() == 1 ? "is" : "are",
+                           model_.tracks.size(), model_.tracks.size() == 1 ? "" : "s",
+                           static_cast<int>(model_.tracks.size()) - 1));
+        model_.selected_track = static_cast<int>(c.x);
+        fly_to_track(model_.selected_track);
+        controller_.update(1e9);  // scripted flights arrive at once
+        break;
+      case Kind::hover:
+        script_cursor_ = glm::dvec2(c.x, c.y);
+        break;
+      case Kind::print_hover: {
+        const HoverState& h = model_.hover;
+        if (h.track < 0) {
+          fmt::print("hover: none\n");
+        } else {
+          const scene::Track& t = model_.tracks[static_cast<std::size_t>(h.track)];
+          fmt::print("hover: track {} '{}' point {}\n", h.track, t.name, h.point);
+          for (const std::string& line : tooltip_lines(t, h.point)) fmt::print("  {}\n", line);
+        }
+        break;
+      }
+      case Kind::print_marker: {
+        const scene::Camera camera = controller_.camera();
+        for (std::size_t i = 0; i < model_.tracks.size(); ++i) {
+          const TrackPosition p = position_at(model_.tracks[i], model_.clock.time());
+          const auto s = p.valid ? screen_position(camera, p.ecef) : std::nullopt;
+          if (s)
+            fmt::print("marker: track {} point {} at {:.1f} {:.1f}\n", i, p.point, s->x, s->y);
+          else
+            fmt::print("marker: track {} none\n", i);
+        }
+        break;
+      }
+      case Kind::print_camera: {
+        const scene::LookAt& v = controller_.view();
+        fmt::print("camera: pivot {:.6f},{:.6f},{:.1f} distance {:.1f} heading {:.2f} pitch {:.2f}\n", v.target.lat_deg,
+                   v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
+        break;
+      }
+      case Kind::play:
+        model_.clock.play();
+        model_.clock.advance(c.x);
+        model_.clock.pause();
+        break;
+      case Kind::speed:
+        model_.clock.set_speed(c.x);
+        break;
+      case Kind::wait:
+        frames = static_cast<int>(c.x);
+        break;
+      case Kind::screenshot:
+        screenshot(c.path);
+        break;
+      case Kind::window_screenshot:
+        window_grab_ = c.path;
+        break;
+      case Kind::hide_panels:
+        panels_ = false;
+        break;
+    }
+    return frames;
+  }
+}
+
+}  // namespace trailray::app::view

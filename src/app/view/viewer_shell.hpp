@@ -1,0 +1,90 @@
+#pragma once
+// The viewer's shell (internal to app/view): the window, the renderer and the model together.
+// Its parts live in viewer_app.cpp (start, frame, pictures, loop), viewer_input.cpp (mouse, keys,
+// dropped files, hover), viewer_camera.cpp (first view, fly-to, replay follow, where framing may
+// put the tracks) and viewer_script_runner.cpp (--script).
+
+#include <future>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/scene_frames.hpp"
+#include "app/scene_setup.hpp"
+#include "app/terminal_diagnostics.hpp"
+#include "app/view/camera_controller.hpp"
+#include "app/view/track_loading.hpp"
+#include "app/view/view_script.hpp"
+#include "app/view/viewer_app.hpp"
+#include "app/view/viewer_model.hpp"
+#include "render/gl/frame_profiler.hpp"
+#include "render/platform/imgui_layer.hpp"
+#include "render/platform/window.hpp"
+#include "render/scene_renderer.hpp"
+#include "scene/framing.hpp"
+#include "scene/scene.hpp"
+
+namespace trailray::app::view {
+
+// Where a framing may put the tracks: out of a corner, within an area of the window.
+struct FramingRoom {
+  scene::KeptClearCorner keep_clear;
+  std::optional<scene::ImageArea> area;
+};
+
+class ViewerApp {
+ public:
+  explicit ViewerApp(const ViewerOptions& options);
+  int run();
+
+ private:
+  // One frame: input (unless scripted), scene, panels, overlays, swap. `wall_s` drives the
+  // replay clock and the camera's flights.
+  void frame(double wall_s, bool scripted);
+  void draw_scene_into_window(std::uint32_t width, std::uint32_t height, double wall_s);
+  void handle_mouse(const scene::Camera& camera);
+  void handle_keys(double wall_s);
+  void take_dropped_files();
+  void adopt(LoadedViewerTracks loaded);
+  scene::Scene scene();
+  scene::KeptClearCorner legend_corner(const scene::Lens& lens);
+  FramingRoom framing_room(const scene::Lens& lens);
+  void update_hover(double x_px, double y_px, const scene::Camera& camera);
+  void fly_to_track(int index);
+  void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
+  // `status`: say so in the window too (the P key; not scripted pictures).
+  void screenshot(const std::string& path, bool status = false);
+  void run_script(const ViewScript& script);
+  // Carries out one command; the frames to draw after it.
+  int run_script_command(const ScriptCommand& command, const ViewScript& script);
+  void print_frame_times(const std::vector<double>& all_ms, const std::vector<double>& settled_ms);
+  double sun_unix_time() const;
+  TrackLoadInputs load_inputs(double neutral) const;
+
+  ViewerOptions options_;
+  TerminalDiagnostics diagnostics_;
+  TerrainSources sources_;
+  double neutral_ = 0.0;
+  scene::RecordedPoints recorded_;
+  ViewerModel model_;
+  // GL objects after the window (the context) and before nothing else: destroyed first.
+  render::Window window_;
+  render::ImGuiLayer imgui_;
+  render::SceneRenderer renderer_;
+  render::FrameProfiler profiler_;
+  SceneFrames frames_;
+  CameraController controller_;
+  std::vector<std::future<LoadedViewerTracks>> loading_;
+  terrain::LoadProgress progress_;
+  std::string status_;                       // a line at the bottom (screenshot written, ...)
+  std::optional<glm::dvec2> script_cursor_;  // `hover X Y`
+  bool panels_ = true;                       // false: `hide-panels`
+  std::string window_grab_;                  // `window-screenshot PATH`: after the next frame's UI
+};
+
+// The first view: the options' camera, else framed on the tracks where the panels and the
+// legend leave the window free; the pivot on the ground.
+CameraController first_view(const ViewerOptions& options, const scene::RecordedPoints& recorded,
+                            terrain::HeightSource* heights, double neutral, const FramingRoom& room);
+
+}  // namespace trailray::app::view

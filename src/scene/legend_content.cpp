@@ -1,0 +1,76 @@
+#include "scene/legend_content.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "scene/text_raster.hpp"
+
+namespace trailray::scene {
+namespace {
+
+const TrackSet kNoTracks;
+
+const TrackSet& tracks_of(const Scene& scene) { return scene.tracks != nullptr ? *scene.tracks : kNoTracks; }
+
+}  // namespace
+
+std::optional<ColorLegend> color_legend_for(const TrackStyle& style, const std::optional<track::ValueRange>& range) {
+  const track::ColorMetric metric = style.color_by;
+  if (metric == track::ColorMetric::solid || !range) return std::nullopt;
+  ColorLegend legend;
+  const std::string_view unit =
+      metric == track::ColorMetric::time ? std::string_view("h:mm") : track::color_metric_unit(metric);
+  legend.title = unit.empty() ? std::string(track::color_metric_label(metric))
+                              : fmt::format("{} ({})", track::color_metric_label(metric), unit);
+  legend.map = style.colormap;
+  legend.min_label = track::format_color_value(metric, range->min);
+  legend.max_label = track::format_color_value(metric, range->max);
+  // A signed metric's zero (the diverging map's white) is worth a label of its own.
+  if (range->min < 0.0 && range->max > 0.0 && track::color_metric_is_signed(metric))
+    legend.ticks.push_back({-range->min / (range->max - range->min), "0"});
+  return legend;
+}
+
+std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet& tracks) {
+  std::vector<TrackKeyEntry> key;
+  if (style.color_by != track::ColorMetric::solid) return key;
+  for (const Track& t : tracks.tracks())
+    if (t.visible) key.push_back({t.name, t.color_srgb});
+  if (key.size() < 2) key.clear();
+  return key;
+}
+
+void draw_scene_legend(RgbaImage& image, const Scene& scene) {
+  if (!scene.style.legend) return;
+  const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
+  const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
+  if (!legend && key.empty()) return;
+  TextRasterizer text;
+  if (legend) draw_color_legend(image, text, *legend);
+  if (!key.empty()) draw_track_key(image, text, key);
+}
+
+PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene) {
+  if (!scene.style.legend) return {};
+  const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
+  const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
+  // As draw_scene_legend: a colour bar or a key, never both (one is for a metric, the other for
+  // solid colours).
+  TextRasterizer text;
+  if (legend) return color_legend_panel(width, height, text, *legend);
+  if (!key.empty()) return track_key_panel(width, height, text, key);
+  return {};
+}
+
+KeptClearCorner legend_clearance(const PixelRect& panel, std::uint32_t height) {
+  if (panel.empty()) return {};
+  // The gaps the panel keeps from the left and bottom edges, kept again between it and the
+  // tracks: a track drawn right up to the panel's edge would look tucked under it.
+  const int left_gap = std::max(panel.x, 0);
+  const int bottom_gap = std::max(static_cast<int>(height) - panel.bottom(), 0);
+  return {ImageCorner::bottom_left, static_cast<double>(panel.right() + left_gap),
+          static_cast<double>(static_cast<int>(height) - panel.y + bottom_gap)};
+}
+
+}  // namespace trailray::scene

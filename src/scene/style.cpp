@@ -1,0 +1,37 @@
+#include "scene/style.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace trailray::scene {
+
+Result<TrackWidth> parse_track_width(std::string_view text) {
+  const auto fail = [&] {
+    return Result<TrackWidth>{std::nullopt, fmt::format("--width: '{}' is not a width: a positive number of metres "
+                                                        "or pixels, e.g. 8m or 6px",
+                                                        text)};
+  };
+  std::string_view rest = text;
+  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), value);
+  if (ec != std::errc() || end == rest.data()) return fail();
+  std::string_view unit(end, static_cast<std::size_t>(rest.data() + rest.size() - end));
+  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  while (!unit.empty() && unit.back() == ' ') unit.remove_suffix(1);
+  TrackWidth width;
+  width.value = value;
+  if (unit == "m")
+    width.unit = TrackWidth::Unit::metres;
+  else if (unit == "px")
+    width.unit = TrackWidth::Unit::pixels;
+  else
+    return fail();
+  if (!std::isfinite(value) || !(value > 0.0) || value > 1.0e6) return fail();
+  return {width, {}};
+}
+
+}  // namespace trailray::scene

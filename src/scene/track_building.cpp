@@ -1,0 +1,264 @@
+#include "scene/track_building.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "geo/wgs84.hpp"
+#include "scene/camera.hpp"
+#include "scene/colormap.hpp"
+#include "terrain/height_sampler.hpp"
+#include "track/clean.hpp"
+
+namespace trailray::scene {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double as_double(float v) { return std::isnan(v) ? kNaN : static_cast<double>(v); }
+
+// A file's tracks and routes (a route as a track of one segment), with the names they are shown by.
+struct NamedTrack {
+  std::string name;
+  const track::Track* track = nullptr;
+  track::Track route_as_track;
+  const track::Track& raw() const { return track != nullptr ? *track : route_as_track; }
+};
+
+std::vector<NamedTrack> tracks_of(const LoadedTrackFile& loaded) {
+  std::vector<NamedTrack> out;
+  const std::string stem = std::filesystem::path(loaded.path).filename().string();
+  std::size_t number = 0;
+  const auto name_for = [&](const std::string& own) {
+    ++number;
+    if (!own.empty()) return own;
+    return number == 1 && loaded.file.tracks.size() + loaded.file.routes.size() == 1
+               ? stem
+               : fmt::format("{} #{}", stem, number);
+  };
+  for (const track::Track& t : loaded.file.tracks) out.push_back({name_for(t.name), &t, {}});
+  for (const track::Route& r : loaded.file.routes) {
+    NamedTrack named{name_for(r.name), nullptr, {}};
+    named.route_as_track.name = r.name;
+    named.route_as_track.segments.push_back({r.points});
+    out.push_back(std::move(named));
+  }
+  return out;
+}
+
+bool needs_ground(const track::Track& t, const TrackStyle& style) {
+  if (style.color_by == track::ColorMetric::agl || style.curtain) return true;
+  for (const auto& s : t.segments)
+    for (const auto& p : s.points)
+      if (!p.has_ele()) return true;
+  return false;
+}
+
+// The drawn polylines: each point in ECEF (on the ground, or the neutral ground, without an
+// elevation), the metric's values, curtain heights.
+void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
+                   const std::vector<std::vector<float>>& values, const TrackStyle& style, double neutral_ground_m) {
+  for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
+    const auto& points = t.cleaned.segments[s].points;
+    if (points.empty()) continue;
+    TrackPolyline line;
+    line.points_ecef.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const track::TrackPoint& p = points[i];
+      double under = ground.empty() ? kNaN : ground[s][i];
+      if (std::isnan(under)) under = neutral_ground_m;
+      const double height = p.has_ele() ? p.ele : under;
+      line.points_ecef.push_back(to_dvec3(ecef_from({p.lat, p.lon, height})));
+      if (style.curtain) line.heights_above_ground_m.push_back(static_cast<float>(height - under));
+    }
+    if (!values.empty()) line.values = values[s];
+    t.geometry.segments.push_back(std::move(line));
+  }
+}
+
+void assign_colors(std::vector<Track>& tracks, const TrackStyle& style, std::size_t first_palette_index) {
+  const auto& colors = style.colors;
+  if (!colors.empty() && colors.size() != 1 && colors.size() != tracks.size())
+    throw std::runtime_error(fmt::format("--color was given {} times for {} tracks: give it once, or once per track",
+                                         colors.size(), tracks.size()));
+  for (std::size_t i = 0; i < tracks.size(); ++i)
+    tracks[i].color_srgb = colors.empty()       ? palette_color(first_palette_index + i)
+                           : colors.size() == 1 ? colors.front()
+                                                : colors[i];
+}
+
+}  // namespace
+
+void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground) {
+  if (t.metrics.segments.size() != t.cleaned.segments.size())
+    throw std::invalid_argument(fmt::format("track '{}': metrics for {} segments, the track has {}", t.name,
+                                            t.metrics.segments.size(), t.cleaned.segments.size()));
+  if (!ground.empty() && ground.size() != t.cleaned.segments.size())
+    throw std::invalid_argument(fmt::format("track '{}': ground heights for {} segments, the track has {}", t.name,
+                                            ground.size(), t.cleaned.segments.size()));
+  const std::size_t n = t.cleaned.point_count();
+  t.segment_first.clear();
+  for (auto* v : {&t.distance_m, &t.time_unix_s, &t.elapsed_s, &t.altitude_m, &t.ground_m, &t.speed_kmh, &t.vspeed_ms,
+                  &t.heart_rate_bpm}) {
+    v->clear();
+    v->reserve(n);
+  }
+  for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
+    const auto& points = t.cleaned.segments[s].points;
+    const track::SegmentMetrics& m = t.metrics.segments[s];
+    if (m.size() != points.size())
+      throw std::invalid_argument(fmt::format("track '{}' segment {}: metrics for {} points, it has {}", t.name, s + 1,
+                                              m.size(), points.size()));
+    if (!ground.empty() && ground[s].size() != points.size())
+      throw std::invalid_argument(fmt::format("track '{}' segment {}: ground heights for {} points, it has {}", t.name,
+                                              s + 1, ground[s].size(), points.size()));
+    if (points.empty()) continue;
+    t.segment_first.push_back(t.distance_m.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const track::TrackPoint& p = points[i];
+      t.distance_m.push_back(m.distance_m[i]);
+      t.time_unix_s.push_back(p.time);
+      t.elapsed_s.push_back(m.elapsed_s[i]);
+      t.altitude_m.push_back(p.ele);
+      t.ground_m.push_back(ground.empty() ? kNaN : ground[s][i]);
+      t.speed_kmh.push_back(m.speed_ms[i] * 3.6);
+      t.vspeed_ms.push_back(m.vspeed_ms[i]);
+      t.heart_rate_bpm.push_back(as_double(p.heart_rate));
+    }
+  }
+  t.timed_points.clear();
+  t.times_rise = true;
+  for (std::size_t i = 0; i < t.time_unix_s.size(); ++i) {
+    if (std::isnan(t.time_unix_s[i])) continue;
+    if (!t.timed_points.empty() && t.time_unix_s[i] < t.time_unix_s[t.timed_points.back()]) t.times_rise = false;
+    t.timed_points.push_back(i);
+  }
+}
+
+std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, terrain::HeightSource* heights) {
+  std::vector<std::vector<double>> out;
+  std::unique_ptr<terrain::HeightSampler> sampler;
+  if (heights != nullptr) sampler = std::make_unique<terrain::HeightSampler>(*heights);
+  for (const auto& s : t.segments) {
+    if (!sampler) {
+      out.emplace_back(s.points.size(), kNaN);
+      continue;
+    }
+    std::vector<geo::LatLon> points;
+    points.reserve(s.points.size());
+    for (const auto& p : s.points) points.push_back({p.lat, p.lon});
+    out.push_back(sampler->sample(points));
+  }
+  return out;
+}
+
+std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
+                                const TrackBuildOptions& options, Diagnostics& diagnostics,
+                                std::size_t first_palette_index) {
+  if (style.color_by == track::ColorMetric::agl && options.heights == nullptr)
+    throw std::runtime_error("--color-by agl needs terrain heights: give --terrain (a DEM, tiles or a URL)");
+  const bool by_value = style.color_by != track::ColorMetric::solid;
+  std::vector<Track> tracks;
+  std::size_t points_with_value = 0;
+  for (const LoadedTrackFile& loaded : files) {
+    for (const NamedTrack& named : tracks_of(loaded)) {
+      Track t;
+      t.name = named.name;
+      t.source = loaded.path;
+      track::CleanReport report;
+      t.cleaned = track::clean_track(named.raw(), options.analysis.clean, report);
+      t.metrics = track::compute_metrics(t.cleaned, options.analysis.metrics);
+      std::vector<std::vector<double>> ground;
+      if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))
+        ground = sample_ground_heights(t.cleaned, options.heights);
+      std::vector<std::vector<float>> values;
+      if (by_value)
+        values = track::color_values(t.cleaned, t.metrics, style.color_by, ground.empty() ? nullptr : &ground);
+      fill_geometry(t, ground, values, style, options.neutral_ground_m);
+      points_with_value += t.points_with_value();
+      // Ground heights are kept only where they were sampled for every point of a source.
+      fill_point_arrays(t, options.heights != nullptr ? ground : std::vector<std::vector<double>>{});
+      if (options.inspect)
+        t.summary = track::summarize_cleaned_track(named.raw(), t.cleaned, report, t.metrics, options.analysis);
+      tracks.push_back(std::move(t));
+    }
+  }
+  assign_colors(tracks, style, first_palette_index);
+  if (by_value && !style.range && points_with_value == 0)
+    diagnostics.warning(
+        fmt::format("no point has a value for --color-by {} (e.g. no times, or no such sensor): the "
+                    "tracks are drawn in the neutral colour",
+                    track::color_metric_name(style.color_by)));
+  return tracks;
+}
+
+void set_ground_heights(Track& t, terrain::HeightSource& heights) {
+  std::size_t flat = 0;
+  for (const auto& g : sample_ground_heights(t.cleaned, &heights))
+    for (double h : g) t.ground_m.at(flat++) = h;
+}
+
+void apply_color_metric(Track& t, track::ColorMetric metric) {
+  std::vector<std::vector<double>> ground;
+  if (metric == track::ColorMetric::agl) {
+    std::size_t flat = 0;
+    for (const auto& s : t.cleaned.segments) {
+      ground.emplace_back();
+      for (std::size_t i = 0; i < s.points.size(); ++i) ground.back().push_back(t.ground_m.at(flat++));
+    }
+  }
+  const auto values = track::color_values(t.cleaned, t.metrics, metric, ground.empty() ? nullptr : &ground);
+  std::size_t line = 0;
+  for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
+    if (t.cleaned.segments[s].points.empty()) continue;
+    auto& target = t.geometry.segments.at(line++).values;
+    if (metric == track::ColorMetric::solid)
+      target.clear();
+    else
+      target = values[s];
+  }
+  t.bump_revision();
+}
+
+void apply_curtain(Track& t, bool on) {
+  for (std::size_t line = 0; line < t.geometry.segments.size() && line < t.segment_first.size(); ++line) {
+    auto& heights = t.geometry.segments[line].heights_above_ground_m;
+    heights.clear();
+    if (!on) continue;
+    const std::size_t first = t.segment_first[line];
+    const std::size_t count = t.geometry.segments[line].points_ecef.size();
+    for (std::size_t i = first; i < first + count && i < t.point_count(); ++i)
+      heights.push_back(static_cast<float>(t.altitude_m[i] - t.ground_m[i]));
+  }
+  t.bump_revision();
+}
+
+track::Track cut_track(const Track& t, std::size_t first, std::size_t last) {
+  track::Track out;
+  out.name = t.name;
+  std::size_t flat = 0;
+  for (const auto& s : t.cleaned.segments) {
+    track::Segment piece;
+    for (const auto& p : s.points) {
+      if (flat >= first && flat <= last) piece.points.push_back(p);
+      ++flat;
+    }
+    if (!piece.points.empty()) out.segments.push_back(std::move(piece));
+  }
+  return out;
+}
+
+std::optional<track::Statistics> range_statistics(const Track& t, std::size_t first, std::size_t last,
+                                                  const track::AnalysisOptions& analysis) {
+  if (t.point_count() == 0) return std::nullopt;
+  last = std::min(last, t.point_count() - 1);
+  if (first > last) return std::nullopt;
+  const track::Track cut = cut_track(t, first, last);
+  return track::track_statistics(cut, track::compute_metrics(cut, analysis.metrics), analysis.statistics);
+}
+
+}  // namespace trailray::scene

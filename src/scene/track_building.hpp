@@ -1,0 +1,63 @@
+#pragma once
+// From track files to scene tracks: each track (and route) cleaned and measured once; its points
+// placed in ECEF once (points without an elevation on the terrain, or the neutral ground); the
+// colour values of the style's metric; curtain heights; the per-point numbers the viewer reads.
+// Segments stay apart: gaps are never bridged.
+
+#include <vector>
+
+#include "scene/diagnostics.hpp"
+#include "scene/style.hpp"
+#include "scene/track_files.hpp"
+#include "scene/track_set.hpp"
+#include "terrain/tile_source.hpp"
+#include "track/statistics.hpp"
+
+namespace trailray::scene {
+
+struct TrackBuildOptions {
+  terrain::HeightSource* heights = nullptr;  // nullptr: no terrain (agl impossible)
+  double neutral_ground_m = 0.0;             // where there is no terrain height
+  track::AnalysisOptions analysis;           // cleaning and metric windows
+  // For a viewer that inspects the tracks: each track's summary (raw and clean statistics) and
+  // the terrain under every point when there are heights. Without it only what is drawn: the
+  // terrain where the style needs it (agl, curtains, points without elevation), no summary.
+  bool inspect = false;
+};
+
+// The tracks of the files, in order (each file's tracks, then its routes), with colours from
+// `style.colors` or the palette counted from `first_palette_index`. Throws std::runtime_error
+// for what the user must change (agl without terrain, a --color count that matches neither 1
+// nor the number of tracks). Notes (no value for the metric anywhere) go to `diagnostics`.
+std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
+                                const TrackBuildOptions& options, Diagnostics& diagnostics,
+                                std::size_t first_palette_index = 0);
+
+// Fills the flat per-point numbers of a track from its cleaned points and metrics; `ground` per
+// segment and point (empty: none). Throws std::invalid_argument when the metrics or the ground
+// heights do not match the track's segments and points.
+void fill_point_arrays(Track& track, const std::vector<std::vector<double>>& ground = {});
+
+// The terrain height below every point of `t`, per segment; NaN everywhere without `heights`.
+std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, terrain::HeightSource* heights);
+
+// Samples the terrain below every point into track.ground_m (may read tiles: call off a frame loop).
+void set_ground_heights(Track& track, terrain::HeightSource& heights);
+
+// Replaces the colour values in the track's geometry by `metric`'s (none for solid) and bumps its
+// revision. Throws std::invalid_argument for agl on a track without ground heights.
+void apply_color_metric(Track& track, track::ColorMetric metric);
+
+// Curtains (walls down to the ground) on or off: each line's heights above the ground from
+// altitude - ground height (NaN where either is unknown: no wall there), or none; bumps revision.
+void apply_curtain(Track& track, bool on);
+
+// The statistics of flat points [first, last] (inclusive; clamped): the track cut to those
+// points (its segments kept), metrics recomputed on the cut: what `trailray stats` says of a file
+// holding just that part. nullopt when first > last.
+std::optional<track::Statistics> range_statistics(const Track& track, std::size_t first, std::size_t last,
+                                                  const track::AnalysisOptions& analysis = {});
+// The cut itself.
+track::Track cut_track(const Track& track, std::size_t first, std::size_t last);
+
+}  // namespace trailray::scene
