@@ -7,6 +7,7 @@
 #include "app/elevation_command.hpp"
 #include "app/render_command.hpp"
 #include "app/stats_command.hpp"
+#include "app/terminal_diagnostics.hpp"
 #include "app/view_command.hpp"
 
 namespace trailray::app {
@@ -36,7 +37,7 @@ int run_cli(int argc, char** argv) {
     app.exit(e);
     return 2;  // usage error
   } catch (const std::exception& e) {
-    fmt::print(stderr, "trailray: error: {}\n", e.what());
+    TerminalDiagnostics().error(e.what());
     return 1;
   }
   return exit_code;

@@ -1,4 +1,5 @@
 #include "app/elevation_command.hpp"
+#include "app/terminal_diagnostics.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -75,7 +76,8 @@ void write_gpx_atomically(const track::TrackFile& f, const std::filesystem::path
 }
 
 int run_elevation(const ElevationArgs& a) {
-  if (a.replace && a.output.empty()) throw CLI::ValidationError("--replace", "needs -o OUT.gpx (the input is never modified)");
+  if (a.replace && a.output.empty())
+    throw CLI::ValidationError("--replace", "needs -o OUT.gpx (the input is never modified)");
   if (!a.output.empty() && !a.replace) throw CLI::ValidationError("-o", "is for --replace");
   if (a.replace) {
     std::error_code ec;
@@ -85,17 +87,18 @@ int run_elevation(const ElevationArgs& a) {
       throw std::runtime_error(a.output + ": already exists (--force replaces it)");
   }
 
+  TerminalDiagnostics diagnostics(false, !a.quiet && isatty(STDERR_FILENO) != 0);
   track::ReadResult read = track::load_track_file(a.file, a.read);
-  for (const auto& w : read.warnings) fmt::print(stderr, "trailray: warning: {}\n", w.to_string());
+  for (const auto& w : read.warnings) diagnostics.warning(w.to_string());
   if (read.error) {
-    fmt::print(stderr, "trailray: error: {}\n", read.error->to_string());
+    diagnostics.error(read.error->to_string());
     return 1;
   }
   track::TrackFile& file = read.file;
 
   const terrain::TerrainConfig config = resolve_terrain_config(a.terrain);
   terrain::SourceContext context{config.network, config.cache,
-                                 [](std::string w) { fmt::print(stderr, "trailray: warning: terrain: {}\n", w); }};
+                                 [&diagnostics](std::string w) { diagnostics.warning("terrain: " + w); }};
   std::unique_ptr<terrain::HeightSource> source = terrain::open_height_source(config.terrain, context);
   const std::string source_name = source ? source->info().name : std::string("none");
 
@@ -109,25 +112,24 @@ int run_elevation(const ElevationArgs& a) {
     terrain::HeightSamplerOptions options;
     if (a.terrain.terrain_zoom) options.zoom = *a.terrain.terrain_zoom;
     // Network sources wait on round trips, not on the CPU.
-    if (source->info().name.starts_with("http")) options.threads = static_cast<unsigned>(config.network.max_parallel) + 2;
+    if (source->info().name.starts_with("http"))
+      options.threads = static_cast<unsigned>(config.network.max_parallel) + 2;
     terrain::HeightSampler sampler(*source, options);
-    const bool progress = !a.quiet && isatty(STDERR_FILENO);
     heights = sampler.sample(where, [&](const terrain::LoadProgress& p, std::size_t batch, std::size_t batches) {
-      if (!progress) return;
-      fmt::print(stderr, "\rterrain tiles: {}/{} loaded{}{}\x1b[K", p.loaded + p.no_data, p.wanted,
-                 p.failed ? fmt::format(", {} failed", p.failed) : "",
-                 batches > 1 ? fmt::format(" (part {}/{})", batch + 1, batches) : "");
+      diagnostics.progress(fmt::format("terrain tiles: {}/{} loaded{}{}", p.loaded + p.no_data, p.wanted,
+                                       p.failed ? fmt::format(", {} failed", p.failed) : "",
+                                       batches > 1 ? fmt::format(" (part {}/{})", batch + 1, batches) : ""));
     });
-    if (progress) fmt::print(stderr, "\r\x1b[K");
+    diagnostics.progress_done();
     const terrain::SamplingReport& r = sampler.report();
     if (r.tiles_failed > 0)
-      fmt::print(stderr, "trailray: warning: terrain: {} tile{} failed; first: {}\n", r.tiles_failed,
-                 r.tiles_failed == 1 ? "" : "s", r.errors.empty() ? "?" : r.errors.front());
+      diagnostics.warning(fmt::format("terrain: {} tile{} failed; first: {}", r.tiles_failed,
+                                      r.tiles_failed == 1 ? "" : "s", r.errors.empty() ? "?" : r.errors.front()));
     if (!points.empty() && r.with_height == 0)
-      fmt::print(stderr, "trailray: warning: terrain: {} has no data at any point of {}\n", source_name, a.file);
+      diagnostics.warning(fmt::format("terrain: {} has no data at any point of {}", source_name, a.file));
     else if (r.with_height < points.size())
-      fmt::print(stderr, "trailray: warning: terrain: no data at {} of {} points\n", points.size() - r.with_height,
-                 points.size());
+      diagnostics.warning(
+          fmt::format("terrain: no data at {} of {} points", points.size() - r.with_height, points.size()));
   }
 
   if (a.replace) {
@@ -166,7 +168,8 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
   auto* json = cmd->add_flag("--json", args->json, "Print one JSON document: path, points, summary");
   auto* csv = cmd->add_flag("--csv", args->csv, "Print one CSV row per point");
   json->excludes(csv);
-  auto* replace = cmd->add_flag("--replace", args->replace, "Write a copy of the track with terrain elevations (needs -o)");
+  auto* replace =
+      cmd->add_flag("--replace", args->replace, "Write a copy of the track with terrain elevations (needs -o)");
   replace->excludes(json)->excludes(csv);
   cmd->add_option("-o,--output", args->output, "Output GPX file for --replace")->type_name("OUT.gpx");
   cmd->add_flag("--force", args->force, "Let --replace overwrite an existing OUT");

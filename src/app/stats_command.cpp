@@ -1,4 +1,5 @@
 #include "app/stats_command.hpp"
+#include "app/terminal_diagnostics.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -20,17 +21,19 @@ struct StatsArgs {
 };
 
 int run_stats(const StatsArgs& a) {
+  // Progress only where it does not mix with the tables: several files, tables to a file or pipe.
   const bool progress = !a.json && a.files.size() > 1 && isatty(STDERR_FILENO) && !isatty(STDOUT_FILENO);
+  TerminalDiagnostics diagnostics(false, progress);
   nlohmann::json doc;
   doc["files"] = nlohmann::json::array();
   int failed = 0;
   for (std::size_t i = 0; i < a.files.size(); ++i) {
-    if (progress) fmt::print(stderr, "\r[{}/{}] {}\x1b[K", i + 1, a.files.size(), a.files[i]);
+    diagnostics.progress(fmt::format("[{}/{}] {}", i + 1, a.files.size(), a.files[i]));
     FileStats f = compute_file_stats(a.files[i], a.track.read, a.track.analysis);
-    if (progress) fmt::print(stderr, "\r\x1b[K");
-    for (const auto& w : f.warnings) fmt::print(stderr, "trailray: warning: {}\n", w);
+    diagnostics.progress_done();
+    for (const auto& w : f.warnings) diagnostics.warning(w);
     if (f.error) {
-      fmt::print(stderr, "trailray: error: {}\n", *f.error);
+      diagnostics.error(*f.error);
       ++failed;
     }
     if (a.json) {
@@ -42,7 +45,7 @@ int run_stats(const StatsArgs& a) {
   }
   if (a.json) std::cout << doc.dump(2) << '\n';
   if (failed > 0 && a.files.size() > 1)
-    fmt::print(stderr, "trailray: {} of {} files could not be read\n", failed, a.files.size());
+    diagnostics.error(fmt::format("{} of {} files could not be read", failed, a.files.size()));
   return failed > 0 ? 1 : 0;
 }
 

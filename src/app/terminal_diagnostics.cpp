@@ -25,6 +25,11 @@ void TerminalDiagnostics::error(const std::string& message) {
   fmt::print(stderr, "trailray: error: {}\n", message);
 }
 
+void TerminalDiagnostics::info(const std::string& message) {
+  clear_progress();
+  fmt::print(stderr, "trailray: {}\n", message);
+}
+
 void TerminalDiagnostics::note(const std::string& message) {
   if (!verbose_) return;
   clear_progress();

@@ -1,7 +1,7 @@
 #pragma once
 // The command line's diagnostics sink: warnings and errors to standard error as
-// "trailray: warning: ...", notes (--verbose) as "trailray: ...", progress as one line rewritten
-// in place, only when standard error is a terminal (a log file gets no progress noise).
+// "trailray: warning: ...", what was asked for as "trailray: ...", notes only with --verbose, progress as one line
+// rewritten in place, only when standard error is a terminal (a log file gets no progress noise).
 
 #include <string>
 
@@ -17,6 +17,7 @@ class TerminalDiagnostics : public scene::Diagnostics {
 
   void warning(const std::string& message) override;
   void error(const std::string& message) override;
+  void info(const std::string& message) override;
   void note(const std::string& message) override;
   void progress(const std::string& status) override;
   void progress_done() override;

@@ -15,6 +15,8 @@ class Diagnostics {
   virtual void warning(const std::string& message) = 0;
   // Something failed (a file that cannot be read); the caller decides whether the work goes on.
   virtual void error(const std::string& message) = 0;
+  // What the user asked to be told (a picture written, frame times): always shown.
+  virtual void info(const std::string& message) = 0;
   // Details asked for (`--verbose`): the GL context, the camera, what was loaded.
   virtual void note(const std::string& message) { (void)message; }
   // How far long work has come, one line ("tiles: 12/40 loaded"); called often, each line
@@ -29,16 +31,18 @@ class CollectedDiagnostics : public Diagnostics {
  public:
   void warning(const std::string& message) override { warnings.push_back(message); }
   void error(const std::string& message) override { errors.push_back(message); }
+  void info(const std::string& message) override { infos.push_back(message); }
   void note(const std::string& message) override { notes.push_back(message); }
 
-  // Hands everything collected to `sink`, in the order warnings, errors, notes.
+  // Hands everything collected to `sink`, in the order warnings, errors, infos, notes.
   void forward_to(Diagnostics& sink) const {
     for (const std::string& m : warnings) sink.warning(m);
     for (const std::string& m : errors) sink.error(m);
+    for (const std::string& m : infos) sink.info(m);
     for (const std::string& m : notes) sink.note(m);
   }
 
-  std::vector<std::string> warnings, errors, notes;
+  std::vector<std::string> warnings, errors, infos, notes;
 };
 
 }  // namespace trailray::scene

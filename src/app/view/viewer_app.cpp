@@ -137,7 +137,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   if (!window_grab_.empty() && width > 0 && height > 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     scene::write_srgb_png(window_grab_, render::read_rgba8(0, 0, static_cast<int>(width), static_cast<int>(height)));
-    diagnostics_.note(fmt::format("wrote {} ({}x{}, the window)", window_grab_, width, height));
+    diagnostics_.info(fmt::format("wrote {} ({}x{}, the window)", window_grab_, width, height));
     window_grab_.clear();
   }
   window_.swap_buffers();
@@ -174,15 +174,14 @@ void ViewerApp::screenshot(const std::string& path, bool status) {
   scene::write_srgb_png(path, picture.image);
   const std::string wrote = fmt::format("wrote {} ({}x{})", path, picture.image.width, picture.image.height);
   if (status) status_ = wrote;
-  fmt::print(stderr, "trailray: {}\n", wrote);
+  diagnostics_.info(wrote);
 }
 
 void ViewerApp::print_frame_times(const std::vector<double>& all_ms, const std::vector<double>& settled_ms) {
-  fmt::print(stderr, "trailray: {}\n", frame_time_summary("frames", all_ms));
+  diagnostics_.info(frame_time_summary("frames", all_ms));
   if (settled_ms.size() != all_ms.size())
-    fmt::print(stderr, "trailray: {}\n",
-               settled_ms.empty() ? std::string("frames with every tile loaded: none")
-                                  : frame_time_summary("frames with every tile loaded", settled_ms));
+    diagnostics_.info(settled_ms.empty() ? std::string("frames with every tile loaded: none")
+                                         : frame_time_summary("frames with every tile loaded", settled_ms));
   if (options_.verbose) {
     // The renderer's share of those frames, per pass (the last 60 frames).
     profiler_.finish();
