@@ -2,7 +2,10 @@
 // WGS84 ellipsoid constants and the local metric at a latitude: the meridional radius of
 // curvature M and the prime-vertical radius N, which turn small latitude / longitude
 // differences into metres (north = M * dlat, east = N * cos(lat) * dlon, angles in radians).
-// Also a cheap sine / cosine for latitudes, used on hot paths instead of libm's.
+// Also a cheap sine / cosine for latitudes, used on hot paths instead of libm's, and the
+// conversions between geodetic positions and Earth-centred, Earth-fixed coordinates.
+
+#include <glm/vec3.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -60,3 +63,18 @@ inline double wrap_dlon_deg(double dlon) {
 }
 
 }  // namespace trailray::geo::wgs84
+
+namespace trailray::geo {
+
+// A geodetic position: degrees, and metres above the WGS84 ellipsoid.
+struct Geodetic {
+  double lat_deg = 0.0, lon_deg = 0.0, height_m = 0.0;
+};
+
+// Earth-centred, Earth-fixed (ECEF, WGS84) coordinates in metres of a geodetic position, and
+// back: the exact conversions (GeographicLib), the one place in the program that does them.
+// ECEF points and directions are glm::dvec3 throughout.
+glm::dvec3 ecef_from_geodetic(double lat_deg, double lon_deg, double height_m);
+Geodetic geodetic_from_ecef(const glm::dvec3& p);
+
+}  // namespace trailray::geo
