@@ -20,7 +20,7 @@ constexpr double kWalkMaxHeightM = 1500.0;
 
 void add_point(BenchDataset& d, scene::TrackPolyline& segment, const scene::GeoPosition& p) {
   d.positions.push_back(p);
-  segment.points_ecef.push_back(scene::to_dvec3(scene::ecef_from(p)));
+  segment.points_ecef.push_back(scene::ecef_from(p));
 }
 
 }  // namespace

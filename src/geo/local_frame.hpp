@@ -3,12 +3,10 @@
 // need flat coordinates:
 //   - LocalFrame: an east-north-up Cartesian frame (metres) tangent at an origin (exact,
 //     GeographicLib; a few hundred nanoseconds a point);
-//   - to_ecef / from_ecef: Earth-centred Cartesian coordinates of points on the ellipsoid;
 //   - local_mean_offset: the mean of nearby points from the moments of their latitude and
 //     longitude offsets, a closed form of the 3D mean for clusters a few kilometres across
 //     (no trigonometry per point: the hot path of the track smoothing).
 
-#include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
 
 #include "geo/wgs84.hpp"
@@ -36,21 +34,6 @@ class LocalFrame {
   GeographicLib::LocalCartesian cartesian_;
 };
 
-// Earth-centred, Earth-fixed coordinates (metres) of a point on the ellipsoid (height 0), and
-// back: the point of the ellipsoid whose normal passes through (x, y, z).
-struct Ecef {
-  double x = 0.0, y = 0.0, z = 0.0;
-};
-inline Ecef to_ecef(double lat, double lon) {
-  Ecef p;
-  GeographicLib::Geocentric::WGS84().Forward(lat, lon, 0.0, p.x, p.y, p.z);
-  return p;
-}
-inline void from_ecef(const Ecef& p, double& lat, double& lon) {
-  double h = 0.0;
-  GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, lat, lon, h);
-}
-
 // The weighted mean of points near (lat0, lon0), averaged as 3D points on the ellipsoid (as in
 // an east-north-up frame, or ECEF) and projected back onto it along the normal, from the
 // weighted moments of their offsets a = lat - lat0, b = lon - lon0 (degrees; b unwrapped
@@ -63,7 +46,8 @@ inline void from_ecef(const Ecef& p, double& lat, double& lon) {
 // the exact 3D mean, for offsets up to kLocalMeanMaxOffsetDeg at |lat0| <= kLocalMeanMaxLatDeg:
 // within 0.1 mm (measured over random windows: 0.03 mm at worst; below a micrometre for windows
 // of +-500 m under 80 degrees of latitude). The terms matter: without them, up to 19 mm.
-// Outside those limits use the exact computation (to_ecef / from_ecef).
+// Outside those limits use the exact computation (ecef_from_geodetic / geodetic_from_ecef in
+// wgs84.hpp, heights 0).
 inline constexpr double kLocalMeanMaxOffsetDeg = 0.02;
 inline constexpr double kLocalMeanMaxLatDeg = 89.5;
 

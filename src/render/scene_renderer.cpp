@@ -1,7 +1,5 @@
 #include "render/scene_renderer.hpp"
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +9,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "geo/wgs84.hpp"
 #include "render/gl/gl_capabilities.hpp"
 #include "render/passes/shadow_cascades.hpp"
 #include "terrain/lod_selection.hpp"
@@ -327,8 +326,7 @@ RenderedScene SceneRenderer::render(const scene::Camera& camera, const SceneRend
       for (const TrackDraw& draw : options.tracks)
         if (draw.buffer != nullptr && draw.buffer->point_count() > 0) {
           const glm::dvec3 c = draw.buffer->bounding_centre_ecef();
-          double lat = 0.0, lon = 0.0, centre_height = 0.0;
-          GeographicLib::Geocentric::WGS84().Reverse(c.x, c.y, c.z, lat, lon, centre_height);
+          const double centre_height = geo::geodetic_from_ecef(c).height_m;
           track_top = std::max(track_top, centre_height + draw.buffer->bounding_radius_m());
         }
     shadow_settings.caster_height_span_m = std::max(0.0, track_top - lowest);
@@ -352,7 +350,7 @@ RenderedScene SceneRenderer::render(const scene::Camera& camera, const SceneRend
         for (const TerrainDrawItem& item : items) {
           if (item.mesh == nullptr || item.mesh->index_count == 0) continue;
           // The near cascades cover a few km: most tiles of the view fall outside them.
-          if (!light.may_hold(scene::to_dvec3(item.mesh->origin), item.mesh->bounding_radius_m)) continue;
+          if (!light.may_hold(item.mesh->origin, item.mesh->bounding_radius_m)) continue;
           const std::array<float, 16> matrix = light.view_projection_relative_to(item.mesh->origin);
           casters.set_mat4("u_light_view_projection", std::span<const float, 16>(matrix));
           glBindVertexArray(item.mesh->vertex_array.id());

@@ -1,6 +1,5 @@
 #include "scene/camera.hpp"
 
-#include <GeographicLib/Geocentric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -36,8 +35,6 @@ double wrapped_heading(double heading_deg) {
   if (h < 0.0) h += 360.0;
   return h == 0.0 ? 0.0 : h;  // no -0
 }
-
-terrain::Vec3d to_vec3d(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 // Forward, right and up of a view with this heading and pitch in an east-north-up frame.
 CameraAxes axes_from_angles(const EnuAxes& enu, double heading_deg, double pitch_deg) {
@@ -135,14 +132,6 @@ EnuAxes enu_axes_at(double lat_deg, double lon_deg) {
   return EnuAxes{{-slon, clon, 0.0}, {-slat * clon, -slat * slon, clat}, {clat * clon, clat * slon, slat}};
 }
 
-geo::Ecef ecef_from(const GeoPosition& p) {
-  geo::Ecef e;
-  GeographicLib::Geocentric::WGS84().Forward(p.lat_deg, p.lon_deg, p.height_m, e.x, e.y, e.z);
-  return e;
-}
-glm::dvec3 to_dvec3(const geo::Ecef& p) { return {p.x, p.y, p.z}; }
-geo::Ecef to_ecef(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-
 std::optional<std::string> lens_problem(const Lens& lens) {
   if (!(lens.vertical_fov_deg > 0.0 && lens.vertical_fov_deg < 180.0)) {
     return "--fov " + number(lens.vertical_fov_deg) + ": the vertical field of view must be within (0, 180) degrees";
@@ -156,7 +145,7 @@ std::optional<std::string> lens_problem(const Lens& lens) {
 
 // --- Camera --------------------------------------------------------------------------------
 
-Camera::Camera(const geo::Ecef& position, double heading_deg, double pitch_deg, const Lens& lens,
+Camera::Camera(const glm::dvec3& position, double heading_deg, double pitch_deg, const Lens& lens,
                const DepthRange& depth)
     : position_(position), heading_deg_(wrapped_heading(heading_deg)), pitch_deg_(pitch_deg), lens_(lens) {
   const std::string where = "camera at ECEF (" + number(position.x) + ", " + number(position.y) + ", " +
@@ -168,8 +157,8 @@ Camera::Camera(const geo::Ecef& position, double heading_deg, double pitch_deg, 
   if (const auto problem = pitch_problem(pitch_deg)) throw std::invalid_argument(where + ": " + *problem);
   if (const auto problem = lens_problem(lens)) throw std::invalid_argument(where + ": " + *problem);
   set_depth_range(depth);
-  GeographicLib::Geocentric::WGS84().Reverse(position.x, position.y, position.z, geodetic_.lat_deg, geodetic_.lon_deg,
-                                             geodetic_.height_m);
+  const geo::Geodetic g = geo::geodetic_from_ecef(position);
+  geodetic_ = GeoPosition{g.lat_deg, g.lon_deg, g.height_m};
   axes_ = axes_from_angles(enu_axes_at(geodetic_.lat_deg, geodetic_.lon_deg), heading_deg_, pitch_deg_);
 }
 
@@ -199,9 +188,9 @@ glm::dmat4 Camera::projection() const {
   return glm::perspective(lens_.vertical_fov_deg * kRadPerDeg, lens_.aspect(), depth_.near_m, depth_.far_m);
 }
 
-std::array<float, 16> Camera::view_projection_relative_to(const geo::Ecef& origin) const {
+std::array<float, 16> Camera::view_projection_relative_to(const glm::dvec3& origin) const {
   glm::dmat4 view(view_rotation());
-  view = glm::translate(view, to_dvec3(origin) - to_dvec3(position_));
+  view = glm::translate(view, origin - position_);
   const glm::dmat4 m = projection() * view;
   std::array<float, 16> out{};
   for (int column = 0; column < 4; ++column) {
@@ -211,12 +200,10 @@ std::array<float, 16> Camera::view_projection_relative_to(const geo::Ecef& origi
   return out;
 }
 
-glm::vec3 Camera::origin_minus_camera(const geo::Ecef& origin) const {
-  return glm::vec3(to_dvec3(origin) - to_dvec3(position_));
-}
+glm::vec3 Camera::origin_minus_camera(const glm::dvec3& origin) const { return glm::vec3(origin - position_); }
 
-std::optional<terrain::ScreenPoint> Camera::project(const geo::Ecef& point) const {
-  const glm::dvec3 in_view = view_rotation() * (to_dvec3(point) - to_dvec3(position_));
+std::optional<terrain::ScreenPoint> Camera::project(const glm::dvec3& point) const {
+  const glm::dvec3 in_view = view_rotation() * (point - position_);
   const glm::dvec4 clip = projection() * glm::dvec4(in_view, 1.0);
   if (!(clip.w > 0.0)) return std::nullopt;
   terrain::ScreenPoint s;
@@ -241,7 +228,7 @@ std::optional<double> Camera::horizon_row_px(double x_px) const {
   // span a plane through C with normal n; scaled, it is m . Q = k. The two planes meet in a line
   // whose intersections with the unit sphere are the horizon points of this column.
   const double a = geo::wgs84::kA, b = a * (1.0 - geo::wgs84::kF);
-  const glm::dvec3 camera = to_dvec3(position_);
+  const glm::dvec3 camera = position_;
   const glm::dvec3 scaled_camera{camera.x / a, camera.y / a, camera.z / b};
   const double c2 = glm::dot(scaled_camera, scaled_camera);
   if (!(c2 > 1.0)) return std::nullopt;
@@ -266,7 +253,7 @@ std::optional<double> Camera::horizon_row_px(double x_px) const {
   std::optional<double> row;
   for (const double sign : {-1.0, 1.0}) {
     const glm::dvec3 q = q0 + (sign * t) * u;
-    const std::optional<terrain::ScreenPoint> s = project(geo::Ecef{q.x * a, q.y * a, q.z * b});
+    const std::optional<terrain::ScreenPoint> s = project(glm::dvec3{q.x * a, q.y * a, q.z * b});
     if (s && (!row || s->y_px < *row)) row = s->y_px;
   }
   return row;
@@ -274,9 +261,9 @@ std::optional<double> Camera::horizon_row_px(double x_px) const {
 
 terrain::LodCamera to_lod_camera(const Camera& camera) {
   terrain::LodCamera lod;
-  lod.position = {camera.position().x, camera.position().y, camera.position().z};
-  lod.forward = to_vec3d(camera.axes().forward);
-  lod.up = to_vec3d(camera.axes().up);
+  lod.position = camera.position();
+  lod.forward = camera.axes().forward;
+  lod.up = camera.axes().up;
   lod.vertical_fov_rad = camera.lens().vertical_fov_deg * kRadPerDeg;
   lod.viewport_width_px = camera.lens().width_px;
   lod.viewport_height_px = camera.lens().height_px;
@@ -342,20 +329,20 @@ Result<Camera> camera_looking_at(const LookAt& look_at, const Lens& lens, double
   // heading and pitch (in its own east-north-up frame, which is tilted from the target's by the
   // distance over the Earth's radius) are those of the same direction, so the target stays
   // exactly at the image centre.
-  const glm::dvec3 target = to_dvec3(ecef_from(look_at.target));
+  const glm::dvec3 target = ecef_from(look_at.target);
   const CameraAxes at_target = axes_from_angles(enu_axes_at(look_at.target.lat_deg, look_at.target.lon_deg),
                                                 look_at.heading_deg, look_at.pitch_deg);
   const glm::dvec3 position = target - look_at.distance_m * at_target.forward;
-  double lat = 0.0, lon = 0.0, height = 0.0;
-  GeographicLib::Geocentric::WGS84().Reverse(position.x, position.y, position.z, lat, lon, height);
-  const EnuAxes enu = enu_axes_at(lat, lon);
+  const geo::Geodetic at_camera = geo::geodetic_from_ecef(position);
+  const double height = at_camera.height_m;
+  const EnuAxes enu = enu_axes_at(at_camera.lat_deg, at_camera.lon_deg);
   const double east = glm::dot(at_target.forward, enu.east), north = glm::dot(at_target.forward, enu.north);
   const double up = std::clamp(glm::dot(at_target.forward, enu.up), -1.0, 1.0);
   // Straight down or up the heading only orients the screen: keep the one asked for.
   const double heading = std::hypot(east, north) > 1e-12 ? std::atan2(east, north) * kDegPerRad : look_at.heading_deg;
   const double pitch = std::asin(up) * kDegPerRad;
   const double clearance = std::min(look_at.distance_m, height - ground_height_m);
-  return {Camera(to_ecef(position), heading, pitch, lens, depth_range_for(height, clearance)), {}};
+  return {Camera(position, heading, pitch, lens, depth_range_for(height, clearance)), {}};
 }
 
 }  // namespace trailray::scene

@@ -29,7 +29,7 @@
 #include <string>
 #include <string_view>
 
-#include "geo/local_frame.hpp"
+#include "geo/wgs84.hpp"
 #include "terrain/lod_camera.hpp"
 
 namespace trailray::scene {
@@ -84,7 +84,7 @@ struct CameraAxes {
 
 // A ray from the camera's position: unit direction, both in ECEF.
 struct Ray {
-  geo::Ecef origin;
+  glm::dvec3 origin{};
   glm::dvec3 direction;
 };
 
@@ -95,9 +95,9 @@ class Camera {
   // naming the values for a non-finite position or angle, a pitch outside [-90, 90], a field of
   // view outside (0, 180) degrees or an empty image; user input goes through camera_at /
   // camera_looking_at, which report such values as errors instead.
-  Camera(const geo::Ecef& position, double heading_deg, double pitch_deg, const Lens& lens, const DepthRange& depth);
+  Camera(const glm::dvec3& position, double heading_deg, double pitch_deg, const Lens& lens, const DepthRange& depth);
 
-  const geo::Ecef& position() const { return position_; }
+  const glm::dvec3& position() const { return position_; }
   // The camera's geodetic position (height above the ellipsoid).
   const GeoPosition& geodetic() const { return geodetic_; }
   double heading_deg() const { return heading_deg_; }
@@ -118,14 +118,14 @@ class Camera {
   // Projection * view for vertices given as float offsets from `origin`: the translation
   // origin - camera is taken in double, the product rounded to float once. Column-major, ready
   // for glUniformMatrix4fv(location, 1, GL_FALSE, m.data()).
-  std::array<float, 16> view_projection_relative_to(const geo::Ecef& origin) const;
+  std::array<float, 16> view_projection_relative_to(const glm::dvec3& origin) const;
   // origin - camera, computed in double and rounded once: the uniform for shaders that add it
   // to their float offsets before rotating.
-  glm::vec3 origin_minus_camera(const geo::Ecef& origin) const;
+  glm::vec3 origin_minus_camera(const glm::dvec3& origin) const;
 
   // A point's pixel and view depth (metres along the view axis); nullopt at or behind the camera
   // plane. Points outside the viewport or the depth range still get their pixel.
-  std::optional<terrain::ScreenPoint> project(const geo::Ecef& point) const;
+  std::optional<terrain::ScreenPoint> project(const glm::dvec3& point) const;
   // The ray through a (continuous) pixel, the inverse of project.
   Ray ray_through_pixel(double x_px, double y_px) const;
 
@@ -137,7 +137,7 @@ class Camera {
   std::optional<double> horizon_row_px(double x_px) const;
 
  private:
-  geo::Ecef position_;
+  glm::dvec3 position_;
   GeoPosition geodetic_;
   double heading_deg_ = 0.0, pitch_deg_ = 0.0;
   Lens lens_;
@@ -155,9 +155,8 @@ struct EnuAxes {
 };
 EnuAxes enu_axes_at(double lat_deg, double lon_deg);
 
-geo::Ecef ecef_from(const GeoPosition& p);
-glm::dvec3 to_dvec3(const geo::Ecef& p);
-geo::Ecef to_ecef(const glm::dvec3& v);
+// The ECEF position of a geodetic one.
+inline glm::dvec3 ecef_from(const GeoPosition& p) { return geo::ecef_from_geodetic(p.lat_deg, p.lon_deg, p.height_m); }
 
 // `--camera LAT,LON,ALT,HEADING,PITCH`: the camera's position (degrees, metres) and orientation.
 struct CameraPlacement {

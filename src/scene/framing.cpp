@@ -1,7 +1,5 @@
 #include "scene/framing.hpp"
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +8,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "geo/local_frame.hpp"
+#include "geo/wgs84.hpp"
 
 namespace trailray::scene {
 namespace {
@@ -131,7 +132,7 @@ PixelBounds pixel_bounds(const Camera& camera, const std::vector<glm::dvec3>& po
   // project() for every point, with the matrices taken once.
   const glm::dmat3 rotation = camera.view_rotation();
   const glm::dmat4 projection = camera.projection();
-  const glm::dvec3 eye = to_dvec3(camera.position());
+  const glm::dvec3 eye = camera.position();
   const double width = camera.lens().width_px, height = camera.lens().height_px;
   PixelBounds b;
   for (const glm::dvec3& p : points) {
@@ -244,12 +245,10 @@ class Framer {
                                  std::tan(0.5 * options_.lens.vertical_fov_deg * kRadPerDeg) / options_.lens.height_px;
     const double dx = 0.5 * (b.min_x + b.max_x) - 0.5 * (goal.box.left + goal.box.right);
     const double dy = 0.5 * (b.min_y + b.max_y) - 0.5 * (goal.box.top + goal.box.bottom);
-    const glm::dvec3 target = to_dvec3(ecef_from(look_at.target)) + (dx * metres_per_px) * c.axes().right -
-                              (dy * metres_per_px) * c.axes().up;
-    GeoPosition moved;
-    GeographicLib::Geocentric::WGS84().Reverse(target.x, target.y, target.z, moved.lat_deg, moved.lon_deg,
-                                               moved.height_m);
-    return moved;
+    const glm::dvec3 target =
+        ecef_from(look_at.target) + (dx * metres_per_px) * c.axes().right - (dy * metres_per_px) * c.axes().up;
+    const geo::Geodetic moved = geo::geodetic_from_ecef(target);
+    return GeoPosition{moved.lat_deg, moved.lon_deg, moved.height_m};
   }
 
   double centring_error_px(const LookAt& look_at, const FramingGoal& goal) const {
@@ -274,7 +273,7 @@ class Framer {
   }
 
   double nearest_point_distance(const Camera& c) const {
-    const glm::dvec3 eye = to_dvec3(c.position());
+    const glm::dvec3 eye = c.position();
     double nearest = std::numeric_limits<double>::infinity();
     for (const glm::dvec3& p : points_) nearest = std::min(nearest, glm::length(p - eye));
     return nearest;
@@ -344,12 +343,11 @@ Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingO
   glm::dvec3 sum(0.0);
   for (GeoPosition& p : usable) {
     if (!std::isfinite(p.height_m)) p.height_m = ground;
-    ecef.push_back(to_dvec3(ecef_from(p)));
+    ecef.push_back(ecef_from(p));
     sum += ecef.back();
   }
-  double lat0 = 0.0, lon0 = 0.0;
-  geo::from_ecef(to_ecef(sum / static_cast<double>(ecef.size())), lat0, lon0);
-  const geo::LocalFrame frame(lat0, lon0, 0.0);
+  const geo::Geodetic centre = geo::geodetic_from_ecef(sum / static_cast<double>(ecef.size()));
+  const geo::LocalFrame frame(centre.lat_deg, centre.lon_deg, 0.0);
   std::vector<Point2> horizontal;
   double lowest_up = std::numeric_limits<double>::infinity(), highest_up = -lowest_up;
   for (const GeoPosition& p : usable) {

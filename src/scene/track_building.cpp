@@ -72,7 +72,7 @@ void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
       double under = ground.empty() ? kNaN : ground[s][i];
       if (std::isnan(under)) under = neutral_ground_m;
       const double height = p.has_ele() ? p.ele : under;
-      line.points_ecef.push_back(to_dvec3(ecef_from({p.lat, p.lon, height})));
+      line.points_ecef.push_back(ecef_from({p.lat, p.lon, height}));
       if (style.curtain) line.heights_above_ground_m.push_back(static_cast<float>(height - under));
     }
     if (!values.empty()) line.values = values[s];

@@ -1,7 +1,5 @@
 #include "terrain/lod_camera.hpp"
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -19,7 +17,7 @@ constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 // such a peak, which can stand beyond the camera's own horizon and still be seen.
 constexpr double kHighestTerrainM = 9000.0;
 
-bool finite(const Vec3d& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Distance from a point at height h to its horizon on a sphere of the equatorial radius.
 double horizon_distance_m(double height_m) {
@@ -36,30 +34,24 @@ std::string describe(double lat, double lon, double h) {
 
 // The camera's right and up, made exactly orthonormal to forward.
 struct ScreenAxes {
-  Vec3d forward, right, up;
+  glm::dvec3 forward, right, up;
 };
 ScreenAxes screen_axes(const LodCamera& camera) {
   ScreenAxes axes;
   axes.forward = normalized(camera.forward);
-  axes.right = normalized(cross(axes.forward, camera.up));
-  axes.up = cross(axes.right, axes.forward);
+  axes.right = normalized(glm::cross(axes.forward, camera.up));
+  axes.up = glm::cross(axes.right, axes.forward);
   return axes;
 }
 
 }  // namespace
 
-Vec3d ecef_from_geodetic(double lat_deg, double lon_deg, double height_m) {
-  Vec3d p;
-  GeographicLib::Geocentric::WGS84().Forward(lat_deg, lon_deg, height_m, p.x, p.y, p.z);
-  return p;
-}
-
-Vec3d geodetic_up(double lat_deg, double lon_deg) {
+glm::dvec3 geodetic_up(double lat_deg, double lon_deg) {
   const double lat = lat_deg * kRadPerDeg, lon = lon_deg * kRadPerDeg;
   return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
 }
 
-bool Frustum::contains(const Vec3d& p, double tolerance_m) const {
+bool Frustum::contains(const glm::dvec3& p, double tolerance_m) const {
   for (const FrustumPlane& plane : planes) {
     if (plane.signed_distance(p) < -tolerance_m) return false;
   }
@@ -68,9 +60,10 @@ bool Frustum::contains(const Vec3d& p, double tolerance_m) const {
 
 std::optional<const char*> camera_problem(const LodCamera& camera) {
   if (!finite(camera.position)) return "camera position is not finite";
-  if (!finite(camera.forward) || length(camera.forward) == 0.0) return "camera forward is not a finite non-zero vector";
-  if (!finite(camera.up) || length(camera.up) == 0.0) return "camera up is not a finite non-zero vector";
-  if (length(cross(normalized(camera.forward), normalized(camera.up))) < 1e-9)
+  if (!finite(camera.forward) || glm::length(camera.forward) == 0.0)
+    return "camera forward is not a finite non-zero vector";
+  if (!finite(camera.up) || glm::length(camera.up) == 0.0) return "camera up is not a finite non-zero vector";
+  if (glm::length(glm::cross(normalized(camera.forward), normalized(camera.up))) < 1e-9)
     return "camera up is parallel to forward";
   if (!(camera.vertical_fov_rad > 0.0 && camera.vertical_fov_rad < std::numbers::pi)) {
     return "camera vertical field of view is not within (0, pi) radians";
@@ -100,19 +93,20 @@ LodCamera look_at(double lat_deg, double lon_deg, double height_m, double target
   if (viewport_width_px == 0 || viewport_height_px == 0) throw std::invalid_argument(where + ": empty viewport");
 
   LodCamera camera;
-  camera.position = ecef_from_geodetic(lat_deg, lon_deg, height_m);
-  const Vec3d to_target = ecef_from_geodetic(target_lat_deg, target_lon_deg, target_height_m) - camera.position;
-  if (length(to_target) < 1e-6) throw std::invalid_argument(where + ": the target is at the camera's position");
+  camera.position = geo::ecef_from_geodetic(lat_deg, lon_deg, height_m);
+  const glm::dvec3 to_target =
+      geo::ecef_from_geodetic(target_lat_deg, target_lon_deg, target_height_m) - camera.position;
+  if (glm::length(to_target) < 1e-6) throw std::invalid_argument(where + ": the target is at the camera's position");
   camera.forward = normalized(to_target);
 
   // Screen up: the local vertical with its component along the view removed. Looking (almost)
   // straight down or up that vanishes; north is then up, as on a map.
   const double lat = lat_deg * kRadPerDeg, lon = lon_deg * kRadPerDeg;
-  const Vec3d vertical = geodetic_up(lat_deg, lon_deg);
-  Vec3d up = vertical - camera.forward * dot(vertical, camera.forward);
-  if (length(up) < 1e-6) {
-    const Vec3d north{-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)};
-    up = north - camera.forward * dot(north, camera.forward);
+  const glm::dvec3 vertical = geodetic_up(lat_deg, lon_deg);
+  glm::dvec3 up = vertical - camera.forward * glm::dot(vertical, camera.forward);
+  if (glm::length(up) < 1e-6) {
+    const glm::dvec3 north{-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)};
+    up = north - camera.forward * glm::dot(north, camera.forward);
   }
   camera.up = normalized(up);
 
@@ -131,30 +125,30 @@ Frustum frustum_planes(const LodCamera& camera) {
   // A side plane contains the camera and the frustum's edge directions forward +- tan * axis;
   // its inward normal is forward * tan -+ axis (normalised): orthogonal to those edges and with
   // a positive component along forward.
-  auto through_camera = [&](const Vec3d& normal) {
-    const Vec3d n = normalized(normal);
-    return FrustumPlane{n, -dot(n, camera.position)};
+  auto through_camera = [&](const glm::dvec3& normal) {
+    const glm::dvec3 n = normalized(normal);
+    return FrustumPlane{n, -glm::dot(n, camera.position)};
   };
   Frustum f;
   f.planes[kFrustumLeft] = through_camera(axes.forward * tan_h + axes.right);
   f.planes[kFrustumRight] = through_camera(axes.forward * tan_h - axes.right);
   f.planes[kFrustumBottom] = through_camera(axes.forward * tan_v + axes.up);
   f.planes[kFrustumTop] = through_camera(axes.forward * tan_v - axes.up);
-  f.planes[kFrustumNear] = FrustumPlane{axes.forward, -dot(axes.forward, camera.position) - camera.near_m};
-  f.planes[kFrustumFar] = FrustumPlane{axes.forward * -1.0, dot(axes.forward, camera.position) + camera.far_m};
+  f.planes[kFrustumNear] = FrustumPlane{axes.forward, -glm::dot(axes.forward, camera.position) - camera.near_m};
+  f.planes[kFrustumFar] = FrustumPlane{axes.forward * -1.0, glm::dot(axes.forward, camera.position) + camera.far_m};
   return f;
 }
 
-std::optional<ScreenPoint> project_to_pixels(const LodCamera& camera, const Vec3d& point) {
+std::optional<ScreenPoint> project_to_pixels(const LodCamera& camera, const glm::dvec3& point) {
   const ScreenAxes axes = screen_axes(camera);
-  const Vec3d v = point - camera.position;
-  const double depth = dot(v, axes.forward);
+  const glm::dvec3 v = point - camera.position;
+  const double depth = glm::dot(v, axes.forward);
   if (!(depth > 0.0)) return std::nullopt;
   const double tan_v = std::tan(0.5 * camera.vertical_fov_rad);
   const double tan_h = tan_v * camera.aspect();
   // Normalised device coordinates in [-1, 1] across the viewport, y up.
-  const double ndc_x = dot(v, axes.right) / (depth * tan_h);
-  const double ndc_y = dot(v, axes.up) / (depth * tan_v);
+  const double ndc_x = glm::dot(v, axes.right) / (depth * tan_h);
+  const double ndc_y = glm::dot(v, axes.up) / (depth * tan_v);
   ScreenPoint s;
   s.x_px = 0.5 * (ndc_x + 1.0) * camera.viewport_width_px;
   s.y_px = 0.5 * (1.0 - ndc_y) * camera.viewport_height_px;
@@ -162,7 +156,7 @@ std::optional<ScreenPoint> project_to_pixels(const LodCamera& camera, const Vec3
   return s;
 }
 
-Vec3d ray_through_pixel(const LodCamera& camera, double x_px, double y_px) {
+glm::dvec3 ray_through_pixel(const LodCamera& camera, double x_px, double y_px) {
   const ScreenAxes axes = screen_axes(camera);
   const double tan_v = std::tan(0.5 * camera.vertical_fov_rad);
   const double tan_h = tan_v * camera.aspect();

@@ -8,6 +8,9 @@
 // Screen conventions: pixel (0, 0) is the top-left corner of the viewport, x grows right, y grows
 // down; a pixel's centre is at (i + 0.5, j + 0.5).
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -15,41 +18,25 @@
 
 namespace trailray::terrain {
 
-// A point or direction in ECEF metres.
-struct Vec3d {
-  double x = 0.0, y = 0.0, z = 0.0;
+// Points and directions: glm::dvec3, ECEF metres.
 
-  friend Vec3d operator+(const Vec3d& a, const Vec3d& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-  friend Vec3d operator-(const Vec3d& a, const Vec3d& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-  friend Vec3d operator*(const Vec3d& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-  friend Vec3d operator*(double s, const Vec3d& a) { return a * s; }
-};
-
-inline double dot(const Vec3d& a, const Vec3d& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline double length(const Vec3d& a) { return std::sqrt(dot(a, a)); }
 // a / |a|; the zero vector stays zero (callers check for degenerate directions themselves).
-inline Vec3d normalized(const Vec3d& a) {
-  const double len = length(a);
+inline glm::dvec3 normalized(const glm::dvec3& a) {
+  const double len = glm::length(a);
   return len > 0.0 ? a * (1.0 / len) : a;
 }
 
-// ECEF position of a geodetic point (degrees, metres above the WGS84 ellipsoid).
-Vec3d ecef_from_geodetic(double lat_deg, double lon_deg, double height_m);
-
 // The local geodetic "up" (the ellipsoid normal) at a latitude and longitude: the direction of
 // increasing height.
-Vec3d geodetic_up(double lat_deg, double lon_deg);
+glm::dvec3 geodetic_up(double lat_deg, double lon_deg);
 
 // A plane with its normal pointing into the frustum: a point p is on the inner side when
 // signed_distance(p) >= 0.
 struct FrustumPlane {
-  Vec3d normal;         // unit
+  glm::dvec3 normal{};  // unit
   double offset = 0.0;  // dot(normal, p) + offset is the signed distance in metres
 
-  double signed_distance(const Vec3d& p) const { return dot(normal, p) + offset; }
+  double signed_distance(const glm::dvec3& p) const { return glm::dot(normal, p) + offset; }
 };
 
 // Order of Frustum::planes.
@@ -59,18 +46,18 @@ struct Frustum {
   std::array<FrustumPlane, 6> planes;  // indexed by FrustumSide
 
   // Whether a point lies inside all six planes (within `tolerance_m` outside any of them).
-  bool contains(const Vec3d& p, double tolerance_m = 0.0) const;
+  bool contains(const glm::dvec3& p, double tolerance_m = 0.0) const;
 };
 
 struct LodCamera {
-  Vec3d position;                                // ECEF metres
-  Vec3d forward;                                 // unit: the view direction
-  Vec3d up;                                      // unit, orthogonal to forward: the screen's up direction
+  glm::dvec3 position{};                         // ECEF metres
+  glm::dvec3 forward{};                          // unit: the view direction
+  glm::dvec3 up{};                               // unit, orthogonal to forward: the screen's up direction
   double vertical_fov_rad = 1.0471975511965976;  // 60 degrees
   std::uint32_t viewport_width_px = 1920, viewport_height_px = 1080;
   double near_m = 1.0, far_m = 1.0e7;
 
-  Vec3d right() const { return cross(forward, up); }
+  glm::dvec3 right() const { return glm::cross(forward, up); }
   double aspect() const { return static_cast<double>(viewport_width_px) / static_cast<double>(viewport_height_px); }
 
   // How many screen pixels one metre spans, seen face-on at `distance_m` along the view axis:
@@ -110,9 +97,9 @@ struct ScreenPoint {
 
 // The perspective projection of an ECEF point; nullopt for points at or behind the camera plane
 // (depth <= 0), which have no image.
-std::optional<ScreenPoint> project_to_pixels(const LodCamera& camera, const Vec3d& point);
+std::optional<ScreenPoint> project_to_pixels(const LodCamera& camera, const glm::dvec3& point);
 
 // The inverse: the unit direction of the ray from the camera through a (continuous) pixel.
-Vec3d ray_through_pixel(const LodCamera& camera, double x_px, double y_px);
+glm::dvec3 ray_through_pixel(const LodCamera& camera, double x_px, double y_px);
 
 }  // namespace trailray::terrain

@@ -48,15 +48,15 @@ double tile_ground_width_m(const TileId& tile, const TileExtent& e) {
 // which bulge with the Earth's curvature), widened by the most the curved surface can rise
 // between grid points, so that it contains the whole tile, not just the points.
 struct TileVolume {
-  Vec3d centre;
-  std::array<Vec3d, 3> axes;  // unit east, north, up at the tile's centre
+  glm::dvec3 centre{};
+  std::array<glm::dvec3, 3> axes{};  // unit east, north, up at the tile's centre
   std::array<double, 3> half_extent;
 
-  double distance_to(const Vec3d& p) const {
-    const Vec3d d = p - centre;
+  double distance_to(const glm::dvec3& p) const {
+    const glm::dvec3 d = p - centre;
     double squared = 0.0;
     for (int i = 0; i < 3; ++i) {
-      const double outside = std::max(std::abs(dot(d, axes[i])) - half_extent[i], 0.0);
+      const double outside = std::max(std::abs(glm::dot(d, axes[i])) - half_extent[i], 0.0);
       squared += outside * outside;
     }
     return std::sqrt(squared);
@@ -64,17 +64,17 @@ struct TileVolume {
 
   bool outside_of(const FrustumPlane& plane) const {
     double reach = 0.0;  // the box's extent along the plane's normal
-    for (int i = 0; i < 3; ++i) reach += half_extent[i] * std::abs(dot(plane.normal, axes[i]));
+    for (int i = 0; i < 3; ++i) reach += half_extent[i] * std::abs(glm::dot(plane.normal, axes[i]));
     return plane.signed_distance(centre) + reach < 0.0;
   }
 
   // Whether all of `points` lie beyond one face of the box (the other half of the separating-axis
   // test against the frustum: the planes alone keep boxes that pass near a frustum corner).
-  bool separated_from(const std::array<Vec3d, 8>& points) const {
+  bool separated_from(const std::array<glm::dvec3, 8>& points) const {
     for (int i = 0; i < 3; ++i) {
       bool all_above = true, all_below = true;
-      for (const Vec3d& p : points) {
-        const double q = dot(p - centre, axes[i]);
+      for (const glm::dvec3& p : points) {
+        const double q = glm::dot(p - centre, axes[i]);
         all_above = all_above && q > half_extent[i];
         all_below = all_below && q < -half_extent[i];
       }
@@ -83,8 +83,8 @@ struct TileVolume {
     return false;
   }
 
-  std::array<Vec3d, 8> corners() const {
-    std::array<Vec3d, 8> c;
+  std::array<glm::dvec3, 8> corners() const {
+    std::array<glm::dvec3, 8> c{};
     for (int k = 0; k < 8; ++k) {
       c[k] = centre + axes[0] * ((k & 1) ? half_extent[0] : -half_extent[0]) +
              axes[1] * ((k & 2) ? half_extent[1] : -half_extent[1]) +
@@ -129,7 +129,7 @@ class TileGrid {
 
   // Calls visit(point - origin) for every grid point at both heights.
   template <class Visit>
-  void for_each_point(const Vec3d& origin, Visit&& visit) const {
+  void for_each_point(const glm::dvec3& origin, Visit&& visit) const {
     for (int i = 0; i < samples_; ++i) {
       const double n = prime_vertical_radius(lats_[i].sin);
       for (const float height : heights_) {
@@ -137,7 +137,7 @@ class TileGrid {
         const double rho = (n + h) * lats_[i].cos;  // distance from the Earth's axis
         const double z = (n * (1.0 - kE2) + h) * lats_[i].sin - origin.z;
         for (int j = 0; j < samples_; ++j)
-          visit(Vec3d{rho * lons_[j].cos - origin.x, rho * lons_[j].sin - origin.y, z});
+          visit(glm::dvec3{rho * lons_[j].cos - origin.x, rho * lons_[j].sin - origin.y, z});
       }
     }
   }
@@ -153,17 +153,17 @@ class TileGrid {
 // the bulge between them.
 TileVolume tile_volume(const TileGrid& grid) {
   const auto lat_c = grid.centre_lat(), lon_c = grid.centre_lon();
-  const Vec3d east{-lon_c.sin, lon_c.cos, 0.0};
-  const Vec3d north{-lat_c.sin * lon_c.cos, -lat_c.sin * lon_c.sin, lat_c.cos};
-  const Vec3d up{lat_c.cos * lon_c.cos, lat_c.cos * lon_c.sin, lat_c.sin};
+  const glm::dvec3 east{-lon_c.sin, lon_c.cos, 0.0};
+  const glm::dvec3 north{-lat_c.sin * lon_c.cos, -lat_c.sin * lon_c.sin, lat_c.cos};
+  const glm::dvec3 up{lat_c.cos * lon_c.cos, lat_c.cos * lon_c.sin, lat_c.sin};
   const double n_c = prime_vertical_radius(lat_c.sin);
-  const Vec3d origin{n_c * lat_c.cos * lon_c.cos, n_c * lat_c.cos * lon_c.sin, n_c * (1.0 - kE2) * lat_c.sin};
+  const glm::dvec3 origin{n_c * lat_c.cos * lon_c.cos, n_c * lat_c.cos * lon_c.sin, n_c * (1.0 - kE2) * lat_c.sin};
 
   std::array<double, 3> lo{}, hi{};
   lo.fill(std::numeric_limits<double>::infinity());
   hi.fill(-std::numeric_limits<double>::infinity());
-  grid.for_each_point(origin, [&](const Vec3d& p) {
-    const double q[3] = {dot(p, east), dot(p, north), dot(p, up)};
+  grid.for_each_point(origin, [&](const glm::dvec3& p) {
+    const double q[3] = {glm::dot(p, east), glm::dot(p, north), glm::dot(p, up)};
     for (int k = 0; k < 3; ++k) {
       lo[k] = std::min(lo[k], q[k]);
       hi[k] = std::max(hi[k], q[k]);
@@ -188,10 +188,10 @@ TileVolume tile_volume(const TileGrid& grid) {
 // in H by more than the bulge between them.
 class HorizonOccluder {
  public:
-  explicit HorizonOccluder(const Vec3d& camera) : camera_(camera) {
+  explicit HorizonOccluder(const glm::dvec3& camera) : camera_(camera) {
     constexpr double kPolarRadiusM = kA * (1.0 - geo::wgs84::kF);
     const double radius = kPolarRadiusM + static_cast<double>(kPlausibleMinHeightM) - 200.0;
-    const double distance = length(camera);
+    const double distance = glm::length(camera);
     active_ = distance > radius;  // a camera inside the ball sees nothing of it as an occluder
     if (!active_) return;
     to_centre_ = camera * (-1.0 / distance);
@@ -204,12 +204,12 @@ class HorizonOccluder {
   bool hides(const TileVolume& volume, const TileGrid& grid) const {
     if (!active_) return false;
     const auto corners = volume.corners();
-    if (std::all_of(corners.begin(), corners.end(), [&](const Vec3d& p) { return inside(p - camera_, 0.0); })) {
+    if (std::all_of(corners.begin(), corners.end(), [&](const glm::dvec3& p) { return inside(p - camera_, 0.0); })) {
       return true;
     }
     if (grid.samples() == 3 && volume.half_extent[0] < kBigTileM) return false;  // the box is tight enough
     bool all_inside = true;
-    grid.for_each_point(camera_, [&](const Vec3d& p) { all_inside = all_inside && inside(p, grid.bulge_m()); });
+    grid.for_each_point(camera_, [&](const glm::dvec3& p) { all_inside = all_inside && inside(p, grid.bulge_m()); });
     return all_inside;
   }
 
@@ -219,26 +219,26 @@ class HorizonOccluder {
 
   // Whether p - camera lies in H at least `margin` from its boundary (the plane and the cone's
   // side, distance |v| sin(half angle - angle off the axis)).
-  bool inside(const Vec3d& v, double margin) const {
-    const double along = dot(v, to_centre_);
+  bool inside(const glm::dvec3& v, double margin) const {
+    const double along = glm::dot(v, to_centre_);
     if (along < plane_distance_ + margin) return false;
-    const double off_axis = std::sqrt(std::max(dot(v, v) - along * along, 0.0));
+    const double off_axis = std::sqrt(std::max(glm::dot(v, v) - along * along, 0.0));
     return sin_half_angle_ * along - cos_half_angle_ * off_axis >= margin;
   }
 
-  Vec3d camera_;
-  Vec3d to_centre_;
+  glm::dvec3 camera_{};
+  glm::dvec3 to_centre_{};
   double plane_distance_ = 0.0, sin_half_angle_ = 0.0, cos_half_angle_ = 0.0;
   bool active_ = false;
 };
 
 // The corners of the camera's frustum: the near and far rectangles.
-std::array<Vec3d, 8> frustum_corners(const LodCamera& camera) {
-  const Vec3d forward = normalized(camera.forward);
-  const Vec3d right = normalized(cross(forward, camera.up));
-  const Vec3d up = cross(right, forward);
+std::array<glm::dvec3, 8> frustum_corners(const LodCamera& camera) {
+  const glm::dvec3 forward = normalized(camera.forward);
+  const glm::dvec3 right = normalized(glm::cross(forward, camera.up));
+  const glm::dvec3 up = glm::cross(right, forward);
   const double tan_v = std::tan(0.5 * camera.vertical_fov_rad), tan_h = tan_v * camera.aspect();
-  std::array<Vec3d, 8> c;
+  std::array<glm::dvec3, 8> c{};
   int k = 0;
   for (const double depth : {camera.near_m, camera.far_m}) {
     for (const double sx : {-1.0, 1.0}) {
@@ -314,7 +314,7 @@ class Selector {
   const LodSettings& settings_;
   const HeightRange& height_range_;
   Frustum frustum_;
-  std::array<Vec3d, 8> frustum_corners_;
+  std::array<glm::dvec3, 8> frustum_corners_{};
   HorizonOccluder horizon_;
 };
 

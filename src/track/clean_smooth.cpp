@@ -37,7 +37,7 @@ struct SmoothScratch {
   // max(|da|, |db|) per step, bounding every offset within a window.
   std::vector<double> lat, lon, a, b, aa, bb, ab, e, m, reach;
   std::vector<double> fa, fb, faa, fbb, fab, fe, fm;  // convolutions, one per full-kernel point
-  std::vector<geo::Ecef> ecef;                        // originals in ECEF, filled when needed
+  std::vector<glm::dvec3> ecef;                       // originals in ECEF, filled when needed
   std::vector<unsigned char> has_ecef;
   struct Results {
     std::size_t first = 0;
@@ -250,11 +250,11 @@ class StretchSmoother {
       x_.has_ecef.assign(x_.lat.size(), 0);
       ecef_cleared_ = true;
     }
-    geo::Ecef mean;
+    glm::dvec3 mean{};
     const double iw = x_.inv_weight_sum[k];
     for (std::size_t j = l - k; j <= l + k; ++j) {
       if (!x_.has_ecef[j]) {
-        x_.ecef[j] = geo::to_ecef(x_.lat[j], x_.lon[j]);
+        x_.ecef[j] = geo::ecef_from_geodetic(x_.lat[j], x_.lon[j], 0.0);
         x_.has_ecef[j] = 1;
       }
       const double wj = x_.weight[j > l ? j - l : l - j] * iw;
@@ -262,7 +262,9 @@ class StretchSmoother {
       mean.y += wj * x_.ecef[j].y;
       mean.z += wj * x_.ecef[j].z;
     }
-    geo::from_ecef(mean, lat, lon);
+    const geo::Geodetic g = geo::geodetic_from_ecef(mean);
+    lat = g.lat_deg;
+    lon = g.lon_deg;
   }
 
   void write_back(const SmoothScratch::Results& r) {

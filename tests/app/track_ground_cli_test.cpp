@@ -58,7 +58,7 @@ TEST(TrackGroundCli, ATrackWithoutElevationsOnTheNeutralGroundIsAnOpaqueTube) {
   const auto camera = scene::camera_looking_at({{kLat, kLon, 0.0}, kDistanceM, 0.0, kPitchDeg},
                                                 {scene::kDefaultVerticalFovDeg, kWidth, kHeight}, 0.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  const glm::dvec3 centre = scene::to_dvec3(scene::ecef_from({kLat, kLon, 0.0}));
+  const glm::dvec3 centre = scene::ecef_from({kLat, kLon, 0.0});
   const scene::EnuAxes enu = scene::enu_axes_at(kLat, kLon);
   const double radius = 0.5 * kTubeM;
   const double pixel_angle = 2.0 * std::tan(0.5 * scene::kDefaultVerticalFovDeg * M_PI / 180.0) / kHeight;
@@ -73,7 +73,7 @@ TEST(TrackGroundCli, ATrackWithoutElevationsOnTheNeutralGroundIsAnOpaqueTube) {
     ASSERT_GT(ground_gb, 100.0) << "column " << x << " does not end on the grey ground";
     for (std::uint32_t y = 0; y < kHeight; ++y) {
       const scene::Ray ray = camera.value->ray_through_pixel(x + 0.5, y + 0.5);
-      const glm::dvec3 eye = scene::to_dvec3(ray.origin), d = ray.direction;
+      const glm::dvec3 eye = ray.origin, d = ray.direction;
       const glm::dvec3 w = eye - centre;
       const glm::dvec3 d_across = d - enu.east * glm::dot(d, enu.east), w_across = w - enu.east * glm::dot(w, enu.east);
       const double across2 = glm::dot(d_across, d_across);

@@ -97,7 +97,7 @@ TEST(TrackScene, PointsWithoutSmoothingAreTheRecordedOnesInEcef) {
   ASSERT_EQ(points.size(), recorded.points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = recorded.points[i];
-    const glm::dvec3 expected = scene::to_dvec3(scene::ecef_from({p.lat, p.lon, p.ele}));
+    const glm::dvec3 expected = scene::ecef_from({p.lat, p.lon, p.ele});
     EXPECT_LT(glm::length(points[i] - expected), 1e-6) << "point " << i;
   }
 }
@@ -111,7 +111,7 @@ TEST(TrackScene, PointsWithoutElevationLieOnTheNeutralGroundAndCurtainsReachIt) 
   const auto& segments = scene.tracks.at(0).geometry.segments;
   ASSERT_EQ(segments.size(), 2u);
   for (std::size_t i = 0; i < flat.points.size(); ++i) {
-    const glm::dvec3 ground = scene::to_dvec3(scene::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0}));
+    const glm::dvec3 ground = scene::ecef_from({flat.points[i].lat, flat.points[i].lon, 900.0});
     EXPECT_LT(glm::length(segments[0].points_ecef[i] - ground), 1e-6) << "point " << i << " is on the ground";
   }
   ASSERT_EQ(segments[0].heights_above_ground_m.size(), flat.points.size());

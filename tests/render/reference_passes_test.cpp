@@ -38,7 +38,7 @@ double focal_length_px() { return 0.5 * kLens.height_px / std::tan(kLens.vertica
 // Level points (metres east and north of kPlace, on the ellipsoid) as one segment.
 scene::TrackGeometry level_path(const std::vector<glm::dvec2>& east_north) {
   const scene::EnuAxes axes = scene::enu_axes_at(kPlace.lat_deg, kPlace.lon_deg);
-  const glm::dvec3 origin = scene::to_dvec3(scene::ecef_from(kPlace));
+  const glm::dvec3 origin = scene::ecef_from(kPlace);
   scene::TrackPolyline line;
   for (const glm::dvec2& p : east_north) line.points_ecef.push_back(origin + p.x * axes.east + p.y * axes.north);
   scene::TrackGeometry g;
@@ -78,14 +78,14 @@ class ReferencePassesTest : public GlTest {
   // the two open ends of the path are left out (neither technique caps them).
   void expect_no_holes(const scene::RgbaImage& image, const std::vector<glm::dvec2>& east_north, const char* what) {
     const scene::EnuAxes axes = scene::enu_axes_at(kPlace.lat_deg, kPlace.lon_deg);
-    const glm::dvec3 origin = scene::to_dvec3(scene::ecef_from(kPlace));
+    const glm::dvec3 origin = scene::ecef_from(kPlace);
     int holes = 0;
     std::string first_hole;
     for (std::size_t i = 0; i + 1 < east_north.size(); ++i)
       for (int k = 0; k <= 100; ++k) {
         if ((i == 0 && k == 0) || (i + 2 == east_north.size() && k == 100)) continue;
         const glm::dvec2 p = glm::mix(east_north[i], east_north[i + 1], k / 100.0);
-        const auto pixel = camera.project(scene::to_ecef(origin + p.x * axes.east + p.y * axes.north));
+        const auto pixel = camera.project(origin + p.x * axes.east + p.y * axes.north);
         ASSERT_TRUE(pixel && pixel->x_px >= 0.0 && pixel->y_px >= 0.0 && pixel->x_px < kLens.width_px &&
                     pixel->y_px < kLens.height_px)
             << what << ": the path leaves the picture";

@@ -22,7 +22,7 @@ const scene::Lens kLens{45.0, 1280, 720};
 const scene::DepthRange kDepth{100.0, 300'000.0};
 
 scene::Camera camera(double heading, double pitch, const glm::dvec3& shift = glm::dvec3(0.0)) {
-  return scene::Camera(scene::to_ecef(scene::to_dvec3(scene::ecef_from(kCameraPosition)) + shift), heading, pitch, kLens, kDepth);
+  return scene::Camera(scene::ecef_from(kCameraPosition) + shift, heading, pitch, kLens, kDepth);
 }
 
 // The sun 35 degrees high in the south-east of the camera.
@@ -41,8 +41,8 @@ std::vector<glm::dvec3> slice_corners(const scene::Camera& cam, double near_m, d
   for (double depth : {near_m, far_m}) {
     for (double sx : {-1.0, 1.0}) {
       for (double sy : {-1.0, 1.0}) {
-        corners.push_back(scene::to_dvec3(cam.position()) + depth * cam.axes().forward +
-                          sx * depth * tan_h * cam.axes().right + sy * depth * tan_v * cam.axes().up);
+        corners.push_back(cam.position() + depth * cam.axes().forward + sx * depth * tan_h * cam.axes().right +
+                          sy * depth * tan_v * cam.axes().up);
       }
     }
   }
@@ -126,7 +126,7 @@ TEST(ShadowCascades, CastersUpToTheHeightSpanTowardsTheSunAreInside) {
 TEST(ShadowCascades, MovingTheCameraMovesEachMapByWholeTexelsOrNotAtAll) {
   const ShadowCascades reference(camera(30.0, -25.0), sun_direction());
   const int size = reference.settings().map_size_px;
-  const glm::dvec3 world_point = scene::to_dvec3(scene::ecef_from(scene::GeoPosition{46.72, 7.90, 800.0}));
+  const glm::dvec3 world_point = scene::ecef_from(scene::GeoPosition{46.72, 7.90, 800.0});
   const double texel0 = reference[0].texel_size_m;
   int moves_seen = 0;
   for (const glm::dvec3& step : {glm::dvec3(0.3, 0.0, 0.0), glm::dvec3(0.0, 0.45, 0.1), glm::dvec3(-0.7, 0.2, 0.6),
@@ -210,7 +210,7 @@ TEST(ShadowCascades, CameraRelativeFloatMatrixAgreesWithTheDoubleProjection) {
       for (int row = 0; row < 4; ++row) matrix[column][row] = m[static_cast<std::size_t>(column * 4 + row)];
     }
     const glm::vec4 clip = matrix * glm::vec4(glm::vec3(offset), 1.0f);
-    const glm::dvec3 expected = clip_of(cascades[i], scene::to_dvec3(cam.position()) + offset);
+    const glm::dvec3 expected = clip_of(cascades[i], cam.position() + offset);
     // Within a hundredth of a texel.
     const double texel_clip = 2.0 / cascades.settings().map_size_px;
     EXPECT_NEAR(clip.x, expected.x, 0.01 * texel_clip) << "cascade " << i;

@@ -29,13 +29,13 @@ const scene::GeoPosition kCameraPosition{46.69, 7.86, 600.0};
 struct Scene {
   scene::Camera camera{scene::ecef_from(kCameraPosition), 0.0, -20.0, scene::Lens{45.0, 320, 180}, scene::DepthRange{50.0, 100'000.0}};
   scene::EnuAxes enu = scene::enu_axes_at(kCameraPosition.lat_deg, kCameraPosition.lon_deg);
-  glm::dvec3 foot = scene::to_dvec3(scene::ecef_from(scene::GeoPosition{kCameraPosition.lat_deg, kCameraPosition.lon_deg, 0.0}));
+  glm::dvec3 foot = scene::ecef_from(scene::GeoPosition{kCameraPosition.lat_deg, kCameraPosition.lon_deg, 0.0});
   // The sun due east, 30 degrees high: a wall of height h casts a shadow h / tan(30) long, westwards.
   glm::dvec3 sun = std::cos(30.0 * kRadPerDeg) * enu.east + std::sin(30.0 * kRadPerDeg) * enu.up;
 
   // A point on the plane, `east_m` and `north_m` from the foot.
   glm::dvec3 ground(double east_m, double north_m) const { return foot + east_m * enu.east + north_m * enu.north; }
-  glm::vec3 relative(const glm::dvec3& p) const { return glm::vec3(p - scene::to_dvec3(camera.position())); }
+  glm::vec3 relative(const glm::dvec3& p) const { return glm::vec3(p - camera.position()); }
 };
 
 // Triangles (camera-relative float positions) in a buffer, drawn with the shadow caster program.
@@ -117,7 +117,7 @@ std::vector<ProbeResult> measure(const Scene& s, bool with_walls, const std::vec
     const glm::dvec3 p = probes[std::min(i, probes.size() - 1)].position;
     const glm::vec3 rel = s.relative(p);
     probe.set_vec3("u_probe_positions[" + std::to_string(i) + "]", rel.x, rel.y, rel.z);
-    const double depth = glm::dot(p - scene::to_dvec3(s.camera.position()), s.camera.axes().forward);
+    const double depth = glm::dot(p - s.camera.position(), s.camera.axes().forward);
     probe.set_float("u_probe_view_depths_m[" + std::to_string(i) + "]", static_cast<float>(depth));
   }
   const glm::vec3 up(s.enu.up), sun(s.sun);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "geo/tile_id.hpp"
+#include "geo/wgs84.hpp"
 #include "scene/camera.hpp"
 #include "terrain/lod_selection.hpp"
 
@@ -46,16 +47,15 @@ TEST(TerrainMesh, VerticesLieOnTheEllipsoidAtTheirHeightRelativeToTheOrigin) {
     const TerrainVertex& v = mesh.vertices[k];
     EXPECT_FLOAT_EQ(v.height_m, 500.0f + static_cast<float>(i));
     const auto ll = geo::latlon_from_tile_pixel(kAlpsTile, i, j, 64);
-    const glm::dvec3 expected = scene::to_dvec3(scene::ecef_from({ll->lat, ll->lon, 500.0 + i}));
-    const glm::dvec3 actual = scene::to_dvec3(mesh.origin) + glm::dvec3(v.x, v.y, v.z);
+    const glm::dvec3 expected = scene::ecef_from({ll->lat, ll->lon, 500.0 + i});
+    const glm::dvec3 actual = mesh.origin + glm::dvec3(v.x, v.y, v.z);
     EXPECT_LT(glm::length(actual - expected), 0.01) << "vertex " << i << "," << j;
   }
   // The origin is the tile's centre at its mean height.
-  double lat = 0, lon = 0;
-  geo::from_ecef(mesh.origin, lat, lon);
+  const geo::Geodetic origin = geo::geodetic_from_ecef(mesh.origin);
   const auto centre = geo::latlon_from_tile_pixel(kAlpsTile, 0.5, 0.5, 1);
-  EXPECT_NEAR(lat, centre->lat, 1e-9);
-  EXPECT_NEAR(lon, centre->lon, 1e-9);
+  EXPECT_NEAR(origin.lat_deg, centre->lat, 1e-9);
+  EXPECT_NEAR(origin.lon_deg, centre->lon, 1e-9);
 }
 
 TEST(TerrainMesh, NormalsPointUpOnFlatGroundAndTiltAwayFromTheRise) {
@@ -86,13 +86,13 @@ TEST(TerrainMesh, SkirtsHangBelowTheEdgesBySkirtDepth) {
   const TerrainMesh mesh = build_terrain_mesh(tile, 9, 0.0f);
   const double depth = terrain::skirt_depth_m(kAlpsTile, 8);
   ASSERT_GT(depth, 0.0);
-  const glm::dvec3 origin = scene::to_dvec3(mesh.origin);
+  const glm::dvec3 origin = mesh.origin;
   for (std::size_t k = 81; k < mesh.vertices.size(); ++k) {
     const TerrainVertex& v = mesh.vertices[k];
     const glm::dvec3 p = origin + glm::dvec3(v.x, v.y, v.z);
-    double lat = 0, lon = 0;
-    geo::from_ecef(scene::to_ecef(p), lat, lon);
-    const double height = glm::dot(p - scene::to_dvec3(scene::ecef_from({lat, lon, 0.0})), scene::enu_axes_at(lat, lon).up);
+    const geo::Geodetic g = geo::geodetic_from_ecef(p);
+    const double lat = g.lat_deg, lon = g.lon_deg;
+    const double height = glm::dot(p - scene::ecef_from({lat, lon, 0.0}), scene::enu_axes_at(lat, lon).up);
     EXPECT_NEAR(height, 1200.0 - depth, 0.05) << "skirt vertex " << k;
   }
 }

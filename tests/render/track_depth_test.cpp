@@ -4,14 +4,13 @@
 // terrain hides it, the boundary where a ray marched on the CPU over the same terrain says).
 #include <gtest/gtest.h>
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "geo/wgs84.hpp"
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
 #include "render/passes/track_pass.hpp"
@@ -89,9 +88,8 @@ bool ridge_hides(const glm::dvec3& eye, const glm::dvec3& point) {
   const int steps = static_cast<int>(length / 2.0);
   for (int i = 1; i < steps; ++i) {
     const glm::dvec3 q = glm::mix(eye, point, static_cast<double>(i) / steps);
-    double lat = 0.0, lon = 0.0, h = 0.0;
-    GeographicLib::Geocentric::WGS84().Reverse(q.x, q.y, q.z, lat, lon, h);
-    if (h < ridge_height_m((lon - kRidgeLon) * ridge_metres_per_degree())) return true;
+    const geo::Geodetic g = geo::geodetic_from_ecef(q);
+    if (g.height_m < ridge_height_m((g.lon_deg - kRidgeLon) * ridge_metres_per_degree())) return true;
   }
   return false;
 }
@@ -111,7 +109,7 @@ TEST_F(TrackDepthTest, ATrackThroughARidgeIsOpaqueInFrontAndAGhostBehindIt) {
   const glm::dvec3 to_target = glm::dvec3(0, 0, 1300) - glm::dvec3(-3500, -3000, 1900);
   const double heading = std::atan2(to_target.x, to_target.y) * 180.0 / M_PI;
   const double pitch = std::atan2(to_target.z, std::hypot(to_target.x, to_target.y)) * 180.0 / M_PI;
-  const scene::Camera camera(scene::to_ecef(eye), heading, pitch, lens, scene::DepthRange{50.0, 1.0e5});
+  const scene::Camera camera(eye, heading, pitch, lens, scene::DepthRange{50.0, 1.0e5});
 
   constexpr double kTrackM = 1300.0, kWidthPx = 5.0;
   constexpr float kAlpha = 0.45f;

@@ -41,7 +41,7 @@ class TrackGroundTest : public GlTest {};
 scene::Camera looking_north_at(const LocalFrame& frame, double up_m, double distance_m, double pitch_deg, const scene::Lens& lens) {
   const double pitch = pitch_deg * M_PI / 180.0;
   const glm::dvec3 eye = frame.point(0.0, -distance_m * std::cos(pitch), up_m + distance_m * std::sin(pitch));
-  return scene::Camera(scene::to_ecef(eye), 0.0, -pitch_deg, lens, scene::DepthRange{10.0, 1.0e5});
+  return scene::Camera(eye, 0.0, -pitch_deg, lens, scene::DepthRange{10.0, 1.0e5});
 }
 
 // An east-west line of points `up_m` above the frame's origin, every 20 m from -600 to 600 m
@@ -65,7 +65,7 @@ struct PixelOnTube {
 PixelOnTube pixel_on_tube(const scene::Camera& camera, const LocalFrame& frame, double up_m, double radius_m, double x,
                           double y) {
   const scene::Ray ray = camera.ray_through_pixel(x, y);
-  const glm::dvec3 eye = scene::to_dvec3(ray.origin), d = ray.direction, u = frame.axes.east;
+  const glm::dvec3 eye = ray.origin, d = ray.direction, u = frame.axes.east;
   const glm::dvec3 w = eye - frame.point(0.0, 0.0, up_m);
   const glm::dvec3 d_across = d - u * glm::dot(d, u), w_across = w - u * glm::dot(w, u);
   const double across2 = glm::dot(d_across, d_across);
@@ -87,7 +87,7 @@ PixelOnTube pixel_on_tube(const scene::Camera& camera, const LocalFrame& frame, 
 // the camera (where every capsule of an east-west line seen from due south takes it).
 double tube_radius_m(const scene::Camera& camera, const LocalFrame& frame, double up_m, const TrackWidth& width) {
   if (width.unit == TrackWidth::Unit::metres) return 0.5 * width.value;
-  const glm::dvec3 eye = scene::to_dvec3(camera.position());
+  const glm::dvec3 eye = camera.position();
   const glm::dvec3 to_axis = frame.point(0.0, 0.0, up_m) - eye;
   const glm::dvec3 nearest = to_axis - frame.axes.east * glm::dot(to_axis, frame.axes.east);
   const double lens_angle =

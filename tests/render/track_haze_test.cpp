@@ -35,7 +35,7 @@ TEST_F(TrackHazeTest, AFarTrackKeepsItsColourWhereTheGroundFadesIntoHaze) {
   const scene::Lens lens{20.0, 320, 180};
   const glm::dvec3 eye = frame.point(0.0, -25000.0, 1300.0);
   const double pitch = std::atan2(1005.0 - 1300.0, 25000.0) * 180.0 / M_PI;
-  const scene::Camera camera(scene::to_ecef(eye), 0.0, pitch, lens, scene::DepthRange{100.0, 1.0e5});
+  const scene::Camera camera(eye, 0.0, pitch, lens, scene::DepthRange{100.0, 1.0e5});
   const TrackBuffer buffer(
       test::geometry_of({test::polyline(frame, {{-3000.0, 0.0, 1005.0}, {3000.0, 0.0, 1005.0}})}));
   SceneRenderOptions options = test::plain_options(place, 1000.0);

@@ -4,12 +4,11 @@
 // 5 m a centimetre is about a pixel: the tube would stand still, then jump.
 #include <gtest/gtest.h>
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "geo/wgs84.hpp"
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
 #include "render/passes/track_pass.hpp"
@@ -39,16 +38,15 @@ class TrackPrecisionTest : public GlTest {
                                              const std::string& name) {
     SceneRenderer renderer({nullptr, nullptr});
     const TrackBuffer buffer(geometry);
-    scene::GeoPosition place;
-    GeographicLib::Geocentric::WGS84().Reverse(frame.origin.x, frame.origin.y, frame.origin.z, place.lat_deg,
-                                               place.lon_deg, place.height_m);
+    const geo::Geodetic origin = geo::geodetic_from_ecef(frame.origin);
+    const scene::GeoPosition place{origin.lat_deg, origin.lon_deg, origin.height_m};
     SceneRenderOptions options = test::plain_options(place, 0.0);
     options.track_settings.width = {0.2, TrackWidth::Unit::metres};
     std::vector<double> errors;
     for (int step = 0; step <= kSteps; ++step) {
       const double east = -0.5 + kStepM * step;
-      const scene::Camera camera(scene::to_ecef(frame.point(east, 0.0, kTrackM + kAboveM)), 0.0, -90.0, kLens,
-                          scene::DepthRange{0.5, 1.0e5});
+      const scene::Camera camera(frame.point(east, 0.0, kTrackM + kAboveM), 0.0, -90.0, kLens,
+                                 scene::DepthRange{0.5, 1.0e5});
       const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
       if (step == 0) keep_image(images.with, name);
       double sum = 0.0, weighted = 0.0;
@@ -59,7 +57,7 @@ class TrackPrecisionTest : public GlTest {
           weighted += a * (x + 0.5);
         }
       EXPECT_GT(sum, 40 * 10.0) << "step " << step << ": the tube is missing";
-      const auto axis = camera.project(scene::to_ecef(frame.point(0.0, 0.0, kTrackM)));
+      const auto axis = camera.project(frame.point(0.0, 0.0, kTrackM));
       if (sum <= 0.0 || !axis) return {};
       errors.push_back(weighted / sum - axis->x_px);
     }

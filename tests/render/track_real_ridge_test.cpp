@@ -6,13 +6,12 @@
 // pixels, so samples near a boundary are left out.
 #include <gtest/gtest.h>
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "geo/wgs84.hpp"
 #include "gl_test_support.hpp"
 #include "render/scene_renderer.hpp"
 #include "render/passes/track_pass.hpp"
@@ -40,8 +39,8 @@ bool terrain_hides(terrain::HeightSampler& sampler, const glm::dvec3& eye, const
   const int steps = static_cast<int>(length / 5.0);
   for (int i = 1; i < steps; ++i) {
     const glm::dvec3 q = glm::mix(eye, point, static_cast<double>(i) / steps);
-    double lat = 0.0, lon = 0.0, h = 0.0;
-    GeographicLib::Geocentric::WGS84().Reverse(q.x, q.y, q.z, lat, lon, h);
+    const geo::Geodetic g = geo::geodetic_from_ecef(q);
+    const double lat = g.lat_deg, lon = g.lon_deg, h = g.height_m;
     const double ground = sampler.sample(lat, lon);
     if (!std::isnan(ground) && h < ground) return true;
   }
@@ -66,11 +65,12 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
   const auto made = scene::camera_at({{46.685, 7.866, 1450.0}, 5.0, -4.0}, lens, 600.0);
   ASSERT_TRUE(made.ok()) << made.error;
   const scene::Camera& camera = *made.value;
-  const glm::dvec3 eye = scene::to_dvec3(camera.position());
+  const glm::dvec3 eye = camera.position();
 
   scene::TrackGeometry geometry;
   scene::TrackPolyline line;
-  for (double lon = 7.840; lon <= 7.9101; lon += 0.001) line.points_ecef.push_back(scene::to_dvec3(scene::ecef_from({kLat, lon, kTrackM})));
+  for (double lon = 7.840; lon <= 7.9101; lon += 0.001)
+    line.points_ecef.push_back(scene::ecef_from({kLat, lon, kTrackM}));
   geometry.segments.push_back(line);
   const TrackBuffer buffer(geometry);
   SceneRenderOptions options = test::plain_options({kLat, 7.87, 0.0}, 560.0);
@@ -86,7 +86,7 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
   const double pixel_angle = 2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px;
   std::vector<test::VisibilitySample> samples;
   for (double lon = 7.841; lon <= 7.909; lon += 0.000131) {
-    const glm::dvec3 centre = scene::to_dvec3(scene::ecef_from({kLat, lon, kTrackM}));
+    const glm::dvec3 centre = scene::ecef_from({kLat, lon, kTrackM});
     const glm::dvec3 towards_eye = glm::normalize(eye - centre);
     const double radius = 0.5 * kWidthPx * pixel_angle * glm::length(eye - centre);
     test::VisibilitySample s{0, 0, terrain_hides(sampler, eye, centre + towards_eye * radius),

@@ -53,7 +53,7 @@ TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
   const double shadow_north = 50.0 / std::tan(60.0 * M_PI / 180.0);
   for (const double east : {-50.0, 0.0, 50.0}) {
     const auto lum = [&](const scene::RgbaImage& image, double north) {
-      const auto p = camera.project(scene::to_ecef(frame.point(east, north, 0.0)));
+      const auto p = camera.project(frame.point(east, north, 0.0));
       return p ? mean_luminance(image, p->x_px, p->y_px, 1) : -1.0;
     };
     const double dark = lum(shadowed.image, shadow_north), light = lum(unshadowed, shadow_north);
@@ -71,7 +71,7 @@ TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
 TEST_F(TrackShadowCurtainTest, TheCurtainHangsFromTheTrackToTheGround) {
   const LocalFrame frame(kPlace);
   SceneRenderer renderer({nullptr, nullptr});
-  const scene::Camera camera(scene::to_ecef(frame.point(0, -400, 150)), 0.0, -10.0, kLens, scene::DepthRange{10.0, 1.0e5});
+  const scene::Camera camera(frame.point(0, -400, 150), 0.0, -10.0, kLens, scene::DepthRange{10.0, 1.0e5});
   scene::TrackPolyline line = polyline(frame, {{-100, 0, 100}, {-30, 0, 100}, {40, 0, 100}, {100, 0, 100}});
   line.heights_above_ground_m = {100.0f, 100.0f, 100.0f, 100.0f};
   const TrackBuffer buffer(test::geometry_of({line}));

@@ -38,7 +38,7 @@ struct LocalFrame {
   scene::EnuAxes axes;
 
   explicit LocalFrame(const scene::GeoPosition& at)
-      : origin(scene::to_dvec3(scene::ecef_from(at))), axes(scene::enu_axes_at(at.lat_deg, at.lon_deg)) {}
+      : origin(scene::ecef_from(at)), axes(scene::enu_axes_at(at.lat_deg, at.lon_deg)) {}
   glm::dvec3 point(double east_m, double north_m, double up_m) const {
     return origin + east_m * axes.east + north_m * axes.north + up_m * axes.up;
   }
@@ -125,7 +125,7 @@ inline double row_alpha(const scene::RgbaImage& with, const scene::RgbaImage& wi
 
 // The pixel a point projects to, clamped into the image; false when behind the camera or off it.
 inline bool pixel_of(const scene::Camera& camera, const glm::dvec3& ecef, std::uint32_t& x, std::uint32_t& y) {
-  const auto p = camera.project(scene::to_ecef(ecef));
+  const auto p = camera.project(ecef);
   if (!p || p->x_px < 0.0 || p->y_px < 0.0 || p->x_px >= camera.lens().width_px || p->y_px >= camera.lens().height_px)
     return false;
   x = static_cast<std::uint32_t>(p->x_px);

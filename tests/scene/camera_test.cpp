@@ -21,7 +21,7 @@ Camera camera_at_position(const GeoPosition& p, double heading, double pitch, co
   return Camera(ecef_from(p), heading, pitch, lens, depth_range_for(p.height_m, p.height_m));
 }
 
-geo::Ecef offset(const geo::Ecef& p, const glm::dvec3& d) { return to_ecef(to_dvec3(p) + d); }
+glm::dvec3 offset(const glm::dvec3& p, const glm::dvec3& d) { return p + d; }
 
 void expect_near_vec(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
   EXPECT_NEAR(a.x, b.x, tolerance);
@@ -103,14 +103,14 @@ TEST(Camera, AgreesWithTheLodCameraOfTheTerrainLayer) {
   for (double x : {10.0, 640.0, 1270.0}) {
     for (double y : {10.0, 360.0, 710.0}) {
       const Ray ray = camera.ray_through_pixel(x, y);
-      const geo::Ecef p = offset(ray.origin, 3000.0 * ray.direction);
+      const glm::dvec3 p = offset(ray.origin, 3000.0 * ray.direction);
       const auto ours = camera.project(p);
-      const auto theirs = terrain::project_to_pixels(lod, terrain::Vec3d{p.x, p.y, p.z});
+      const auto theirs = terrain::project_to_pixels(lod, p);
       ASSERT_TRUE(ours && theirs);
       EXPECT_NEAR(ours->x_px, theirs->x_px, 1e-6);
       EXPECT_NEAR(ours->y_px, theirs->y_px, 1e-6);
       EXPECT_NEAR(ours->depth_m, theirs->depth_m, 1e-6);
-      EXPECT_TRUE(frustum.contains(terrain::Vec3d{p.x, p.y, p.z}));
+      EXPECT_TRUE(frustum.contains(p));
     }
   }
 }
@@ -122,11 +122,11 @@ TEST(Camera, AgreesWithTheLodCameraOfTheTerrainLayer) {
 TEST(Camera, ViewProjectionRelativeToAnOriginKeepsPrecisionNearTheCamera) {
   const Lens lens{45.0, 1920, 1080};
   const GeoPosition origin_position{46.60, 8.00, 1500.0};
-  const geo::Ecef origin = ecef_from(origin_position);
+  const glm::dvec3 origin = ecef_from(origin_position);
   const EnuAxes enu = enu_axes_at(origin_position.lat_deg, origin_position.lon_deg);
   // The camera 8 m south of a point 3 km from the origin, looking north at it.
   const glm::dvec3 point_offset = 3000.0 * enu.north + 200.0 * enu.east;
-  const geo::Ecef camera_position = offset(origin, point_offset - 8.0 * enu.north);
+  const glm::dvec3 camera_position = offset(origin, point_offset - 8.0 * enu.north);
   const Camera camera(camera_position, 0.0, 0.0, lens, DepthRange{0.5, 1.0e5});
   const std::array<float, 16> m = camera.view_projection_relative_to(origin);
   for (const glm::dvec3& d : {glm::dvec3(0.0), glm::dvec3(0.3, 0.0, 0.2), glm::dvec3(-0.7, 2.0, -0.4)}) {
@@ -146,7 +146,7 @@ TEST(Camera, ViewProjectionRelativeToAnOriginKeepsPrecisionNearTheCamera) {
   }
   // The uniform form: origin - camera in double, rounded once.
   const glm::vec3 omc = camera.origin_minus_camera(origin);
-  const glm::dvec3 expected = to_dvec3(origin) - to_dvec3(camera_position);
+  const glm::dvec3 expected = origin - camera_position;
   EXPECT_NEAR(omc.x, expected.x, 1e-3);
   EXPECT_NEAR(omc.y, expected.y, 1e-3);
   EXPECT_NEAR(omc.z, expected.z, 1e-3);
@@ -186,7 +186,7 @@ TEST(Camera, DepthRangeFollowsClearanceAndHorizon) {
 TEST(Camera, ResizingKeepsTheVerticalFieldOfView) {
   Camera camera = camera_at_position(kInterlaken, 0.0, -10.0, Lens{45.0, 400, 300});
   const Ray ray = camera.ray_through_pixel(200.0, 50.0);
-  const geo::Ecef p = offset(ray.origin, 1000.0 * ray.direction);
+  const glm::dvec3 p = offset(ray.origin, 1000.0 * ray.direction);
   camera.set_image_size(800, 300);
   const auto s = camera.project(p);
   ASSERT_TRUE(s);
@@ -196,8 +196,8 @@ TEST(Camera, ResizingKeepsTheVerticalFieldOfView) {
 }
 
 TEST(Camera, RefusesBadValuesWithAClearMessage) {
-  const geo::Ecef p = ecef_from(kInterlaken);
-  EXPECT_THROW(Camera(geo::Ecef{std::nan(""), 0.0, 0.0}, 0.0, 0.0, Lens{}, DepthRange{}), std::invalid_argument);
+  const glm::dvec3 p = ecef_from(kInterlaken);
+  EXPECT_THROW(Camera(glm::dvec3{std::nan(""), 0.0, 0.0}, 0.0, 0.0, Lens{}, DepthRange{}), std::invalid_argument);
   EXPECT_THROW(Camera(p, 0.0, -91.0, Lens{}, DepthRange{}), std::invalid_argument);
   EXPECT_THROW(Camera(p, std::nan(""), 0.0, Lens{}, DepthRange{}), std::invalid_argument);
   EXPECT_THROW(Camera(p, 0.0, 0.0, Lens{0.0, 10, 10}, DepthRange{}), std::invalid_argument);
@@ -216,13 +216,13 @@ TEST(Camera, RefusesBadValuesWithAClearMessage) {
 // A point of the true horizon of the WGS84 ellipsoid seen from `camera`, found without the
 // camera's algorithm: walking along the geodesic from the nadir in `azimuth_deg`, the point where
 // the line of sight becomes tangent (orthogonal to the ellipsoid's normal there).
-geo::Ecef horizon_point(const Camera& camera, double azimuth_deg) {
+glm::dvec3 horizon_point(const Camera& camera, double azimuth_deg) {
   const GeoPosition& g = camera.geodetic();
-  const glm::dvec3 eye = to_dvec3(camera.position());
+  const glm::dvec3 eye = camera.position();
   const auto sight_along_normal = [&](double s, glm::dvec3& point) {
     double lat = 0.0, lon = 0.0;
     GeographicLib::Geodesic::WGS84().Direct(g.lat_deg, g.lon_deg, azimuth_deg, s, lat, lon);
-    point = to_dvec3(ecef_from(GeoPosition{lat, lon, 0.0}));
+    point = ecef_from(GeoPosition{lat, lon, 0.0});
     return glm::dot(point - eye, enu_axes_at(lat, lon).up);
   };
   double below = 1.0, beyond = 4.0e6;  // the line of sight points down at first, up beyond the horizon
@@ -232,7 +232,7 @@ geo::Ecef horizon_point(const Camera& camera, double azimuth_deg) {
     (sight_along_normal(mid, point) < 0.0 ? below : beyond) = mid;
   }
   sight_along_normal(below, point);
-  return to_ecef(point);
+  return point;
 }
 
 bool ray_hits_ellipsoid(const Ray& ray) {
@@ -385,7 +385,7 @@ TEST(CameraOptions, LookAtPutsTheTargetAtTheImageCentre) {
     const Result<Camera> r = camera_looking_at(look, lens, 600.0);
     ASSERT_TRUE(r.ok()) << r.error;
     const Camera& c = *r.value;
-    const geo::Ecef target = ecef_from(look.target);
+    const glm::dvec3 target = ecef_from(look.target);
     const auto s = c.project(target);
     ASSERT_TRUE(s);
     EXPECT_NEAR(s->x_px, 500.0, 1e-6) << "pitch " << pitch;

@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -44,21 +42,19 @@ HeightRange constant_range(float min_m, float max_m) {
 // Where a ray from `origin` first meets the surface `height_m` above the ellipsoid (approximated
 // by the ellipsoid with both semi-axes grown by height_m, which is within a metre of it for the
 // heights used here), as latitude/longitude; nullopt when it misses.
-std::optional<geo::LatLon> ground_hit(const Vec3d& origin, const Vec3d& dir, double height_m) {
+std::optional<geo::LatLon> ground_hit(const glm::dvec3& origin, const glm::dvec3& dir, double height_m) {
   const double a = geo::wgs84::kA + height_m;
   const double b = geo::wgs84::kA * (1.0 - geo::wgs84::kF) + height_m;
   const double s = a / b;  // squash the ellipsoid into a sphere of radius a
-  const Vec3d o{origin.x, origin.y, origin.z * s}, d{dir.x, dir.y, dir.z * s};
-  const double qa = dot(d, d), qb = 2.0 * dot(o, d), qc = dot(o, o) - a * a;
+  const glm::dvec3 o{origin.x, origin.y, origin.z * s}, d{dir.x, dir.y, dir.z * s};
+  const double qa = glm::dot(d, d), qb = 2.0 * glm::dot(o, d), qc = glm::dot(o, o) - a * a;
   const double disc = qb * qb - 4.0 * qa * qc;
   if (disc < 0.0) return std::nullopt;
   const double t = (-qb - std::sqrt(disc)) / (2.0 * qa);
   if (t <= 0.0) return std::nullopt;
-  const Vec3d p = origin + dir * t;
-  geo::LatLon ll;
-  double h = 0.0;
-  GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, ll.lat, ll.lon, h);
-  return ll;
+  const glm::dvec3 p = origin + dir * t;
+  const geo::Geodetic g = geo::geodetic_from_ecef(p);
+  return geo::LatLon{g.lat_deg, g.lon_deg};
 }
 
 std::unordered_set<TileId> id_set(const LodSelection& selection) {
@@ -116,14 +112,14 @@ int expect_ground_covered_once(const LodCamera& camera, const LodSelection& sele
 
 // Points of a tile on a 9 x 9 grid at 9 heights from min to max (ECEF), from the tile_id
 // functions.
-std::vector<Vec3d> tile_points(const TileId& tile, double min_height_m, double max_height_m) {
-  std::vector<Vec3d> points;
+std::vector<glm::dvec3> tile_points(const TileId& tile, double min_height_m, double max_height_m) {
+  std::vector<glm::dvec3> points;
   for (int i = 0; i <= 8; ++i) {
     for (int j = 0; j <= 8; ++j) {
       const auto ll = geo::latlon_from_tile_pixel(tile, 32.0 * i, 32.0 * j, 256);
       for (int k = 0; k <= 8; ++k) {
         const double h = min_height_m + (max_height_m - min_height_m) * k / 8.0;
-        points.push_back(ecef_from_geodetic(ll->lat, ll->lon, h));
+        points.push_back(geo::ecef_from_geodetic(ll->lat, ll->lon, h));
       }
     }
   }
@@ -269,10 +265,10 @@ TEST(LodSelection, TilesBehindTheCameraAreCulled) {
   for (const SelectedTile& t : s.tiles) {
     // Some point of the tile (between its heights) lies in front of the camera and within the
     // side planes, give or take a small part of the tile's size for the box around it.
-    const std::vector<Vec3d> points = tile_points(t.id, 500.0, 4200.0);
-    const double tolerance = 0.1 * length(points.front() - points[720]) + 10.0;  // corner to corner
+    const std::vector<glm::dvec3> points = tile_points(t.id, 500.0, 4200.0);
+    const double tolerance = 0.1 * glm::length(points.front() - points[720]) + 10.0;  // corner to corner
     const bool seen =
-        std::any_of(points.begin(), points.end(), [&](const Vec3d& p) { return frustum.contains(p, tolerance); });
+        std::any_of(points.begin(), points.end(), [&](const glm::dvec3& p) { return frustum.contains(p, tolerance); });
     EXPECT_TRUE(seen) << geo::to_string(t.id) << " is outside the view";
   }
   // Interlaken's lake, 10 km behind the camera (north-west), is in no selected tile; the
@@ -451,13 +447,13 @@ TEST(LodSelection, TilesBeyondTheHorizonAreCulled) {
   const LodSettings settings;
   const LodSelection s = select_tiles(camera, settings, constant_range(-500.0f, 9000.0f));
   expect_sane(s, settings);
-  const Vec3d sub_camera = geodetic_up(0.0, 0.0);
+  const glm::dvec3 sub_camera = geodetic_up(0.0, 0.0);
   for (const SelectedTile& t : s.tiles) {
-    const std::vector<Vec3d> points = tile_points(t.id, 0.0, 0.0);
+    const std::vector<glm::dvec3> points = tile_points(t.id, 0.0, 0.0);
     const double nearest_angle_deg =
         std::acos(std::transform_reduce(
             points.begin(), points.end(), -1.0, [](double a, double b) { return std::max(a, b); },
-            [&](const Vec3d& p) { return dot(normalized(p), sub_camera); })) /
+            [&](const glm::dvec3& p) { return glm::dot(normalized(p), sub_camera); })) /
         kDeg;
     EXPECT_LT(nearest_angle_deg, 55.0) << geo::to_string(t.id) << " lies behind the horizon";
   }
@@ -483,7 +479,7 @@ TEST(LodSelection, RefusesUnusableInput) {
   s.tile_samples = 0;
   EXPECT_THROW(select_tiles(camera, s), std::invalid_argument);
   LodCamera broken = camera;
-  broken.forward = Vec3d{};
+  broken.forward = glm::dvec3{};
   try {
     select_tiles(broken, LodSettings{});
     ADD_FAILURE() << "a zero forward vector was accepted";

@@ -411,15 +411,15 @@ void reference_smooth(std::vector<TrackPoint>& pts, const CleanOptions& o) {
     const std::size_t n = last - first;
     if (n < 3) return;
     const std::size_t half = static_cast<std::size_t>(o.smooth_half_width);
-    std::vector<geo::Ecef> ecef;
+    std::vector<glm::dvec3> ecef;
     std::vector<double> ele;
     for (std::size_t i = first; i < last; ++i) {
-      ecef.push_back(geo::to_ecef(pts[i].lat, pts[i].lon));
+      ecef.push_back(geo::ecef_from_geodetic(pts[i].lat, pts[i].lon, 0.0));
       ele.push_back(pts[i].ele);
     }
     for (std::size_t i = 1; i + 1 < n; ++i) {
       const std::size_t k = std::min({half, i, n - 1 - i});
-      geo::Ecef sum;
+      glm::dvec3 sum{};
       double wsum = 0.0, ele_sum = 0.0, ele_wsum = 0.0;
       for (std::size_t j = i - k; j <= i + k; ++j) {
         const double d = static_cast<double>(j > i ? j - i : i - j);
@@ -437,7 +437,9 @@ void reference_smooth(std::vector<TrackPoint>& pts, const CleanOptions& o) {
       sum.y /= wsum;
       sum.z /= wsum;
       TrackPoint& p = pts[first + i];
-      geo::from_ecef(sum, p.lat, p.lon);
+      const geo::Geodetic g = geo::geodetic_from_ecef(sum);
+      p.lat = g.lat_deg;
+      p.lon = g.lon_deg;
       if (p.has_ele()) p.ele = ele_sum / ele_wsum;
     }
   };

@@ -1,11 +1,11 @@
 #include "app/view/camera_controller.hpp"
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "geo/wgs84.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -14,12 +14,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kRad = kPi / 180.0;
 
 scene::GeoPosition geodetic(const glm::dvec3& p) {
-  scene::GeoPosition g;
-  GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, g.lat_deg, g.lon_deg, g.height_m);
-  return g;
+  const geo::Geodetic g = geo::geodetic_from_ecef(p);
+  return scene::GeoPosition{g.lat_deg, g.lon_deg, g.height_m};
 }
 
-glm::dvec3 ecef(const scene::GeoPosition& g) { return scene::to_dvec3(scene::ecef_from(g)); }
+glm::dvec3 ecef(const scene::GeoPosition& g) { return scene::ecef_from(g); }
 
 // Heading and pitch (degrees) of a unit direction in the east-north-up frame at `at`.
 void angles_of(const glm::dvec3& direction, const scene::GeoPosition& at, double& heading_deg, double& pitch_deg) {
@@ -52,12 +51,12 @@ CameraController::CameraController(const scene::LookAt& view, const scene::Lens&
 
 scene::LookAt CameraController::look_at_from_camera(const scene::Camera& camera, double ground_height_m,
                                                      double fallback_distance_m) {
-  const glm::dvec3 c = scene::to_dvec3(camera.position());
+  const glm::dvec3 c = camera.position();
   const glm::dvec3 f = camera.axes().forward;
   // The ellipsoid raised by the ground height: x^2/A^2 + y^2/A^2 + z^2/B^2 = 1.
   const double h = std::isfinite(ground_height_m) ? ground_height_m : 0.0;
-  const double a = GeographicLib::Constants::WGS84_a() + h;
-  const double b = GeographicLib::Constants::WGS84_a() * (1.0 - GeographicLib::Constants::WGS84_f()) + h;
+  const double a = geo::wgs84::kA + h;
+  const double b = geo::wgs84::kA * (1.0 - geo::wgs84::kF) + h;
   const glm::dvec3 scale(1.0 / (a * a), 1.0 / (a * a), 1.0 / (b * b));
   const double qa = glm::dot(f * f, scale), qb = 2.0 * glm::dot(c * f, scale), qc = glm::dot(c * c, scale) - 1.0;
   const double disc = qb * qb - 4.0 * qa * qc;
@@ -94,7 +93,7 @@ scene::Camera CameraController::camera() const {
 std::optional<scene::GeoPosition> CameraController::ground_point_at(double x_px, double y_px) const {
   const scene::Camera cam = camera();
   const scene::Ray ray = cam.ray_through_pixel(x_px, y_px);
-  const glm::dvec3 o = scene::to_dvec3(ray.origin);
+  const glm::dvec3 o = ray.origin;
   // Height above the ground along the ray (the pivot's height where the ground is unknown).
   const auto above = [&](double t, scene::GeoPosition& at) {
     at = geodetic(o + t * ray.direction);
@@ -144,8 +143,8 @@ void CameraController::pan(double from_x_px, double from_y_px, double to_x_px, d
   const glm::dvec3 up = scene::enu_axes_at(from->lat_deg, from->lon_deg).up;
   const double along = glm::dot(ray.direction, up);
   if (along > -1e-6) return;  // the cursor is above the horizon of that plane
-  const double t = glm::dot(a - scene::to_dvec3(ray.origin), up) / along;
-  const glm::dvec3 b = scene::to_dvec3(ray.origin) + t * ray.direction;
+  const double t = glm::dot(a - ray.origin, up) / along;
+  const glm::dvec3 b = ray.origin + t * ray.direction;
   // Move everything by a - b: the grabbed point is then seen where b was, under the cursor.
   const double height = view_.target.height_m;
   view_.target = geodetic(ecef(view_.target) + (a - b));

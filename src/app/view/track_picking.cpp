@@ -7,7 +7,7 @@
 namespace trailray::app::view {
 
 std::optional<glm::dvec2> screen_position(const scene::Camera& camera, const glm::dvec3& ecef) {
-  const auto p = camera.project(scene::to_ecef(ecef));
+  const auto p = camera.project(ecef);
   if (!p) return std::nullopt;
   return glm::dvec2(p->x_px, p->y_px);
 }
@@ -28,7 +28,7 @@ HoverState pick_track_point(const scene::TrackSet& tracks, const scene::Camera& 
     std::size_t i = 0;
     for (const scene::TrackPolyline& line : tracks[t].geometry.segments)
       for (const glm::dvec3& point : line.points_ecef) {
-        const auto p = camera.project(scene::to_ecef(point));
+        const auto p = camera.project(point);
         ++i;
         if (!p) continue;
         const double d = std::hypot(p->x_px - x_px, p->y_px - y_px);

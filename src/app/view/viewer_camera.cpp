@@ -1,7 +1,5 @@
 // The viewer's camera: the first view, flights to a track, the replay's follow, and where a
 // framing may put the tracks (clear of the panels and the legend).
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,6 +7,7 @@
 #include "app/view/legend_overlay.hpp"
 #include "app/view/panel_layout.hpp"
 #include "app/view/viewer_shell.hpp"
+#include "geo/wgs84.hpp"
 #include "scene/legend_content.hpp"
 
 namespace trailray::app::view {
@@ -43,9 +42,8 @@ void ViewerApp::fly_to_track(int index) {
   points.reserve(t.point_count());
   for (const scene::TrackPolyline& line : t.geometry.segments)
     for (const glm::dvec3& p : line.points_ecef) {
-      scene::GeoPosition g;
-      GeographicLib::Geocentric::WGS84().Reverse(p.x, p.y, p.z, g.lat_deg, g.lon_deg, g.height_m);
-      points.push_back(g);
+      const geo::Geodetic g = geo::geodetic_from_ecef(p);
+      points.push_back(scene::GeoPosition{g.lat_deg, g.lon_deg, g.height_m});
     }
   scene::FramingOptions framing;
   framing.lens = controller_.lens();
@@ -70,8 +68,8 @@ void ViewerApp::follow_replay() {
   const scene::Track& t = model_.tracks[static_cast<std::size_t>(clock.follow_track)];
   const TrackPosition p = position_at(t, clock.time());
   if (!p.valid) return;
-  scene::GeoPosition at;
-  GeographicLib::Geocentric::WGS84().Reverse(p.ecef.x, p.ecef.y, p.ecef.z, at.lat_deg, at.lon_deg, at.height_m);
+  const geo::Geodetic g = geo::geodetic_from_ecef(p.ecef);
+  const scene::GeoPosition at{g.lat_deg, g.lon_deg, g.height_m};
   std::optional<double> heading;
   if (clock.follow == FollowMode::chase && p.point + 1 < t.point_count()) {
     // Look along the way the track goes from here (the segment the marker is on).

@@ -96,8 +96,8 @@ glm::dmat4 ShadowCascade::view_projection_relative_to_d(const glm::dvec3& origin
   return projection * view;
 }
 
-std::array<float, 16> ShadowCascade::view_projection_relative_to(const geo::Ecef& origin) const {
-  return to_float_array(view_projection_relative_to_d(scene::to_dvec3(origin)));
+std::array<float, 16> ShadowCascade::view_projection_relative_to(const glm::dvec3& origin) const {
+  return to_float_array(view_projection_relative_to_d(origin));
 }
 
 glm::dvec3 ShadowCascade::texel_and_depth(const glm::dvec3& point_ecef, int map_size_px) const {
@@ -137,7 +137,7 @@ ShadowCascades::ShadowCascades(const scene::Camera& camera, const glm::dvec3& su
   const double caster_reach_m = settings_.caster_height_span_m / sin_elevation;
 
   const glm::dmat3 rotation = light_rotation_for(sun_);
-  const glm::dvec3 camera_ecef = scene::to_dvec3(camera.position());
+  const glm::dvec3 camera_ecef = camera.position();
   const double map_size = static_cast<double>(settings_.map_size_px);
   for (std::size_t i = 0; i < kShadowCascadeCount; ++i) {
     ShadowCascade& c = cascades_[i];

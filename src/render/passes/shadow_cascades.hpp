@@ -25,7 +25,6 @@
 #include <array>
 #include <cstddef>
 
-#include "geo/local_frame.hpp"
 #include "scene/camera.hpp"
 
 namespace trailray::render {
@@ -61,7 +60,7 @@ struct ShadowCascade {
 
   // Light view-projection for vertices given as float offsets from `origin` (clip depth in
   // [-1, 1], column-major, ready for glUniformMatrix4fv).
-  std::array<float, 16> view_projection_relative_to(const geo::Ecef& origin) const;
+  std::array<float, 16> view_projection_relative_to(const glm::dvec3& origin) const;
   // The same in double, for tests and for the CPU (point -> clip).
   glm::dmat4 view_projection_relative_to_d(const glm::dvec3& origin_ecef) const;
   // A point's texel coordinates (x, y; continuous, 0..map size) and window depth (0..1).
@@ -84,7 +83,7 @@ class ShadowCascades {
   const ShadowCascade& operator[](std::size_t i) const { return cascades_.at(i); }
   const ShadowCascadeSettings& settings() const { return settings_; }
   const glm::dvec3& sun_direction_ecef() const { return sun_; }
-  const geo::Ecef& camera_position() const { return camera_position_; }
+  const glm::dvec3& camera_position() const { return camera_position_; }
   // The far view depth of each cascade: what the lookup compares a pixel's view depth with.
   std::array<float, kShadowCascadeCount> split_far_m() const;
   // Each cascade's view-projection for camera-relative positions (what the compose pass has).
@@ -93,7 +92,7 @@ class ShadowCascades {
  private:
   ShadowCascadeSettings settings_;
   glm::dvec3 sun_;
-  geo::Ecef camera_position_;
+  glm::dvec3 camera_position_{};
   std::array<ShadowCascade, kShadowCascadeCount> cascades_;
 };
 

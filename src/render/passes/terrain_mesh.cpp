@@ -118,11 +118,11 @@ TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t gr
   mesh.id = tile.id;
   mesh.grid_vertices = n;
   const auto centre = geo::latlon_from_tile_pixel(tile.id, 0.5, 0.5, 1);
-  const glm::dvec3 origin = scene::to_dvec3(scene::ecef_from({centre->lat, centre->lon, 0.5 * (min_h + max_h)}));
-  mesh.origin = scene::to_ecef(origin);
+  const glm::dvec3 origin = scene::ecef_from({centre->lat, centre->lon, 0.5 * (min_h + max_h)});
+  mesh.origin = origin;
 
   std::vector<glm::dvec3> positions(heights.size());
-  for (std::size_t k = 0; k < positions.size(); ++k) positions[k] = scene::to_dvec3(scene::ecef_from(where[k]));
+  for (std::size_t k = 0; k < positions.size(); ++k) positions[k] = scene::ecef_from(where[k]);
 
   mesh.vertices.reserve(positions.size() + 4 * std::size_t{n});
   for (std::uint32_t j = 0; j < n; ++j) {

@@ -11,11 +11,12 @@
 // Holes (NaN samples) are filled at `fill_height_m` and marked uncovered, so the renderer can
 // draw them as the neutral ground instead of leaving sky-coloured gaps.
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "geo/local_frame.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/gpu_resource_cache.hpp"
 #include "terrain/tile.hpp"
@@ -32,7 +33,7 @@ struct TerrainVertex {
 
 struct TerrainMesh {
   terrain::TileId id;
-  geo::Ecef origin;  // the tile's centre at its mean height
+  glm::dvec3 origin{};  // the tile's centre at its mean height
   std::vector<TerrainVertex> vertices;
   std::vector<std::uint32_t> indices;  // triangles
   std::uint32_t grid_vertices = 0;     // per side, skirts not counted
@@ -61,7 +62,7 @@ struct TerrainTileGpu {
   VertexArray vertex_array;
   Buffer vertices, indices;
   GLsizei index_count = 0;
-  geo::Ecef origin;
+  glm::dvec3 origin{};
   double bounding_radius_m = 0.0;  // the farthest vertex (skirts included) from the origin
   std::size_t gpu_bytes = 0;       // vertex and index buffers (GPU memory budgets)
   bool has_holes = false;          // some vertices filled (their height depends on the fill height)

@@ -3,7 +3,7 @@
 #include <array>
 #include <string>
 
-#include "geo/local_frame.hpp"
+#include "geo/wgs84.hpp"
 #include "render/gl/render_error.hpp"
 
 namespace trailray::render {
@@ -45,9 +45,8 @@ void TerrainPass::draw(const GBuffer& gbuffer, const scene::Camera& camera, std:
     const glm::vec3 offset = camera.origin_minus_camera(item.mesh->origin);
     program_.set_vec3("u_origin_minus_camera", offset.x, offset.y, offset.z);
     if (snow.enabled) {
-      double lat = 0.0, lon = 0.0;
-      geo::from_ecef(item.mesh->origin, lat, lon);
-      const glm::dvec3 up = to_view * scene::enu_axes_at(lat, lon).up;
+      const geo::Geodetic at = geo::geodetic_from_ecef(item.mesh->origin);
+      const glm::dvec3 up = to_view * scene::enu_axes_at(at.lat_deg, at.lon_deg).up;
       program_.set_vec3("u_view_up", static_cast<float>(up.x), static_cast<float>(up.y), static_cast<float>(up.z));
     }
     const bool has_imagery = item.imagery.texture != nullptr && *item.imagery.texture;

@@ -200,7 +200,7 @@ void TrackPass::bind_colormap(scene::Colormap map, GLuint unit) const {
 
 void TrackPass::prepare(std::span<const TrackDraw> tracks, const scene::Camera& camera) {
   for (const TrackDraw& draw : tracks)
-    if (draw.buffer != nullptr) const_cast<TrackBuffer*>(draw.buffer)->set_eye(scene::to_dvec3(camera.position()));
+    if (draw.buffer != nullptr) const_cast<TrackBuffer*>(draw.buffer)->set_eye(camera.position());
 }
 
 void TrackPass::copy_terrain(const GBuffer& gbuffer) const {
@@ -308,7 +308,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
     curtain_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
     curtain_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
     curtain_.set_float("u_curtain_alpha", settings.curtain_alpha);
-    const glm::vec3 eye(scene::to_dvec3(camera.position()));
+    const glm::vec3 eye(camera.position());
     set_vec3(curtain_, "u_eye_ecef", eye);
     set_vec3(curtain_, "u_sun_radiance", lighting.sun_radiance);
     set_vec3(curtain_, "u_sky_radiance", lighting.sky_radiance);

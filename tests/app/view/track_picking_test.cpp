@@ -15,14 +15,14 @@ scene::Camera test_camera() {
   scene::Lens lens;
   lens.width_px = 640;
   lens.height_px = 360;
-  const geo::Ecef eye = scene::ecef_from({46.68, 7.86, 2600.0});
+  const glm::dvec3 eye = scene::ecef_from({46.68, 7.86, 2600.0});
   return scene::Camera(eye, 0.0, -20.0, lens, scene::DepthRange{1.0, 1.0e6});
 }
 
 // The point `distance_m` from the eye along the ray through pixel (x, y).
 glm::dvec3 along(const scene::Camera& camera, double x, double y, double distance_m) {
   const scene::Ray ray = camera.ray_through_pixel(x, y);
-  return scene::to_dvec3(ray.origin) + distance_m * ray.direction;
+  return ray.origin + distance_m * ray.direction;
 }
 
 // A track of one segment through the points (picking reads only the drawn geometry).
@@ -64,7 +64,7 @@ TEST(TrackPicking, HiddenTracksAreNotPicked) {
 TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
   const scene::Camera camera = test_camera();
   const scene::TrackSet tracks = set_of({track_at({along(camera, 320, 180, 4000.0), along(camera, 325, 180, 1500.0)})});
-  const auto depth = [&](const glm::dvec3& p) { return camera.project(scene::to_ecef(p))->depth_m; };
+  const auto depth = [&](const glm::dvec3& p) { return camera.project(p)->depth_m; };
   const double ridge_depth = depth(along(camera, 320, 180, 2500.0));
 
   // Without terrain the nearest in pixels wins: the far pass.
@@ -87,7 +87,7 @@ TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
 TEST(TrackPicking, APointOnTheGroundIsNotHiddenByIt) {
   const scene::Camera camera = test_camera();
   const scene::TrackSet tracks = set_of({track_at({along(camera, 320, 180, 5000.0), along(camera, 324, 180, 5002.0)})});
-  const double ground = camera.project(scene::to_ecef(tracks[0].geometry.segments[0].points_ecef[0]))->depth_m;
+  const double ground = camera.project(tracks[0].geometry.segments[0].points_ecef[0])->depth_m;
   // Both count as visible: the nearer one in pixels wins (the one 2 m behind the ground is not
   // demoted).
   EXPECT_EQ(pick_track_point(tracks, camera, 323.0, 180.0, kPickRadiusPx, ground).point, 1u);

@@ -10,7 +10,7 @@
 
 namespace trailray::render::reference {
 
-geo::Ecef geometry_origin(const scene::TrackGeometry& geometry) {
+glm::dvec3 geometry_origin(const scene::TrackGeometry& geometry) {
   glm::dvec3 sum(0.0);
   std::size_t count = 0;
   for (const scene::TrackPolyline& segment : geometry.segments)
@@ -19,7 +19,7 @@ geo::Ecef geometry_origin(const scene::TrackGeometry& geometry) {
       ++count;
     }
   if (count == 0) return {};
-  return scene::to_ecef(sum / static_cast<double>(count));
+  return sum / static_cast<double>(count);
 }
 
 std::size_t geometry_point_count(const scene::TrackGeometry& geometry) {
@@ -35,7 +35,7 @@ double radius_for_pixel_width(const scene::Camera& camera, double distance_m, do
 }
 
 void begin_reference_draw(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
-                          const geo::Ecef& origin, const glm::vec3& color_srgb) {
+                          const glm::dvec3& origin, const glm::vec3& color_srgb) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

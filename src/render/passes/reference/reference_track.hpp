@@ -8,7 +8,6 @@
 
 #include <cstddef>
 
-#include "geo/local_frame.hpp"
 #include "scene/camera.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/shader_program.hpp"
@@ -18,7 +17,7 @@ namespace trailray::render::reference {
 
 // The mean of every point of the geometry (ECEF), so float offsets from it stay small; the
 // Earth's centre for a geometry without points.
-geo::Ecef geometry_origin(const scene::TrackGeometry& geometry);
+glm::dvec3 geometry_origin(const scene::TrackGeometry& geometry);
 
 std::size_t geometry_point_count(const scene::TrackGeometry& geometry);
 
@@ -31,7 +30,7 @@ double radius_for_pixel_width(const scene::Camera& camera, double distance_m, do
 // camera-relative matrix and offset of `origin`, the view rotation, the colour and the
 // G-buffer's distance encoding. Leaves `program` in use.
 void begin_reference_draw(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
-                          const geo::Ecef& origin, const glm::vec3& color_srgb);
+                          const glm::dvec3& origin, const glm::vec3& color_srgb);
 
 // Resets the draw state and throws RenderError naming `what` when GL reported an error.
 void end_reference_draw(const char* what);

@@ -39,7 +39,7 @@ glm::dvec3 direction_at(const std::vector<glm::dvec3>& points, std::size_t i) {
 }  // namespace
 
 RibbonBuffer::RibbonBuffer(const scene::TrackGeometry& geometry) : origin_(geometry_origin(geometry)) {
-  const glm::dvec3 origin = scene::to_dvec3(origin_);
+  const glm::dvec3 origin = origin_;
   std::vector<RibbonVertex> vertices;
   vertices.reserve(2 * geometry_point_count(geometry));
   for (const scene::TrackPolyline& segment : geometry.segments) {

@@ -12,7 +12,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "geo/local_frame.hpp"
 #include "scene/camera.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
@@ -34,13 +33,13 @@ class RibbonBuffer {
 
   std::size_t point_count() const { return point_count_; }
   std::size_t gpu_bytes() const { return gpu_bytes_; }
-  const geo::Ecef& origin() const { return origin_; }
+  const glm::dvec3& origin() const { return origin_; }
   const std::vector<Range>& strips() const { return strips_; }
   const VertexArray& vertex_array() const { return vertex_array_; }
 
  private:
   std::size_t point_count_ = 0, gpu_bytes_ = 0;
-  geo::Ecef origin_;
+  glm::dvec3 origin_{};
   std::vector<Range> strips_;
   VertexArray vertex_array_;
   Buffer vertices_;

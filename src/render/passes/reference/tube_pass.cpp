@@ -101,7 +101,7 @@ TubeBuffer::TubeBuffer(const scene::TrackGeometry& geometry, double radius_m)
   std::vector<std::uint32_t> indices;
   vertices.reserve(point_count_ * kTubeSides);
   indices.reserve(point_count_ * kTubeSides * 6);
-  const glm::dvec3 origin = scene::to_dvec3(origin_);
+  const glm::dvec3 origin = origin_;
   for (const scene::TrackPolyline& segment : geometry.segments)
     SegmentMesher(segment.points_ecef, origin, radius_m).append(vertices, indices);
   index_count_ = static_cast<GLsizei>(indices.size());

@@ -13,7 +13,6 @@
 
 #include <cstddef>
 
-#include "geo/local_frame.hpp"
 #include "scene/camera.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
@@ -34,14 +33,14 @@ class TubeBuffer {
   std::size_t point_count() const { return point_count_; }
   std::size_t gpu_bytes() const { return gpu_bytes_; }
   double radius_m() const { return radius_m_; }
-  const geo::Ecef& origin() const { return origin_; }
+  const glm::dvec3& origin() const { return origin_; }
   GLsizei index_count() const { return index_count_; }
   const VertexArray& vertex_array() const { return vertex_array_; }
 
  private:
   std::size_t point_count_ = 0, gpu_bytes_ = 0;
   double radius_m_;
-  geo::Ecef origin_;
+  glm::dvec3 origin_{};
   GLsizei index_count_ = 0;
   VertexArray vertex_array_;
   Buffer vertices_, indices_;
