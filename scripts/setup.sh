@@ -29,7 +29,7 @@ packages=(
   libegl-mesa0           # Mesa's EGL driver: the surfaceless platform, rendering without a GPU or display
   libgl1-mesa-dri        # Mesa's drivers, llvmpipe among them: render tests and CI on the CPU
   glslang-tools          # glslangValidator: every shader is checked at build time, so an error fails the build
-  libglm-dev             # GLSL-like vectors and matrices on the CPU (render/): camera, projections, sun direction
+  libglm-dev             # GLSL-like vectors and matrices on the CPU (geo/ and up): ECEF points, camera, projections, sun direction
   libfreetype-dev        # the legend's text, rasterized on the CPU into the picture (render/legend)
   fonts-dejavu-core      # DejaVu Sans, embedded into the binary at build time for the legend
   libglfw3-dev           # the viewer's window: an OpenGL ES 3.0 context through EGL, input events (trailray view)
