@@ -1,5 +1,5 @@
 #pragma once
-// `trailray view`: the tracks in a window, to fly around, inspect and replay (issue 6). The
+// `trailray view`: the tracks in a window, to fly around, inspect and replay. The
 // window and its loop are app/view/viewer_app.hpp's; this file is the command line.
 
 #include <CLI/CLI.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// The legend drawn into the rendered picture (issue 5): for tracks coloured by a metric, a
+// The legend drawn into the rendered picture: for tracks coloured by a metric, a
 // colour bar with the metric's name and unit above it and the range's ends under it; for several
 // solid-coloured tracks, a key of track names. Drawn on the CPU into the read-back image
 // (RgbaImage: top-down rows, sRGB bytes), so the headless `render` command and the viewer (which

@@ -1,5 +1,5 @@
 #pragma once
-// Derived per-point channels, computed on the CPU once and used by statistics and (later) the
+// Derived per-point channels, computed on the CPU once and used by statistics and the
 // renderer's colour attribute. Every value is finite or NaN ("no value": no time, no
 // elevation, too little data in the window, or undefined like the glide ratio while
 // climbing); never infinite.

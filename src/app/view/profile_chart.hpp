@@ -1,5 +1,5 @@
 #pragma once
-// The profile chart (issue 6): a track's altitude and the terrain below it against distance or
+// The profile chart: a track's altitude and the terrain below it against distance or
 // time, the line coloured like the track in the 3D view. Hovering marks a point (HoverState, read
 // by the 3D view), a point hovered in the 3D view is marked here, and a drag selects a range
 // whose statistics are shown under the chart.
