@@ -46,15 +46,13 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon) {
   return sampler.sample(lat, lon);
 }
 
-scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens,
-                             const scene::RecordedPoints& recorded, terrain::HeightSource* heights,
+scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const scene::TrackSet& tracks,
+                             double neutral_ground_m, terrain::HeightSource* heights,
                              const scene::KeptClearCorner& keep_clear, const std::optional<scene::ImageArea>& area) {
-  // The neutral ground's height: the tracks' lowest point (DESIGN.md), else sea level.
-  const double neutral = recorded.lowest_m;
   if (request.placement || request.look_at) {
     const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
     double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
-    if (std::isnan(ground)) ground = std::isnan(neutral) ? 0.0 : neutral;
+    if (std::isnan(ground)) ground = std::isnan(neutral_ground_m) ? 0.0 : neutral_ground_m;
     auto made = request.placement ? scene::camera_at(*request.placement, lens, ground)
                                   : scene::camera_looking_at(*request.look_at, lens, ground);
     if (!made.ok()) throw CLI::ValidationError(request.placement ? "--camera" : "--look-at", made.error);
@@ -64,7 +62,7 @@ scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& le
   framing.lens = lens;
   framing.keep_clear = keep_clear;
   framing.area = area;
-  auto framed = scene::frame_points(recorded.positions, framing);
+  auto framed = scene::frame_tracks(tracks, framing);
   if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
   return framed.value->camera;
 }

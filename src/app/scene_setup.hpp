@@ -33,7 +33,7 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon);
 // Tracks read from files and built for the scene.
 struct SceneTracks {
   scene::TrackSet tracks;
-  scene::RecordedPoints recorded;  // the files' points as recorded (framing, the sun's day)
+  scene::RecordedPoints recorded;  // the files' points as recorded (the sun's day, the lowest height)
   double neutral_ground_m = 0.0;   // the lowest recorded height, else 0: under points without one
 };
 // Reads every file (the first that cannot be read throws, naming it) and builds its tracks
@@ -45,12 +45,12 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
 // The sun's time: --time when given, else the tracks' day at noon (scene::default_sun_time).
 double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded);
 
-// The first camera: the request's (never changed), else one framing the recorded points out of
-// `keep_clear` (where the legend will be drawn), into `area` of the image (nullopt: all of it).
-// Throws CLI::ValidationError for a camera the options make impossible, std::runtime_error when
-// the tracks cannot be framed.
-scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens,
-                             const scene::RecordedPoints& recorded, terrain::HeightSource* heights,
+// The first camera: the request's (never changed; on the terrain's height there, else on the
+// neutral ground), else one framing the visible tracks out of `keep_clear` (where the legend will
+// be drawn), into `area` of the image (nullopt: all of it). Throws CLI::ValidationError for a
+// camera the options make impossible, std::runtime_error when the tracks cannot be framed.
+scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const scene::TrackSet& tracks,
+                             double neutral_ground_m, terrain::HeightSource* heights,
                              const scene::KeptClearCorner& keep_clear = {},
                              const std::optional<scene::ImageArea>& area = std::nullopt);
 

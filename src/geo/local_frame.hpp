@@ -8,6 +8,9 @@
 //     (no trigonometry per point: the hot path of the track smoothing).
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <glm/glm.hpp>
+
+#include <cmath>
 
 #include "geo/wgs84.hpp"
 
@@ -19,12 +22,23 @@ struct Enu {
 
 class LocalFrame {
  public:
-  LocalFrame(double lat0, double lon0, double h0 = 0.0) : cartesian_(lat0, lon0, h0) {}
+  LocalFrame(double lat0, double lon0, double h0 = 0.0)
+      : cartesian_(lat0, lon0, h0), origin_(ecef_from_geodetic(lat0, lon0, h0)) {
+    const double phi = lat0 * wgs84::kRadPerDeg, lambda = lon0 * wgs84::kRadPerDeg;
+    east_ = {-std::sin(lambda), std::cos(lambda), 0.0};
+    north_ = {-std::sin(phi) * std::cos(lambda), -std::sin(phi) * std::sin(lambda), std::cos(phi)};
+    up_ = {std::cos(phi) * std::cos(lambda), std::cos(phi) * std::sin(lambda), std::sin(phi)};
+  }
 
   Enu to_local(double lat, double lon, double h) const {
     Enu e;
     cartesian_.Forward(lat, lon, h, e.east, e.north, e.up);
     return e;
+  }
+  // The same for a point already in ECEF: a rotation about the origin, no geodetic conversion.
+  Enu to_local(const glm::dvec3& ecef) const {
+    const glm::dvec3 d = ecef - origin_;
+    return {glm::dot(d, east_), glm::dot(d, north_), glm::dot(d, up_)};
   }
   void to_geodetic(const Enu& e, double& lat, double& lon, double& h) const {
     cartesian_.Reverse(e.east, e.north, e.up, lat, lon, h);
@@ -32,6 +46,7 @@ class LocalFrame {
 
  private:
   GeographicLib::LocalCartesian cartesian_;
+  glm::dvec3 origin_, east_, north_, up_;
 };
 
 // The weighted mean of points near (lat0, lon0), averaged as 3D points on the ellipsoid (as in

@@ -320,38 +320,21 @@ std::optional<std::string> options_problem(const FramingOptions& o) {
 
 }  // namespace
 
-Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingOptions& options) {
-  if (auto problem = options_problem(options)) return {std::nullopt, *problem};
-
-  std::vector<GeoPosition> usable;
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const GeoPosition& p : points) {
-    if (!(std::abs(p.lat_deg) <= 90.0) || !(std::abs(p.lon_deg) <= 180.0)) continue;
-    usable.push_back(p);
-    if (std::isfinite(p.height_m)) lowest = std::min(lowest, p.height_m);
-  }
-  if (usable.empty()) {
-    return {std::nullopt, "framing: none of the " + std::to_string(points.size()) +
-                              " points has a latitude within -90..90 and a longitude within -180..180"};
-  }
+// The framing of points given in ECEF, with the lowest recorded height among them (NaN: none has
+// one) and the terrain height under them (options.ground_height_m, else that lowest height).
+static Result<Framing> frame_ecef(std::vector<glm::dvec3> ecef, double lowest, const FramingOptions& options) {
   const double ground = std::isfinite(options.ground_height_m) ? options.ground_height_m
                         : std::isfinite(lowest)                ? lowest
                                                                : 0.0;
-
   // Centre: the points' mean in ECEF, brought onto the ellipsoid; a local frame there.
-  std::vector<glm::dvec3> ecef;
   glm::dvec3 sum(0.0);
-  for (GeoPosition& p : usable) {
-    if (!std::isfinite(p.height_m)) p.height_m = ground;
-    ecef.push_back(ecef_from(p));
-    sum += ecef.back();
-  }
+  for (const glm::dvec3& p : ecef) sum += p;
   const geo::Geodetic centre = geo::geodetic_from_ecef(sum / static_cast<double>(ecef.size()));
   const geo::LocalFrame frame(centre.lat_deg, centre.lon_deg, 0.0);
   std::vector<Point2> horizontal;
   double lowest_up = std::numeric_limits<double>::infinity(), highest_up = -lowest_up;
-  for (const GeoPosition& p : usable) {
-    const geo::Enu e = frame.to_local(p.lat_deg, p.lon_deg, p.height_m);
+  for (const glm::dvec3& p : ecef) {
+    const geo::Enu e = frame.to_local(p);
     horizontal.push_back({e.east, e.north});
     lowest_up = std::min(lowest_up, e.up), highest_up = std::max(highest_up, e.up);
   }
@@ -397,7 +380,49 @@ Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingO
   Camera camera = framer.camera(look_at);
   const double clearance = std::min(camera.geodetic().height_m - ground, framer.nearest_point_distance(camera));
   camera.set_depth_range(depth_range_for(camera.geodetic().height_m, clearance));
-  return {Framing{look_at, camera}, {}};
+  return {Framing{look_at, camera, ground}, {}};
+}
+
+Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingOptions& options) {
+  if (auto problem = options_problem(options)) return {std::nullopt, *problem};
+  std::vector<GeoPosition> usable;
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  for (const GeoPosition& p : points) {
+    if (!(std::abs(p.lat_deg) <= 90.0) || !(std::abs(p.lon_deg) <= 180.0)) continue;
+    usable.push_back(p);
+    if (std::isfinite(p.height_m) && !(p.height_m >= lowest)) lowest = p.height_m;
+  }
+  if (usable.empty())
+    return {std::nullopt, "framing: none of the " + std::to_string(points.size()) +
+                              " points has a latitude within -90..90 and a longitude within -180..180"};
+  const double ground = std::isfinite(options.ground_height_m) ? options.ground_height_m
+                        : std::isfinite(lowest)                ? lowest
+                                                               : 0.0;
+  std::vector<glm::dvec3> ecef;
+  ecef.reserve(usable.size());
+  for (const GeoPosition& p : usable) ecef.push_back(ecef_from({p.lat_deg, p.lon_deg, std::isfinite(p.height_m) ? p.height_m : ground}));
+  return frame_ecef(std::move(ecef), lowest, options);
+}
+
+Result<Framing> frame_tracks(std::span<const Track* const> tracks, const FramingOptions& options) {
+  if (auto problem = options_problem(options)) return {std::nullopt, *problem};
+  std::vector<glm::dvec3> ecef;
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  for (const Track* track : tracks) {
+    const Track& t = *track;
+    for (const TrackPolyline& line : t.geometry.segments) ecef.insert(ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
+    for (double h : t.altitude_m)
+      if (std::isfinite(h) && !(h >= lowest)) lowest = h;
+  }
+  if (ecef.empty()) return {std::nullopt, "framing: no track has a point"};
+  return frame_ecef(std::move(ecef), lowest, options);
+}
+
+Result<Framing> frame_tracks(const TrackSet& tracks, const FramingOptions& options) {
+  std::vector<const Track*> visible;
+  for (const Track& t : tracks.tracks())
+    if (t.visible) visible.push_back(&t);
+  return frame_tracks(visible, options);
 }
 
 }  // namespace trailray::scene

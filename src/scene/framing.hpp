@@ -23,6 +23,7 @@
 #include <span>
 
 #include "scene/camera.hpp"
+#include "scene/track_set.hpp"
 
 namespace trailray::scene {
 
@@ -63,6 +64,7 @@ struct FramingOptions {
 struct Framing {
   LookAt look_at;  // target (the image's centre), distance, heading and pitch
   Camera camera;
+  double ground_height_m = 0.0;  // the ground it assumed under the points (FramingOptions::ground_height_m)
 };
 
 // A camera framing `points` (latitude and longitude in degrees, heights in metres; a point
@@ -70,5 +72,12 @@ struct Framing {
 // finite number within range are left out; an error when none is left or an option is out of
 // range.
 Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingOptions& options = {});
+
+// A camera framing tracks where they are drawn: their ECEF points as the scene placed them (no
+// geodetic conversion again), the lowest recorded altitude for the ground under them when
+// options.ground_height_m is not given. An error when no track has a point.
+Result<Framing> frame_tracks(std::span<const Track* const> tracks, const FramingOptions& options = {});
+// The visible tracks of a set.
+Result<Framing> frame_tracks(const TrackSet& tracks, const FramingOptions& options = {});
 
 }  // namespace trailray::scene

@@ -31,7 +31,6 @@ std::vector<LoadedTrackFile> read_track_files(const std::vector<std::string>& pa
 void RecordedPoints::add(const track::TrackFile& file) {
   const auto add_point = [&](const track::TrackPoint& p) {
     ++count;
-    positions.push_back({p.lat, p.lon, p.has_ele() ? p.ele : std::numeric_limits<double>::quiet_NaN()});
     if (p.has_ele() && !(p.ele >= lowest_m)) lowest_m = p.ele;
     if (!any_lon_deg) any_lon_deg = p.lon;
     if (!first_time_s && !std::isnan(p.time)) {

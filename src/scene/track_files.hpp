@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.hpp"
 #include "scene/diagnostics.hpp"
 #include "track/io/load.hpp"
 #include "track/model.hpp"
@@ -35,7 +34,6 @@ struct RecordedPoints {
   std::optional<double> first_time_s;                          // of the first timed point
   double first_time_lon_deg = 0.0;                             // where that point was
   std::optional<double> any_lon_deg;                           // of the first point at all
-  std::vector<GeoPosition> positions;                          // every point as recorded (height NaN: none)
 
   void add(const track::TrackFile& file);
 };

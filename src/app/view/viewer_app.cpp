@@ -66,7 +66,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.analysis = o.analysis;
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
-  controller_ = first_view(o, recorded_, sources_.heights.get(), neutral_, framing_room(o.lens));
+  controller_ = first_view(o, model_.tracks, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return renderer_.height_in_memory(lat, lon); });
 }
 

@@ -7,30 +7,18 @@
 #include "app/view/legend_overlay.hpp"
 #include "app/view/panel_layout.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "geo/wgs84.hpp"
 #include "scene/legend_content.hpp"
 
 namespace trailray::app::view {
-namespace {
-
-// The lowest height among the points (NaN: none has one).
-double lowest_height(const std::vector<scene::GeoPosition>& points) {
-  double lowest = std::numeric_limits<double>::quiet_NaN();
-  for (const auto& p : points)
-    if (!std::isnan(p.height_m) && !(p.height_m >= lowest)) lowest = p.height_m;
-  return lowest;
-}
-
-}  // namespace
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& o, const scene::RecordedPoints& recorded,
-                            terrain::HeightSource* heights, double neutral, const FramingRoom& room) {
+CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks, terrain::HeightSource* heights,
+                            double neutral, const FramingRoom& room) {
   if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
-  if (recorded.positions.empty() && !o.camera.placement)
+  if (tracks.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
-  const scene::Camera camera = initial_camera(o.camera, o.lens, recorded, heights, room.keep_clear, room.area);
+  const scene::Camera camera = initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
   return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
 }
@@ -38,25 +26,23 @@ CameraController first_view(const ViewerOptions& o, const scene::RecordedPoints&
 void ViewerApp::fly_to_track(int index) {
   if (index < 0 || index >= static_cast<int>(model_.tracks.size())) return;
   const scene::Track& t = model_.tracks[static_cast<std::size_t>(index)];
-  std::vector<scene::GeoPosition> points;
-  points.reserve(t.point_count());
-  for (const scene::TrackPolyline& line : t.geometry.segments)
-    for (const glm::dvec3& p : line.points_ecef) {
-      const geo::Geodetic g = geo::geodetic_from_ecef(p);
-      points.push_back(scene::GeoPosition{g.lat_deg, g.lon_deg, g.height_m});
-    }
   scene::FramingOptions framing;
   framing.lens = controller_.lens();
   framing.preferred_heading_deg = controller_.view().heading_deg;
   const FramingRoom room = framing_room(framing.lens);
   framing.keep_clear = room.keep_clear;
   framing.area = room.area;
-  const auto framed = scene::frame_points(points, framing);
+  // The ground under the track when no terrain is in memory: its lowest recorded point, else the
+  // neutral ground.
+  for (double h : t.altitude_m)
+    if (std::isfinite(h) && !(h >= framing.ground_height_m)) framing.ground_height_m = h;
+  if (std::isnan(framing.ground_height_m)) framing.ground_height_m = neutral_;
+  const scene::Track* const one[] = {&t};
+  const auto framed = scene::frame_tracks(one, framing);
   if (!framed.ok()) return;
   double ground =
       renderer_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
-  if (std::isnan(ground)) ground = lowest_height(points);
-  if (std::isnan(ground)) ground = neutral_;
+  if (std::isnan(ground)) ground = framed.value->ground_height_m;
   controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
 }
 

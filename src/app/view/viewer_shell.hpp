@@ -84,7 +84,7 @@ class ViewerApp {
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& options, const scene::RecordedPoints& recorded,
+CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
                             terrain::HeightSource* heights, double neutral, const FramingRoom& room);
 
 }  // namespace trailray::app::view
