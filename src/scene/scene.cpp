@@ -1,5 +1,7 @@
 #include "scene/scene.hpp"
 
+#include "scene/sun_position.hpp"
+
 namespace trailray::scene {
 
 std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style& style) {
@@ -13,6 +15,10 @@ std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style
       if (!line.values.empty()) values.push_back(line.values);
   }
   return track::robust_range(values, track::color_metric_is_signed(metric));
+}
+
+glm::dvec3 sun_direction(const Scene& scene) {
+  return scene.sun_direction_ecef ? *scene.sun_direction_ecef : sun_direction_ecef(scene.sun_time_unix_s);
 }
 
 }  // namespace trailray::scene

@@ -4,6 +4,8 @@
 // style, the sun's time. Front ends (render, view, and later video and the browser) build one and
 // keep it; nothing in it touches GL.
 
+#include <glm/glm.hpp>
+
 #include <limits>
 #include <optional>
 
@@ -24,6 +26,9 @@ struct Scene {
   // The colour scale in use (color_range(*tracks, style)); nullopt: solid colours.
   std::optional<track::ValueRange> color_range;
   double sun_time_unix_s = 0.0;  // where the sun stands (scene/sun_position.hpp)
+  // A light from a fixed direction instead (unit, towards it, ECEF): a sun placed by azimuth and
+  // elevation rather than by time.
+  std::optional<glm::dvec3> sun_direction_ecef;
   // Where no source has terrain the neutral ground is drawn at this height; NaN: at the lowest
   // terrain loaded for the view (0 where there is none).
   double neutral_ground_m = std::numeric_limits<double>::quiet_NaN();
@@ -32,5 +37,9 @@ struct Scene {
 // The colour scale: style.tracks.range, else the robust range over the values of the visible
 // tracks coloured by value (nullopt: solid, or no value anywhere).
 std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style& style);
+
+// Unit vector towards the sun in ECEF: the fixed direction when there is one, else the sun's at
+// sun_time_unix_s.
+glm::dvec3 sun_direction(const Scene& scene);
 
 }  // namespace trailray::scene

@@ -20,7 +20,8 @@ struct TrackWidth {
   double value = 5.0;
   Unit unit = Unit::pixels;
 };
-// "8m", "6px", "6" (pixels): an error message for anything else.
+// "8m", "8 m", "6px", "6 px" (value > 0, finite, at most 1000 km). The error quotes the text and
+// the forms.
 Result<TrackWidth> parse_track_width(std::string_view text);
 
 // The parts of tracks the terrain hides: drawn translucent ("ghosts"), fading with depth.

@@ -1,62 +1,18 @@
 #include "terrain/height_sampler.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "geo/tile_id.hpp"
+#include "terrain/tile_sampling.hpp"
 
 namespace trailray::terrain {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Where a point falls in a level's global sample grid: the four samples around it and the
-// bilinear weights. Sample indices run over the whole world (tile x * step + column).
-struct Footprint {
-  std::array<std::uint64_t, 2> col{}, row{};
-  double tx = 0.0, ty = 0.0;  // fractions between col[0]..col[1] and row[0]..row[1]
-};
-
-Footprint footprint(const geo::TileCoord& c, int zoom, std::uint32_t width, SampleLayout layout) {
-  const bool area = layout == SampleLayout::pixel_is_area;
-  const std::uint64_t tiles = std::uint64_t{1} << zoom;
-  const std::uint64_t step = area ? width : width - 1;
-  // Samples per axis: area layout n * W (cell centres); point layout n * (W - 1) + 1 (shared edges).
-  const std::uint64_t count = area ? tiles * step : tiles * step + 1;
-  const std::uint64_t wrap = tiles * step;  // x repeats around the globe
-  const double half = area ? 0.5 : 0.0;
-  const double gx = c.x * static_cast<double>(step) - half;
-  const double gy = std::clamp(c.y * static_cast<double>(step) - half, 0.0, static_cast<double>(count - 1));
-  Footprint f;
-  const double fx = std::floor(gx), fy = std::floor(gy);
-  f.tx = gx - fx;
-  f.ty = gy - fy;
-  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy);
-  const auto w = static_cast<std::int64_t>(wrap);
-  f.col[0] = static_cast<std::uint64_t>(((ix % w) + w) % w);
-  f.col[1] = static_cast<std::uint64_t>((((ix + 1) % w) + w) % w);
-  f.row[0] = static_cast<std::uint64_t>(iy);
-  f.row[1] = std::min<std::uint64_t>(static_cast<std::uint64_t>(iy) + 1, count - 1);
-  return f;
-}
-
-// The tile holding a global sample, and the sample's column/row inside it.
-struct TileSample {
-  TileId tile;
-  std::uint32_t col = 0, row = 0;
-};
-
-TileSample locate(std::uint64_t col, std::uint64_t row, int zoom, std::uint32_t width, SampleLayout layout) {
-  const std::uint64_t tiles = std::uint64_t{1} << zoom;
-  const std::uint64_t step = layout == SampleLayout::pixel_is_area ? width : width - 1;
-  const std::uint64_t tx = std::min(col / step, tiles - 1), ty = std::min(row / step, tiles - 1);
-  return {TileId{zoom, static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty)},
-          static_cast<std::uint32_t>(col - tx * step), static_cast<std::uint32_t>(row - ty * step)};
-}
 
 }  // namespace
 
@@ -150,14 +106,14 @@ void HeightSampler::sample_level(std::span<const geo::LatLon> points, std::vecto
       continue;
     }
     // Then the neighbours across seams that the four samples around each point need.
-    std::vector<Footprint> feet;
+    std::vector<SampleFootprint> feet;
     feet.reserve(batch.size());
     std::unordered_set<TileId> needed;
     for (std::size_t i : batch) {
       const auto c = geo::fractional_tile_coord(points[i].lat, points[i].lon, zoom);
-      feet.push_back(footprint(*c, zoom, grid_.width, grid_.layout));
+      feet.push_back(sample_footprint(*c, zoom, grid_));
       for (auto col : feet.back().col)
-        for (auto row : feet.back().row) needed.insert(locate(col, row, zoom, grid_.width, grid_.layout).tile);
+        for (auto row : feet.back().row) needed.insert(locate_sample(col, row, zoom, grid_).tile);
     }
     requests.clear();
     for (const auto& id : needed) requests.push_back({id, 1.0});
@@ -170,24 +126,16 @@ void HeightSampler::sample_level(std::span<const geo::LatLon> points, std::vecto
       if (auto tile = loader.get(id)) tiles.emplace(id, std::move(tile));
     }
 
+    const TileLookup tile_of = [&](const TileId& id) -> const HeightTile* {
+      const auto it = tiles.find(id);
+      return it == tiles.end() ? nullptr : it->second.get();
+    };
     for (std::size_t k = 0; k < batch.size(); ++k) {
-      const Footprint& f = feet[k];
-      double sum = 0.0, weight = 0.0;
-      for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c) {
-          const double w = (c ? f.tx : 1.0 - f.tx) * (r ? f.ty : 1.0 - f.ty);
-          const TileSample s = locate(f.col[c], f.row[r], zoom, grid_.width, grid_.layout);
-          auto it = tiles.find(s.tile);
-          if (it == tiles.end() || s.col >= it->second->width || s.row >= it->second->height) continue;
-          const float h = it->second->at(s.col, s.row);
-          if (std::isnan(h) || w <= 0.0) continue;
-          sum += w * h;
-          weight += w;
-        }
-      if (weight > 0.0)
-        out[batch[k]] = sum / weight;
-      else
+      const double h = bilinear_height(feet[k], zoom, grid_, tile_of);
+      if (std::isnan(h))
         left.push_back(batch[k]);
+      else
+        out[batch[k]] = h;
     }
   }
   for (const auto& [id, state] : seen) {

@@ -25,6 +25,7 @@
 
 #include "geo/web_mercator.hpp"
 #include "terrain/tile_loader.hpp"
+#include "terrain/tile_sampling.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::terrain {
@@ -55,11 +56,6 @@ class HeightSampler {
   const SamplingReport& report() const { return report_; }
 
  private:
-  struct Grid {
-    std::uint32_t width = 0;
-    SampleLayout layout = SampleLayout::pixel_is_area;
-  };
-
   void sample_level(std::span<const geo::LatLon> points, std::vector<std::size_t>& todo, int zoom,
                     std::vector<double>& out, const ProgressFunction& on_progress);
   bool wait(TileLoader<HeightTile>& loader, const ProgressFunction& on_progress, std::size_t batch,
@@ -67,7 +63,7 @@ class HeightSampler {
 
   HeightSource& source_;
   HeightSamplerOptions options_;
-  Grid grid_;
+  SampleGrid grid_;  // of the level being sampled, from its first tile
   SamplingReport report_;
 };
 
