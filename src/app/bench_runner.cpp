@@ -161,7 +161,7 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     row.capsule_bytes = buffer.gpu_bytes();
     const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false}};
     render::TrackSceneSettings settings;
-    settings.width = {s.settings.width_px, render::TrackWidth::Unit::pixels};
+    settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
     const render::SceneLighting lighting;
     const PassMedians m = s.time_passes(
         camera, ground,

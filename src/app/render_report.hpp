@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/render_options.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/legacy_scene_renderer.hpp"
 #include "scene/camera.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/scene.hpp"

@@ -15,8 +15,7 @@ render::SceneRenderOptions SceneFrames::options_for(const scene::Scene& s) {
   o.snow = {style.shading.snow.enabled, style.shading.snow.snowline_m};
   render::TrackSceneSettings& t = o.track_settings;
   const scene::TrackStyle& ts = style.tracks;
-  t.width = {ts.width.value, ts.width.unit == scene::TrackWidth::Unit::pixels ? render::TrackWidth::Unit::pixels
-                                                                              : render::TrackWidth::Unit::metres};
+  t.width = ts.width;
   t.min_width_px = ts.min_width_px;
   t.occlusion = {ts.occlusion.enabled, ts.occlusion.alpha, ts.occlusion.fade_near_m, ts.occlusion.fade_far_m};
   t.curtain = ts.curtain;

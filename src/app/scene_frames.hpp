@@ -7,7 +7,7 @@
 #include <memory>
 #include <utility>
 
-#include "render/scene_renderer.hpp"
+#include "render/legacy_scene_renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace trailray::app {

@@ -20,7 +20,7 @@
 #include "render/gl/frame_profiler.hpp"
 #include "render/platform/imgui_layer.hpp"
 #include "render/platform/window.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/legacy_scene_renderer.hpp"
 #include "scene/framing.hpp"
 #include "scene/scene.hpp"
 

@@ -17,7 +17,7 @@
 
 namespace trailray::render {
 
-// A cache's figures after a frame (SceneRenderReport).
+// A cache's figures after a frame (FrameReport).
 struct GpuCacheStats {
   std::size_t entries = 0;         // held now
   std::size_t bytes = 0;           // held now (estimated GPU memory)
@@ -72,6 +72,17 @@ class GpuResourceCache {
       used_ -= victim->second.bytes;
       order_.pop_back();
       entries_.erase(victim);
+      ++evictions_;
+    }
+  }
+
+  // Erases every entry whose key `keep` rejects (counted as evictions), whenever it was used.
+  template <class Keep>
+  void retain_if(Keep keep) {
+    for (auto it = order_.begin(); it != order_.end();) {
+      const Key key = *it++;
+      if (keep(key)) continue;
+      erase(key);
       ++evictions_;
     }
   }

@@ -19,7 +19,7 @@ void throw_on_gl_error(const char* what) {
 TerrainPass::TerrainPass() : program_(ShaderProgram::from_embedded("terrain.vert", "terrain.frag")) {}
 
 void TerrainPass::draw(const GBuffer& gbuffer, const scene::Camera& camera, std::span<const TerrainDrawItem> tiles,
-                       const SnowCover& snow) const {
+                       const scene::SnowCover& snow) const {
   gbuffer.bind_and_clear();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -81,7 +81,7 @@ Texture upload_imagery_texture(std::uint32_t width, std::uint32_t height, std::s
   return texture;
 }
 
-FrameTarget::FrameTarget(int width, int height)
+ColorDepthTarget::ColorDepthTarget(int width, int height)
     : width_(width),
       height_(height),
       color_(make_texture_2d(GL_RGBA8, width, height)),
@@ -93,7 +93,7 @@ FrameTarget::FrameTarget(int width, int height)
   check_framebuffer_complete(GL_FRAMEBUFFER, "frame target");
 }
 
-void FrameTarget::bind() const {
+void ColorDepthTarget::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, width_, height_);
 }

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "scene/camera.hpp"
+#include "scene/style.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
@@ -31,22 +32,16 @@ struct TerrainDrawItem {
   TerrainImagery imagery;  // texture nullptr: the hypsometric tint
 };
 
-// Snow on the ground by altitude and slope (`trailray render --snow`): white from about
-// `snowline_m` up (fading in over the 300 m below it), on slopes under about 40-50 degrees.
-struct SnowCover {
-  bool enabled = false;
-  double snowline_m = 2500.0;
-};
-
 class TerrainPass {
  public:
   // Compiles the terrain shaders (the GL context must be current). Throws ShaderError.
   TerrainPass();
 
-  // Clears the G-buffer and draws the tiles into it with depth testing. Throws RenderError when
-  // GL reports an error.
+  // Clears the G-buffer and draws the tiles into it with depth testing; snow: white from about
+  // `snowline_m` up (fading in over the 300 m below it), on slopes under about 40-50 degrees.
+  // Throws RenderError when GL reports an error.
   void draw(const GBuffer& gbuffer, const scene::Camera& camera, std::span<const TerrainDrawItem> tiles,
-            const SnowCover& snow = {}) const;
+            const scene::SnowCover& snow = {}) const;
 
  private:
   ShaderProgram program_;
@@ -55,11 +50,12 @@ class TerrainPass {
 // An sRGB imagery texture (mipmapped, linear filtering) from RGBA8 pixels. Throws RenderError.
 Texture upload_imagery_texture(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba);
 
-// A colour (RGBA8) + depth (24 bit) framebuffer of a size: the composed frame, for readback.
-class FrameTarget {
+// A colour (RGBA8) + depth (24 bit) framebuffer of a size: the composed frame, before it goes to
+// its FrameTarget (frame_target.hpp), and the track overlay.
+class ColorDepthTarget {
  public:
   // Throws RenderError naming the size when GL refuses it.
-  FrameTarget(int width, int height);
+  ColorDepthTarget(int width, int height);
   // Binds it for drawing and reading, and sets the viewport to all of it.
   void bind() const;
   int width() const { return width_; }

@@ -1,9 +1,6 @@
 #include "render/passes/track_pass.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <cmath>
 #include <string>
@@ -56,7 +53,7 @@ void set_width_uniforms(const ShaderProgram& program, const scene::Camera& camer
   program.set_int("u_points", static_cast<int>(kPointsUnit));
   program.set_int("u_blocks", static_cast<int>(kBlocksUnit));
   program.set_float("u_width_value", static_cast<float>(settings.width.value));
-  program.set_int("u_width_in_pixels", settings.width.unit == TrackWidth::Unit::pixels ? 1 : 0);
+  program.set_int("u_width_in_pixels", settings.width.unit == scene::TrackWidth::Unit::pixels ? 1 : 0);
   program.set_float("u_min_width_px", static_cast<float>(settings.min_width_px));
   program.set_float("u_pixel_angle", pixel_angle(camera));
   const glm::vec3 forward(camera.axes().forward);
@@ -126,30 +123,20 @@ bool drawable(const TrackDraw& draw) { return draw.buffer != nullptr && draw.buf
 
 }  // namespace
 
-scene::Result<TrackWidth> parse_track_width(std::string_view text) {
-  const auto fail = [&] {
-    return scene::Result<TrackWidth>{std::nullopt, fmt::format("--width: '{}' is not a width: a positive number of metres "
-                                                        "or pixels, e.g. 8m or 6px",
-                                                        text)};
-  };
-  std::string_view rest = text;
-  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), value);
-  if (ec != std::errc() || end == rest.data()) return fail();
-  std::string_view unit(end, static_cast<std::size_t>(rest.data() + rest.size() - end));
-  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
-  while (!unit.empty() && unit.back() == ' ') unit.remove_suffix(1);
-  TrackWidth width;
-  width.value = value;
-  if (unit == "m")
-    width.unit = TrackWidth::Unit::metres;
-  else if (unit == "px")
-    width.unit = TrackWidth::Unit::pixels;
-  else
-    return fail();
-  if (!std::isfinite(value) || !(value > 0.0) || value > 1.0e6) return fail();
-  return {width, {}};
+TrackSceneSettings track_settings_for(const scene::TrackStyle& style, const std::optional<track::ValueRange>& range) {
+  TrackSceneSettings s;
+  s.width = style.width;
+  s.min_width_px = style.min_width_px;
+  s.occlusion = style.occlusion;
+  s.curtain = style.curtain;
+  s.curtain_alpha = style.curtain_alpha;
+  s.colormap = style.colormap;
+  s.cast_shadows = style.cast_shadows;
+  if (range) {
+    s.value_min = static_cast<float>(range->min);
+    s.value_max = static_cast<float>(range->max);
+  }
+  return s;
 }
 
 TrackOverlayTarget::TrackOverlayTarget(int width, int height) : frame_(width, height) {}

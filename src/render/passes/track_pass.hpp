@@ -27,35 +27,19 @@
 #include <array>
 #include <optional>
 #include <span>
-#include <string>
-#include <string_view>
 
 #include "scene/camera.hpp"
 #include "scene/colormap.hpp"
+#include "scene/style.hpp"
 #include "render/passes/compose_pass.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_buffer.hpp"
+#include "track/color_values.hpp"
 
 namespace trailray::render {
-
-// The tube's diameter: metres (perspective) or pixels (constant on screen).
-struct TrackWidth {
-  enum class Unit { metres, pixels };
-  double value = 5.0;
-  Unit unit = Unit::pixels;
-};
-// "8m", "8 m", "6px", "6 px" (value > 0, finite). The error quotes the text and the forms.
-scene::Result<TrackWidth> parse_track_width(std::string_view text);
-
-struct TrackOcclusion {
-  bool enabled = true;        // false (`--occlusion off`): hidden parts are not drawn at all
-  float alpha = 0.45f;        // `--occluded-alpha`
-  float fade_near_m = 100.f;  // `--occlusion-fade NEAR:FAR`: constant alpha to NEAR metres behind
-  float fade_far_m = 1000.f;  // the terrain, fading to 0 at FAR
-};
 
 struct TrackDraw {
   const TrackBuffer* buffer = nullptr;
@@ -63,16 +47,20 @@ struct TrackDraw {
   bool by_value = false;                    // colour by the buffer's values through the scale
 };
 
+// The pass's settings: a scene's track style with its colour scale (track_settings_for).
 struct TrackSceneSettings {
-  TrackWidth width;
+  scene::TrackWidth width;
   double min_width_px = 1.5;  // a distant tube never gets thinner than this (no dotted tracks)
-  TrackOcclusion occlusion;
+  scene::TrackOcclusion occlusion;
   bool curtain = false;       // `--curtain`: a translucent wall down to the ground
   float curtain_alpha = 0.3f;
   scene::Colormap colormap = scene::Colormap::turbo;
   float value_min = 0.0f, value_max = 1.0f;  // the colour scale's range
   bool cast_shadows = true;
 };
+
+// The settings for a track style and the colour scale in use (nullopt: solid colours).
+TrackSceneSettings track_settings_for(const scene::TrackStyle& style, const std::optional<track::ValueRange>& range);
 
 // The overlay target: premultiplied sRGB-encoded colour and its own depth buffer, the size of
 // the frame.
@@ -85,7 +73,7 @@ class TrackOverlayTarget {
   const Texture& color() const { return frame_.color(); }
 
  private:
-  FrameTarget frame_;  // RGBA8 + 24-bit depth, like the composed frame
+  ColorDepthTarget frame_;  // RGBA8 + 24-bit depth, like the composed frame
 };
 
 class TrackPass {

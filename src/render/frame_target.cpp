@@ -1,0 +1,16 @@
+#include "render/frame_target.hpp"
+
+#include "render/gl/framebuffer_readback.hpp"
+
+namespace trailray::render {
+
+void ImageTarget::receive(const ColorDepthTarget& frame) { image = read_rgba8(0, 0, frame.width(), frame.height()); }
+
+void DefaultFramebufferTarget::receive(const ColorDepthTarget& frame) {
+  frame.bind();
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, frame.width(), frame.height(), 0, 0, frame.width(), frame.height(), GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+}
+
+}  // namespace trailray::render

@@ -1,0 +1,43 @@
+#pragma once
+// Where a frame goes (Renderer::draw): the renderer composes the frame offscreen, at the
+// camera's lens size, then hands it to its target, which reads it back into a picture, copies it
+// into a window, or (later) a browser canvas or a video encoder's frame.
+
+#include <string_view>
+
+#include "render/gl/frame_profiler.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "scene/rgba_image.hpp"
+
+namespace trailray::render {
+
+class FrameTarget {
+ public:
+  virtual ~FrameTarget() = default;
+
+  // Receives the composed frame (bound for reading and drawing when called). Throws RenderError.
+  virtual void receive(const ColorDepthTarget& frame) = 0;
+  // The profiler's name for receive (empty: not timed).
+  virtual std::string_view pass_name() const { return {}; }
+
+  // When set, the frame's passes are timed as one profiler frame (begun after the tiles are
+  // loaded).
+  FrameProfiler* profiler = nullptr;
+};
+
+// The frame read back into a picture (top-down, sRGB): `trailray render`, screenshots, tests.
+class ImageTarget : public FrameTarget {
+ public:
+  void receive(const ColorDepthTarget& frame) override;
+  std::string_view pass_name() const override { return "readback"; }
+
+  scene::RgbaImage image;  // the last frame received
+};
+
+// The frame copied into the default framebuffer (a window's, which must be the lens's size).
+class DefaultFramebufferTarget : public FrameTarget {
+ public:
+  void receive(const ColorDepthTarget& frame) override;
+};
+
+}  // namespace trailray::render

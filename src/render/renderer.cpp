@@ -1,0 +1,170 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <string_view>
+#include <utility>
+
+#include "render/gl/gl_capabilities.hpp"
+#include "render/passes/shadow_pass.hpp"
+
+namespace trailray::render {
+namespace {
+
+// Runs a frame's passes, each in a debug group of its name, timed under that name (or another)
+// when there is a profiler.
+class FramePasses {
+ public:
+  FramePasses(const DebugGroups& groups, FrameProfiler* profiler) : groups_(groups), profiler_(profiler) {
+    if (profiler_ != nullptr) profiler_->begin_frame();
+  }
+  ~FramePasses() {
+    if (profiler_ != nullptr) profiler_->end_frame();
+  }
+  FramePasses(const FramePasses&) = delete;
+  FramePasses& operator=(const FramePasses&) = delete;
+
+  // `timed_as` empty: not timed.
+  template <typename Run>
+  void run(std::string_view name, Run&& pass, std::string_view timed_as) {
+    const DebugGroup group(groups_, name);
+    if (profiler_ == nullptr || timed_as.empty()) return pass();
+    const FrameProfiler::Scope scope(*profiler_, timed_as);
+    pass();
+  }
+  template <typename Run>
+  void run(std::string_view name, Run&& pass) {
+    run(name, std::forward<Run>(pass), name);
+  }
+
+ private:
+  const DebugGroups& groups_;
+  FrameProfiler* profiler_;
+};
+
+// The height span of the terrain drawn (the neutral ground's height included).
+std::pair<float, float> terrain_span(std::span<const scene::TerrainTile> tiles, float neutral_m) {
+  float lowest = neutral_m, highest = neutral_m;
+  for (const scene::TerrainTile& t : tiles)
+    if (t.has_data) {
+      lowest = std::min(lowest, t.heights->min_m);
+      highest = std::max(highest, t.heights->max_m);
+    }
+  return {lowest, highest};
+}
+
+}  // namespace
+
+Renderer::Renderer(RendererOptions options) : options_(options) {
+  const GlCapabilities capabilities = query_gl_capabilities();
+  distance_encoding_ = distance_encoding_for(capabilities);
+  debug_groups_ = DebugGroups(capabilities);
+}
+
+Renderer::~Renderer() = default;
+
+FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camera, FrameTarget& target) {
+  scene::TerrainView& terrain = scene.terrain != nullptr ? *scene.terrain : neutral_terrain_;
+  const scene::TerrainTiles tiles = terrain.tiles_for(camera, scene.neutral_ground_m);
+  FrameContent content;
+  content.terrain = &tiles;
+  content.shading = scene.style.shading;
+  content.sun_direction_ecef = scene::sun_direction(scene);
+  content.track_settings = track_settings_for(scene.style.tracks, scene.color_range);
+  track_gpu_.begin_frame();
+  if (scene.tracks != nullptr) content.tracks = track_gpu_.draws(*scene.tracks, scene.color_range.has_value());
+  FrameReport report = draw(content, camera, target);
+  track_gpu_.evict(scene.tracks);
+  report.gpu_tracks = track_gpu_.stats();
+  return report;
+}
+
+FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target) {
+  FrameReport report;
+  const scene::TerrainTiles& terrain = *content.terrain;
+  report.terrain = terrain.report;
+  const auto neutral = static_cast<float>(terrain.report.neutral_ground_m);
+  terrain_gpu_.begin_frame();
+  const std::vector<TerrainDrawItem> items = terrain_gpu_.upload(terrain.tiles, neutral);
+  for (const scene::TerrainTile& t : terrain.tiles) {
+    ++report.tiles_drawn;
+    if (t.has_data) ++report.tiles_with_data;
+    if (t.image) ++report.imagery_tiles_used;
+  }
+  report.tracks_drawn = content.tracks.size();
+
+  const std::optional<ShadowCascades> cascades = shadow_cascades(content, camera, neutral);
+  report.shadows_drawn = cascades.has_value();
+  // The tracks' block origins relative to this camera (the shadow and track passes use them).
+  TrackPass::prepare(content.tracks, camera);
+  run_passes(content, camera, target, items, cascades);
+
+  // Between frames: the draw lists above point into the caches until here.
+  terrain_gpu_.end_frame(options_.mesh_budget_bytes, options_.imagery_budget_bytes);
+  report.gpu_meshes = terrain_gpu_.mesh_stats();
+  report.gpu_imagery = terrain_gpu_.imagery_stats();
+  return report;
+}
+
+std::optional<ShadowCascades> Renderer::shadow_cascades(const FrameContent& content, const scene::Camera& camera,
+                                                        float neutral_m) {
+  const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);
+  // The sun's disc below the horizon gives no direct light (sun_radiance is 0): nothing to shade.
+  const bool sun_up = glm::dot(lighting.sun_radiance, glm::vec3(1.0f)) > 0.0f;
+  if (!content.shading.shadows || !sun_up) return std::nullopt;
+  ShadowCascadeSettings settings;
+  settings.map_size_px = options_.shadow_map_size_px;
+  // Casters reach towards the sun by the height span of what is drawn.
+  const auto [lowest, highest] = terrain_span(content.terrain->tiles, neutral_m);
+  settings.caster_height_span_m =
+      caster_height_span_m(lowest, highest, ShadowCasters{{}, content.tracks, &content.track_settings});
+  std::optional<ShadowCascades> cascades(std::in_place, camera, content.sun_direction_ecef, settings);
+  if (!shadow_maps_ || shadow_maps_->map_size_px() != options_.shadow_map_size_px)
+    shadow_maps_.emplace(options_.shadow_map_size_px);
+  return cascades;
+}
+
+void Renderer::run_passes(const FrameContent& content, const scene::Camera& camera, FrameTarget& target,
+                          std::span<const TerrainDrawItem> items, const std::optional<ShadowCascades>& cascades) {
+  const scene::Lens& lens = camera.lens();
+  const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
+  ComposeSettings compose;
+  compose.atmosphere = content.shading.atmosphere;
+  const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, compose.model);
+  const TrackSceneSettings& tracks = content.track_settings;
+  FramePasses passes(debug_groups_, target.profiler);
+  if (cascades)
+    passes.run("shadows", [&] {
+      draw_shadow_pass(*shadow_maps_, *cascades, {items, content.tracks, &tracks}, track_pass_, camera);
+    });
+  const GBuffer gbuffer(width, height, distance_encoding_);
+  passes.run("tiles", [&] { terrain_pass_.draw(gbuffer, camera, items, content.shading.snow); });
+  std::optional<TrackOverlayTarget> overlay;
+  if (!content.tracks.empty())
+    passes.run("tracks", [&] {
+      // The overlay reads the terrain's distances, so it goes before the tracks enter the G-buffer.
+      overlay.emplace(width, height);
+      track_pass_.draw_overlay(gbuffer, *overlay, camera, lighting, content.tracks, tracks);
+      track_pass_.draw_visible(gbuffer, camera, content.tracks, tracks);
+    });
+  const Texture* ambient_occlusion = nullptr;
+  if (content.shading.ssao) passes.run("ssao", [&] { ambient_occlusion = &ssao_pass_.run(gbuffer, camera); });
+  const ColorDepthTarget frame(width, height);
+  // The atmosphere (aerial perspective and sky) is drawn by the compose pass's one draw: its time
+  // is compose's, and the profiler's "atmosphere" row stays empty.
+  passes.run("compose", [&] {
+    frame.bind();
+    const ComposeShadows shadows{cascades ? &*shadow_maps_ : nullptr, cascades ? &*cascades : nullptr};
+    compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
+  });
+  if (overlay) passes.run("overlays", [&] { track_pass_.blend_overlay(*overlay); });
+  passes.run(
+      "output",
+      [&] {
+        frame.bind();
+        target.receive(frame);
+      },
+      target.pass_name());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace trailray::render

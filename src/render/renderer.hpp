@@ -1,0 +1,119 @@
+#pragma once
+// The renderer: draws a scene::Scene from a camera into a FrameTarget. It asks the scene's
+// terrain view for the tiles to draw, uploads what is not on the GPU yet (tile meshes, imagery,
+// track buffers by (id, revision)) and runs the frame's passes (DESIGN.md "The frame"):
+//
+//   shadows    the sun's cascaded shadow maps, terrain and tracks as casters
+//   tiles      the terrain into the G-buffer (albedo, normal, distance)
+//   tracks     the tracks' overlay (ghosts, fringe, curtains), then their visible hits into the
+//              G-buffer
+//   ssao       ambient occlusion from the G-buffer
+//   compose    sun, sky light, shadows, AO, atmosphere: the lit frame
+//   overlays   the track overlay blended over it
+//   output     the frame handed to its target (read back, copied into a window)
+//
+// Each pass runs in a KHR_debug group of its name and, with a profiler, is timed under it.
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "render/frame_target.hpp"
+#include "render/gl/debug_group.hpp"
+#include "render/gl/gpu_resource_cache.hpp"
+#include "render/passes/compose_pass.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/passes/shadow_maps.hpp"
+#include "render/passes/ssao_pass.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "render/passes/track_pass.hpp"
+#include "render/terrain_gpu.hpp"
+#include "render/track_gpu.hpp"
+#include "scene/camera.hpp"
+#include "scene/scene.hpp"
+#include "scene/terrain_view.hpp"
+
+namespace trailray::render {
+
+struct RendererOptions {
+  int shadow_map_size_px = 2048;  // each cascade's square depth map (16..16384)
+  // GPU memory for tile meshes and imagery textures kept between frames (estimated from buffer
+  // and texture sizes). After each frame the least recently used beyond the budget are freed,
+  // never those the frame drew: a view that needs more keeps them and frees them later.
+  std::size_t mesh_budget_bytes = kDefaultMeshBudgetBytes;
+  std::size_t imagery_budget_bytes = kDefaultImageryBudgetBytes;
+};
+
+struct FrameReport {
+  scene::TerrainReport terrain;        // selection rounds, timeout, failures, progress, neutral ground
+  std::size_t tiles_drawn = 0;         // height tiles drawn (neutral ones included)
+  std::size_t tiles_with_data = 0;     // of those: from the height source
+  std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
+  std::size_t tracks_drawn = 0;        // visible tracks
+  bool shadows_drawn = false;          // false: switched off, or the sun below the horizon
+  // The GPU caches after this frame's eviction: held, used by the frame, uploaded, evicted.
+  GpuCacheStats gpu_meshes;
+  GpuCacheStats gpu_imagery;
+  GpuCacheStats gpu_tracks;
+};
+
+// A frame's content once resolved from a scene: the terrain's tiles, the tracks' buffers, the
+// light and the style.
+struct FrameContent {
+  const scene::TerrainTiles* terrain = nullptr;
+  std::vector<TrackDraw> tracks;
+  TrackSceneSettings track_settings;
+  scene::Shading shading;
+  glm::dvec3 sun_direction_ecef{0.0, 0.0, 1.0};  // unit, towards the sun
+};
+
+class Renderer {
+ public:
+  // The GL context must be current and stay so for the renderer's lifetime. Throws ShaderError /
+  // RenderError from GL.
+  explicit Renderer(RendererOptions options = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws the scene from the camera at its lens's image size into `target`. The scene's terrain
+  // view hands out the tiles by its loading policy (waiting for them, or not: the viewer); a
+  // scene without one is the neutral ground everywhere. Throws RenderError from GL, and
+  // std::invalid_argument for an unusable camera or a shadow map size outside 16..16384.
+  FrameReport draw(const scene::Scene& scene, const scene::Camera& camera, FrameTarget& target);
+
+  // Draws resolved content: the tracks' buffers are the caller's (they must outlive the call).
+  FrameReport draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target);
+
+  const RendererOptions& options() const { return options_; }
+  void set_options(const RendererOptions& options) { options_ = options; }
+
+  // The G-buffer's distance encoding: from the context's capabilities, queried once at
+  // construction; tests force the packed path to check it against the float one.
+  DistanceEncoding distance_encoding() const { return distance_encoding_; }
+  void set_distance_encoding(DistanceEncoding encoding) { distance_encoding_ = encoding; }
+
+ private:
+  // The sun's cascades when the frame has shadows (and the maps for them), else nullopt.
+  std::optional<ShadowCascades> shadow_cascades(const FrameContent& content, const scene::Camera& camera,
+                                                float neutral_m);
+  void run_passes(const FrameContent& content, const scene::Camera& camera, FrameTarget& target,
+                  std::span<const TerrainDrawItem> items, const std::optional<ShadowCascades>& cascades);
+
+  RendererOptions options_;
+  DistanceEncoding distance_encoding_;
+  DebugGroups debug_groups_;
+  TerrainPass terrain_pass_;
+  SsaoPass ssao_pass_;
+  ComposePass compose_pass_;
+  TrackPass track_pass_;
+  std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
+  TerrainGpu terrain_gpu_;
+  TrackGpu track_gpu_;
+  scene::TerrainView neutral_terrain_{nullptr, nullptr};  // for scenes without terrain
+};
+
+}  // namespace trailray::render
