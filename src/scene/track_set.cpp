@@ -1,6 +1,7 @@
 #include "scene/track_set.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -38,7 +39,8 @@ std::size_t Track::points_with_value() const {
 }
 
 TrackId TrackSet::add(Track track) {
-  track.id = next_id_++;
+  static std::atomic<TrackId> next_id{1};
+  track.id = next_id.fetch_add(1, std::memory_order_relaxed);
   tracks_.push_back(std::move(track));
   return tracks_.back().id;
 }

@@ -4,7 +4,8 @@
 // read, and what the renderer draws (its ECEF polylines with colour values and curtain heights,
 // its colour, whether it is shown).
 //
-// A track has an id that stays the same while it is in its set, and a revision that changes
+// A track has an id that stays the same while it is in its set (unique among the tracks of every
+// set of the process, so one renderer can draw several sets), and a revision that changes
 // whenever what is drawn of it changes (colour values, curtain, geometry): the renderer keeps one
 // GPU buffer per (id, revision), so front ends never hold GPU objects.
 //
@@ -75,7 +76,7 @@ struct Track {
 
 class TrackSet {
  public:
-  // Adds a track and gives it a new id (returned).
+  // Adds a track and gives it a new id (returned), never given to another track of any set.
   TrackId add(Track track);
   // nullptr when no track has that id.
   const Track* find(TrackId id) const;
@@ -92,7 +93,6 @@ class TrackSet {
 
  private:
   std::vector<Track> tracks_;
-  TrackId next_id_ = 1;
 };
 
 }  // namespace trailray::scene

@@ -13,7 +13,7 @@
 #include "gl_test_support.hpp"
 #include "scene/camera.hpp"
 #include "render/gl/gl_capabilities.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render {
@@ -64,7 +64,7 @@ class DeferredPipelineTest : public GlTest {};
 
 TEST_F(DeferredPipelineTest, AmbientOcclusionDarkensTheValleyFloorNotTheRidgeTop) {
   ValleysSource valleys;
-  SceneRenderer renderer({&valleys, nullptr});
+  test::SceneDrawer renderer(&valleys, nullptr);
   const auto camera =
       scene::camera_at({{kLat, kLon + 1000.0 / metres_per_degree_lon(), 10000.0}, 0.0, -90.0}, scene::Lens{45.0, 240, 135}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
@@ -72,12 +72,12 @@ TEST_F(DeferredPipelineTest, AmbientOcclusionDarkensTheValleyFloorNotTheRidgeTop
   const auto ridge = camera.value->project(scene::ecef_from({kLat, kLon + 2000.0 / metres_per_degree_lon(), 2600.0}));
   ASSERT_TRUE(floor && ridge);
 
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 180.0, 89.0);  // both flat spots lit alike
-  options.atmosphere = false;  // the two lie at different distances: no haze to tell them apart
-  const RenderedScene with_ao = renderer.render(*camera.value, options);
-  options.ssao = false;
-  const RenderedScene without_ao = renderer.render(*camera.value, options);
+  options.style.shading.atmosphere = false;  // the two lie at different distances: no haze to tell them apart
+  const test::Drawn with_ao = renderer.draw(*camera.value, options);
+  options.style.shading.ssao = false;
+  const test::Drawn without_ao = renderer.draw(*camera.value, options);
   keep_image(with_ao.image, "valleys_ssao.png");
   keep_image(without_ao.image, "valleys_no_ssao.png");
 
@@ -91,17 +91,17 @@ TEST_F(DeferredPipelineTest, AmbientOcclusionDarkensTheValleyFloorNotTheRidgeTop
 
 TEST_F(DeferredPipelineTest, EachSwitchChangesThePicture) {
   ValleysSource valleys;
-  SceneRenderer renderer({&valleys, nullptr});
+  test::SceneDrawer renderer(&valleys, nullptr);
   const auto camera = scene::camera_at({{kLat - 0.1, kLon, 3000.0}, 10.0, -12.0}, scene::Lens{45.0, 160, 90}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 220.0, 35.0);
-  const RenderedScene all = renderer.render(*camera.value, options);
-  options.ssao = false;
-  const RenderedScene no_ssao = renderer.render(*camera.value, options);
-  options.ssao = true;
-  options.atmosphere = false;
-  const RenderedScene no_atmosphere = renderer.render(*camera.value, options);
+  const test::Drawn all = renderer.draw(*camera.value, options);
+  options.style.shading.ssao = false;
+  const test::Drawn no_ssao = renderer.draw(*camera.value, options);
+  options.style.shading.ssao = true;
+  options.style.shading.atmosphere = false;
+  const test::Drawn no_atmosphere = renderer.draw(*camera.value, options);
   keep_image(all.image, "switches_all.png");
   keep_image(no_ssao.image, "switches_no_ssao.png");
   keep_image(no_atmosphere.image, "switches_no_atmosphere.png");
@@ -119,17 +119,17 @@ TEST_F(DeferredPipelineTest, EachSwitchChangesThePicture) {
 // to the colour of the sky at the horizon than near ground; without the atmosphere near and far
 // look the same.
 TEST_F(DeferredPipelineTest, FarGroundIsHazierThanNearGround) {
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{30.0, 160, 90};
   const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 30.0, -8.0}, lens, 500.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
-  options.neutral_ground_height_m = 500.0;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
+  options.neutral_ground_m = 500.0;
   options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
-  options.ssao = false;
-  const RenderedScene hazy = renderer.render(*camera.value, options);
-  options.atmosphere = false;
-  const RenderedScene clear = renderer.render(*camera.value, options);
+  options.style.shading.ssao = false;
+  const test::Drawn hazy = renderer.draw(*camera.value, options);
+  options.style.shading.atmosphere = false;
+  const test::Drawn clear = renderer.draw(*camera.value, options);
   keep_image(hazy.image, "haze.png");
   keep_image(clear.image, "haze_off.png");
   const auto horizon = camera.value->horizon_row_px(80.0);
@@ -147,14 +147,14 @@ TEST_F(DeferredPipelineTest, FarGroundIsHazierThanNearGround) {
 }
 
 TEST_F(DeferredPipelineTest, TheSkyIsBrighterAtTheHorizonThanAtTheZenith) {
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   // Looking north, up from 2 to 72 degrees above the horizon, the sun behind in the south.
   const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 0.0, 37.0}, scene::Lens{70.0, 90, 90}, 500.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
-  options.neutral_ground_height_m = 500.0;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
+  options.neutral_ground_m = 500.0;
   options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 40.0);
-  const RenderedScene sky = renderer.render(*camera.value, options);
+  const test::Drawn sky = renderer.draw(*camera.value, options);
   keep_image(sky.image, "sky.png");
   const Pixel low = sky.image.pixel(45, 88), high = sky.image.pixel(45, 1);
   EXPECT_GT(luminance(low), luminance(high) + 20.0);
@@ -163,28 +163,28 @@ TEST_F(DeferredPipelineTest, TheSkyIsBrighterAtTheHorizonThanAtTheZenith) {
   for (std::uint32_t y = 1; y < 90; ++y)
     EXPECT_GE(luminance(sky.image.pixel(45, y)) + 1.0, luminance(sky.image.pixel(45, y - 1))) << "row " << y;
 
-  options.atmosphere = false;
-  const RenderedScene flat = renderer.render(*camera.value, options);
+  options.style.shading.atmosphere = false;
+  const test::Drawn flat = renderer.draw(*camera.value, options);
   EXPECT_EQ(flat.image.pixel(45, 88), flat.image.pixel(45, 1));
 }
 
 TEST_F(DeferredPipelineTest, PackedDistancesDrawWhatFloatDistancesDraw) {
   ValleysSource valleys;
-  SceneRenderer renderer({&valleys, nullptr});
-  EXPECT_EQ(renderer.distance_encoding(), distance_encoding_for(query_gl_capabilities()));
+  test::SceneDrawer renderer(&valleys, nullptr);
+  EXPECT_EQ(renderer.renderer().distance_encoding(), distance_encoding_for(query_gl_capabilities()));
   const auto camera = scene::camera_at({{kLat - 0.1, kLon, 3000.0}, 10.0, -12.0}, scene::Lens{45.0, 160, 90}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 220.0, 35.0);
-  renderer.set_distance_encoding(DistanceEncoding::packed_rgba8);
-  const RenderedScene packed = renderer.render(*camera.value, options);
+  renderer.renderer().set_distance_encoding(DistanceEncoding::packed_rgba8);
+  const test::Drawn packed = renderer.draw(*camera.value, options);
   keep_image(packed.image, "packed_distance.png");
   // The terrain is there (the bottom row), under a sky (the top row).
   EXPECT_GT(colour_distance(packed.image.pixel(80, 0), packed.image.pixel(80, 89)), 20.0);
   // A context without float targets has only the packed path; with them, both must agree.
   if (query_gl_capabilities().color_buffer_float) {
-    renderer.set_distance_encoding(DistanceEncoding::float32);
-    const RenderedScene as_float = renderer.render(*camera.value, options);
+    renderer.renderer().set_distance_encoding(DistanceEncoding::float32);
+    const test::Drawn as_float = renderer.draw(*camera.value, options);
     EXPECT_LT(fraction_differing(as_float.image, packed.image, 2), 0.01);
   }
 }

@@ -13,7 +13,7 @@
 
 #include "gl_test_support.hpp"
 #include "scene/camera.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render {
@@ -69,11 +69,11 @@ class SceneGpuBudgetTest : public GlTest {
     EXPECT_TRUE(made.ok()) << made.error;
     return *made.value;
   }
-  static SceneRenderOptions options() {
-    SceneRenderOptions o;
-    o.ssao = false;
-    o.shadows = false;
-    o.neutral_ground_height_m = 1000.0;
+  static scene::Scene options() {
+    scene::Scene o = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
+    o.style.shading.ssao = false;
+    o.style.shading.shadows = false;
+    o.neutral_ground_m = 1000.0;
     return o;
   }
 };
@@ -99,23 +99,25 @@ void expect_within_budget(const GpuCacheStats& s, const std::string& what) {
 TEST_F(SceneGpuBudgetTest, FlyingAcrossPlacesStaysWithinTheBudgetAndRedrawsARevisitedPlace) {
   WavySource heights;
   StripedImagery imagery;
-  SceneRenderer renderer({&heights, &imagery});
-  SceneRenderOptions o = options();
+  test::SceneDrawer renderer(&heights, &imagery);
+  scene::Scene o = options();
 
   // One place's frame sets the scale: a budget of about two places' worth, so the tour must evict.
-  const RenderedScene first = renderer.render(camera_over(0), o);
+  const test::Drawn first = renderer.draw(camera_over(0), o);
   ASSERT_GT(first.report.tiles_with_data, 0u);
   ASSERT_GT(first.report.imagery_tiles_used, 0u);
   ASSERT_GT(first.report.gpu_meshes.frame_bytes, 0u);
   ASSERT_GT(first.report.gpu_imagery.frame_bytes, 0u);
-  o.mesh_budget_bytes = 2 * first.report.gpu_meshes.frame_bytes;
-  o.imagery_budget_bytes = 2 * first.report.gpu_imagery.frame_bytes;
+  RendererOptions budgets;
+  budgets.mesh_budget_bytes = 2 * first.report.gpu_meshes.frame_bytes;
+  budgets.imagery_budget_bytes = 2 * first.report.gpu_imagery.frame_bytes;
+  renderer.renderer().set_options(budgets);
 
   std::vector<scene::RgbaImage> seen;
   std::size_t most_mesh_entries = 0;
   for (int round = 0; round < 2; ++round)
     for (int place = 0; place < kPlaces; ++place) {
-      const RenderedScene scene = renderer.render(camera_over(place), o);
+      const test::Drawn scene = renderer.draw(camera_over(place), o);
       expect_within_budget(scene.report.gpu_meshes, "meshes");
       expect_within_budget(scene.report.gpu_imagery, "imagery");
       if (round == 0) {
@@ -132,7 +134,7 @@ TEST_F(SceneGpuBudgetTest, FlyingAcrossPlacesStaysWithinTheBudgetAndRedrawsARevi
         auto made = scene::camera_at({{kLat, kLon + place * kPlaceStepDeg, 5000.0}, 30.0 + 20.0 * frame, -50.0},
                               scene::Lens{45.0, 96, 64}, 1200.0);
         ASSERT_TRUE(made.ok()) << made.error;
-        const RenderedScene turned = renderer.render(*made.value, o);
+        const test::Drawn turned = renderer.draw(*made.value, o);
         const std::string where = "round " + std::to_string(round) + " place " + std::to_string(place);
         expect_within_budget(turned.report.gpu_meshes, where + " meshes");
         expect_within_budget(turned.report.gpu_imagery, where + " imagery");
@@ -148,10 +150,10 @@ TEST_F(SceneGpuBudgetTest, FlyingAcrossPlacesStaysWithinTheBudgetAndRedrawsARevi
 TEST_F(SceneGpuBudgetTest, WithinTheDefaultBudgetARevisitedPlaceUploadsNothing) {
   WavySource heights;
   StripedImagery imagery;
-  SceneRenderer renderer({&heights, &imagery});
-  const RenderedScene first = renderer.render(camera_over(0), options());
-  const RenderedScene elsewhere = renderer.render(camera_over(2), options());
-  const RenderedScene again = renderer.render(camera_over(0), options());
+  test::SceneDrawer renderer(&heights, &imagery);
+  const test::Drawn first = renderer.draw(camera_over(0), options());
+  const test::Drawn elsewhere = renderer.draw(camera_over(2), options());
+  const test::Drawn again = renderer.draw(camera_over(0), options());
   EXPECT_EQ(again.report.gpu_meshes.uploads, 0u);
   EXPECT_EQ(again.report.gpu_imagery.uploads, 0u);
   EXPECT_EQ(again.report.gpu_meshes.entries,
@@ -162,13 +164,13 @@ TEST_F(SceneGpuBudgetTest, WithinTheDefaultBudgetARevisitedPlaceUploadsNothing) 
 }
 
 TEST_F(SceneGpuBudgetTest, ANewNeutralHeightReplacesTheNeutralGroundsMeshes) {
-  SceneRenderer renderer({nullptr, nullptr});  // the neutral ground everywhere: all holes
-  SceneRenderOptions o = options();
+  test::SceneDrawer renderer(nullptr, nullptr);  // the neutral ground everywhere: all holes
+  scene::Scene o = options();
   std::size_t entries = 0;
   for (int frame = 0; frame < 6; ++frame) {
     // Steps small enough to leave the tiles chosen for the view as they are.
-    o.neutral_ground_height_m = 1000.0 + 0.5 * frame;
-    const RenderedScene scene = renderer.render(camera_over(0), o);
+    o.neutral_ground_m = 1000.0 + 0.5 * frame;
+    const test::Drawn scene = renderer.draw(camera_over(0), o);
     const GpuCacheStats& s = scene.report.gpu_meshes;
     // Far under the default budget, yet no mesh of an old height is left.
     EXPECT_EQ(s.entries, s.frame_entries) << "frame " << frame;
@@ -180,12 +182,12 @@ TEST_F(SceneGpuBudgetTest, ANewNeutralHeightReplacesTheNeutralGroundsMeshes) {
 
 TEST_F(SceneGpuBudgetTest, MeshesWithoutHolesAreKeptWhenTheNeutralHeightChanges) {
   WavySource heights;
-  SceneRenderer renderer({&heights, nullptr});
-  SceneRenderOptions o = options();
-  const RenderedScene first = renderer.render(camera_over(0), o);
+  test::SceneDrawer renderer(&heights, nullptr);
+  scene::Scene o = options();
+  const test::Drawn first = renderer.draw(camera_over(0), o);
   ASSERT_EQ(first.report.tiles_with_data, first.report.tiles_drawn);
-  o.neutral_ground_height_m = 300.0;
-  const RenderedScene second = renderer.render(camera_over(0), o);
+  o.neutral_ground_m = 300.0;
+  const test::Drawn second = renderer.draw(camera_over(0), o);
   EXPECT_EQ(second.report.gpu_meshes.uploads, 0u);
   EXPECT_EQ(second.report.gpu_meshes.entries, first.report.gpu_meshes.entries);
 }

@@ -13,7 +13,7 @@
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
 #include "scene/camera.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render {
@@ -57,13 +57,13 @@ class SceneShadowsTest : public GlTest {
 
 TEST_F(SceneShadowsTest, ALowWestSunShadowsTheGroundJustEastOfTheRidgeAndNothingFarFromIt) {
   RidgeSource ridge;
-  SceneRenderer renderer({&ridge, nullptr});
+  test::SceneDrawer renderer(&ridge, nullptr);
   const scene::Camera camera = overhead();
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, kSunElevationDeg);
-  const RenderedScene shadowed = renderer.render(camera, options);
-  options.shadows = false;
-  const RenderedScene unshadowed = renderer.render(camera, options);
+  const test::Drawn shadowed = renderer.draw(camera, options);
+  options.style.shading.shadows = false;
+  const test::Drawn unshadowed = renderer.draw(camera, options);
   keep_image(shadowed.image, "ridge_low_sun_shadows.png");
   keep_image(unshadowed.image, "ridge_low_sun_no_shadows.png");
   EXPECT_TRUE(shadowed.report.shadows_drawn);
@@ -89,13 +89,13 @@ TEST_F(SceneShadowsTest, ALowWestSunShadowsTheGroundJustEastOfTheRidgeAndNothing
 
 TEST_F(SceneShadowsTest, TheShadowMovesWithTheSun) {
   RidgeSource ridge;
-  SceneRenderer renderer({&ridge, nullptr});
+  test::SceneDrawer renderer(&ridge, nullptr);
   const scene::Camera camera = overhead();
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 90.0, kSunElevationDeg);  // from the east now
-  const RenderedScene shadowed = renderer.render(camera, options);
-  options.shadows = false;
-  const RenderedScene unshadowed = renderer.render(camera, options);
+  const test::Drawn shadowed = renderer.draw(camera, options);
+  options.style.shading.shadows = false;
+  const test::Drawn unshadowed = renderer.draw(camera, options);
   const auto ratio = [&](double east_km) {
     const terrain::ScreenPoint p = ground_at(camera, east_km);
     return mean_luminance(shadowed.image, p.x_px, p.y_px, 1) / mean_luminance(unshadowed.image, p.x_px, p.y_px, 1);
@@ -106,14 +106,14 @@ TEST_F(SceneShadowsTest, TheShadowMovesWithTheSun) {
 
 TEST_F(SceneShadowsTest, ASunBelowTheHorizonDoesNoShadowWork) {
   RidgeSource ridge;
-  SceneRenderer renderer({&ridge, nullptr});
+  test::SceneDrawer renderer(&ridge, nullptr);
   const scene::Camera camera = overhead();
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, -3.0);
-  const RenderedScene night = renderer.render(camera, options);
+  const test::Drawn night = renderer.draw(camera, options);
   EXPECT_FALSE(night.report.shadows_drawn);
-  options.shadows = false;
-  const RenderedScene night_without = renderer.render(camera, options);
+  options.style.shading.shadows = false;
+  const test::Drawn night_without = renderer.draw(camera, options);
   const terrain::ScreenPoint p = ground_at(camera, 2.8);
   EXPECT_EQ(night.image.pixel(static_cast<std::uint32_t>(p.x_px), static_cast<std::uint32_t>(p.y_px)),
             night_without.image.pixel(static_cast<std::uint32_t>(p.x_px), static_cast<std::uint32_t>(p.y_px)));
@@ -121,13 +121,12 @@ TEST_F(SceneShadowsTest, ASunBelowTheHorizonDoesNoShadowWork) {
 
 TEST_F(SceneShadowsTest, ProfiledFramesTimeEachPassOfTheFrame) {
   RidgeSource ridge;
-  SceneRenderer renderer({&ridge, nullptr});
+  test::SceneDrawer renderer(&ridge, nullptr);
   const scene::Camera camera = overhead();
   FrameProfiler profiler(query_gl_capabilities(), 4);
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kLat, kLon, 270.0, 30.0);
-  options.profiler = &profiler;
-  for (int frame = 0; frame < 3; ++frame) renderer.render(camera, options);
+  for (int frame = 0; frame < 3; ++frame) renderer.draw(camera, options, &profiler);
   profiler.finish();
   EXPECT_EQ(profiler.frames_ended(), 3u);
   for (const PassTimes& pass : profiler.times()) {

@@ -1,7 +1,8 @@
 #pragma once
-// What the scene tests (scene_renderer, scene_shadows, deferred_pipeline) share: pixel
-// luminance, a sun placed by azimuth and elevation, saving pictures for a human to look at, and
-// synthetic terrain that varies only from west to east.
+// What the scene tests (renderer, scene_shadows, deferred_pipeline, the track tests) share:
+// a renderer with its terrain view that draws a scene into a picture, pixel luminance, a sun
+// placed by azimuth and elevation, saving pictures for a human to look at, and synthetic terrain
+// that varies only from west to east.
 
 #include <algorithm>
 #include <array>
@@ -16,10 +17,54 @@
 #include "geo/tile_id.hpp"
 #include "scene/camera.hpp"
 #include "render/gl/framebuffer_readback.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/frame_target.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+#include "scene/terrain_view.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::render::test {
+
+// A frame drawn and read back, with the renderer's report.
+struct Drawn {
+  scene::RgbaImage image;
+  FrameReport report;
+};
+
+// A renderer and the terrain view over a test's sources (either may be nullptr): draws scenes
+// over that terrain into pictures.
+class SceneDrawer {
+ public:
+  SceneDrawer(terrain::HeightSource* heights, terrain::ImagerySource* imagery, RendererOptions options = {})
+      : terrain_(heights, imagery), renderer_(options) {}
+
+  // `scene` over this drawer's terrain (its own terrain is replaced), read back.
+  Drawn draw(const scene::Camera& camera, scene::Scene scene, FrameProfiler* profiler = nullptr) {
+    scene.terrain = &terrain_;
+    ImageTarget target;
+    target.profiler = profiler;
+    Drawn drawn;
+    drawn.report = renderer_.draw(scene, camera, target);
+    drawn.image = std::move(target.image);
+    return drawn;
+  }
+
+  scene::TerrainView& terrain() { return terrain_; }
+  Renderer& renderer() { return renderer_; }
+
+ private:
+  scene::TerrainView terrain_;
+  Renderer renderer_;
+};
+
+// A scene lit from `sun_direction_ecef` (towards the sun) with the neutral ground at `ground_m`
+// (NaN: the lowest terrain in view) and every effect on.
+inline scene::Scene lit_scene(const glm::dvec3& sun_direction_ecef, double ground_m = 0.0) {
+  scene::Scene s;
+  s.sun_direction_ecef = sun_direction_ecef;
+  s.neutral_ground_m = ground_m;
+  return s;
+}
 
 inline double luminance(const std::array<std::uint8_t, 4>& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 

@@ -12,7 +12,7 @@
 
 #include "geo/wgs84.hpp"
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -41,21 +41,22 @@ class TrackDepthTest : public GlTest {};
 // colour shows, with either track drawn first; away from the crossing each keeps its own colour.
 TEST_F(TrackDepthTest, TheNearerOfTwoCrossingTracksWinsWhicheverIsDrawnFirst) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{30.0, 320, 240};
   const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, lens, 10.0);
-  SceneRenderOptions options = test::plain_options(kPlace, 0.0);
-  options.track_settings.width = {8.0, TrackWidth::Unit::metres};
+  scene::Scene options = test::plain_scene(kPlace, 0.0);
+  options.style.tracks.width = {8.0, scene::TrackWidth::Unit::metres};
   for (const bool red_on_top : {false, true}) {
     const double red_m = red_on_top ? 850.0 : 800.0, blue_m = red_on_top ? 800.0 : 850.0;
-    const TrackBuffer red(test::geometry_of({polyline(frame, {{-100, 0, red_m}, {100, 0, red_m}})}));
-    const TrackBuffer blue(test::geometry_of({polyline(frame, {{0, -100, blue_m}, {0, 100, blue_m}})}));
+    const scene::Track red = test::track_of(test::geometry_of({polyline(frame, {{-100, 0, red_m}, {100, 0, red_m}})}));
+    const scene::Track blue =
+        test::track_of(test::geometry_of({polyline(frame, {{0, -100, blue_m}, {0, 100, blue_m}})}), kTrackBlue);
     for (const bool red_first : {false, true}) {
       const std::string what =
           std::string(red_on_top ? "red" : "blue") + " on top, " + (red_first ? "red" : "blue") + " drawn first";
-      options.tracks = {{&red, kTrackRed, false}, {&blue, kTrackBlue, false}};
-      if (!red_first) std::swap(options.tracks[0], options.tracks[1]);
-      const scene::RgbaImage image = renderer.render(camera, options).image;
+      const scene::TrackSet tracks = red_first ? test::track_set({red, blue}) : test::track_set({blue, red});
+      options.tracks = &tracks;
+      const scene::RgbaImage image = renderer.draw(camera, options).image;
       keep_image(image, std::string("track_crossing_") + (red_on_top ? "red" : "blue") + "_on_top.png");
       const double top_m = red_on_top ? red_m : blue_m;
       for (const double along : {-3.0, 0.0, 3.0})
@@ -101,7 +102,7 @@ bool ridge_hides(const glm::dvec3& eye, const glm::dvec3& point) {
 // occluded alpha where it does not, except within a few pixels of where that changes.
 TEST_F(TrackDepthTest, ATrackThroughARidgeIsOpaqueInFrontAndAGhostBehindIt) {
   test::EastProfileSource ridge("ridge", kRidgeLat, kRidgeLon, ridge_height_m);
-  SceneRenderer renderer({&ridge, nullptr});
+  test::SceneDrawer renderer(&ridge, nullptr);
   const LocalFrame frame(kPlace);
   const scene::Lens lens{40.0, 400, 240};
   const glm::dvec3 eye = frame.point(-3500, -3000, 1900);
@@ -115,13 +116,13 @@ TEST_F(TrackDepthTest, ATrackThroughARidgeIsOpaqueInFrontAndAGhostBehindIt) {
   constexpr float kAlpha = 0.45f;
   std::vector<glm::dvec3> line;
   for (double east = -3000.0; east <= 3000.0; east += 500.0) line.push_back({east, 0.0, kTrackM});
-  const TrackBuffer buffer(test::geometry_of({polyline(frame, line)}));
-  SceneRenderOptions options = test::plain_options(kPlace, 1000.0);
-  options.track_settings.width = {kWidthPx, TrackWidth::Unit::pixels};
-  options.track_settings.occlusion.alpha = kAlpha;
-  options.track_settings.occlusion.fade_near_m = 1.0e5f;
-  options.track_settings.occlusion.fade_far_m = 2.0e5f;
-  const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, line)}))});
+  scene::Scene options = test::plain_scene(kPlace, 1000.0);
+  options.style.tracks.width = {kWidthPx, scene::TrackWidth::Unit::pixels};
+  options.style.tracks.occlusion.alpha = kAlpha;
+  options.style.tracks.occlusion.fade_near_m = 1.0e5f;
+  options.style.tracks.occlusion.fade_far_m = 2.0e5f;
+  const auto images = test::render_both(renderer, camera, options, buffer);
   keep_image(images.with, "track_through_ridge.png");
 
   // Along the track every 5 m: its pixel, and whether the CPU sees the tube's near side there.

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -85,8 +85,8 @@ PixelOnTube pixel_on_tube(const scene::Camera& camera, const LocalFrame& frame, 
 
 // The tube's radius for a width: metres as given, pixels at the depth of the axis point nearest
 // the camera (where every capsule of an east-west line seen from due south takes it).
-double tube_radius_m(const scene::Camera& camera, const LocalFrame& frame, double up_m, const TrackWidth& width) {
-  if (width.unit == TrackWidth::Unit::metres) return 0.5 * width.value;
+double tube_radius_m(const scene::Camera& camera, const LocalFrame& frame, double up_m, const scene::TrackWidth& width) {
+  if (width.unit == scene::TrackWidth::Unit::metres) return 0.5 * width.value;
   const glm::dvec3 eye = camera.position();
   const glm::dvec3 to_axis = frame.point(0.0, 0.0, up_m) - eye;
   const glm::dvec3 nearest = to_axis - frame.axes.east * glm::dot(to_axis, frame.axes.east);
@@ -139,12 +139,12 @@ CoverCount check_cover(const test::WithAndWithout& images, const scene::Camera& 
   return count;
 }
 
-SceneRenderOptions ground_options(const TrackWidth& width) {
-  SceneRenderOptions options = test::plain_options(kPlace, 0.0);
-  options.track_settings.width = width;
-  options.track_settings.occlusion.alpha = kGhostAlpha;
-  options.track_settings.occlusion.fade_near_m = 1.0e5f;  // constant alpha however deep
-  options.track_settings.occlusion.fade_far_m = 2.0e5f;
+scene::Scene ground_options(const scene::TrackWidth& width) {
+  scene::Scene options = test::plain_scene(kPlace, 0.0);
+  options.style.tracks.width = width;
+  options.style.tracks.occlusion.alpha = kGhostAlpha;
+  options.style.tracks.occlusion.fade_near_m = 1.0e5f;  // constant alpha however deep
+  options.style.tracks.occlusion.fade_far_m = 2.0e5f;
   return options;
 }
 
@@ -155,27 +155,27 @@ SceneRenderOptions ground_options(const TrackWidth& width) {
 // also with the distances packed into RGBA8 (the G-buffer without float targets).
 TEST_F(TrackGroundTest, ATrackLyingOnTheGroundIsTheOpaqueTubeOverItsWholeSilhouette) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{30.0, 320, 240};
-  const TrackBuffer buffer(east_west_line(frame, 0.0));
+  const scene::TrackSet buffer = test::track_set({test::track_of(east_west_line(frame, 0.0))});
   struct Case {
-    TrackWidth width;
+    scene::TrackWidth width;
     double distance_m;
     bool shadows;
     DistanceEncoding encoding;
     std::string name;
   };
-  const DistanceEncoding native = renderer.distance_encoding();
+  const DistanceEncoding native = renderer.renderer().distance_encoding();
   for (const Case& c :
-       {Case{{20.0, TrackWidth::Unit::metres}, 300.0, false, native, "20m"},
-        Case{{20.0, TrackWidth::Unit::metres}, 300.0, false, DistanceEncoding::packed_rgba8, "20m_packed"},
-        Case{{14.0, TrackWidth::Unit::pixels}, 600.0, false, native, "14px"},
-        Case{{14.0, TrackWidth::Unit::pixels}, 600.0, true, native, "14px_shadows"}}) {
-    renderer.set_distance_encoding(c.encoding);
+       {Case{{20.0, scene::TrackWidth::Unit::metres}, 300.0, false, native, "20m"},
+        Case{{20.0, scene::TrackWidth::Unit::metres}, 300.0, false, DistanceEncoding::packed_rgba8, "20m_packed"},
+        Case{{14.0, scene::TrackWidth::Unit::pixels}, 600.0, false, native, "14px"},
+        Case{{14.0, scene::TrackWidth::Unit::pixels}, 600.0, true, native, "14px_shadows"}}) {
+    renderer.renderer().set_distance_encoding(c.encoding);
     const scene::Camera camera = looking_north_at(frame, 0.0, c.distance_m, 20.0, lens);
-    SceneRenderOptions options = ground_options(c.width);
-    options.shadows = c.shadows;
-    const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+    scene::Scene options = ground_options(c.width);
+    options.style.shading.shadows = c.shadows;
+    const auto images = test::render_both(renderer, camera, options, buffer);
     keep_image(images.with, "track_on_ground_" + c.name + ".png");
     const double radius_m = tube_radius_m(camera, frame, 0.0, c.width);
     const CoverCount count = check_cover(
@@ -193,12 +193,12 @@ TEST_F(TrackGroundTest, ATrackLyingOnTheGroundIsTheOpaqueTubeOverItsWholeSilhoue
 // it hides all of it: a ghost over the whole silhouette.
 TEST_F(TrackGroundTest, ATrackThreeRadiiBelowTheGroundIsAGhost) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{30.0, 320, 240};
-  const TrackWidth width{20.0, TrackWidth::Unit::metres};
-  const TrackBuffer buffer(east_west_line(frame, -30.0));
+  const scene::TrackWidth width{20.0, scene::TrackWidth::Unit::metres};
+  const scene::TrackSet buffer = test::track_set({test::track_of(east_west_line(frame, -30.0))});
   const scene::Camera camera = looking_north_at(frame, -30.0, 300.0, 30.0, lens);
-  const auto images = test::render_both(renderer, camera, ground_options(width), {{&buffer, kTrackRed, false}});
+  const auto images = test::render_both(renderer, camera, ground_options(width), buffer);
   keep_image(images.with, "track_below_ground.png");
   const CoverCount count = check_cover(
       images, camera, frame, -30.0, 10.0, [](double) { return Expect::ghost; }, true, "3 radii below");
@@ -214,12 +214,12 @@ TEST_F(TrackGroundTest, ATrackUnderARaisedSlabIsAGhostThereAndOpaqueBesideIt) {
   const LocalFrame frame(kPlace);
   test::EastProfileSource slab("slab", kPlace.lat_deg, kPlace.lon_deg,
                                [](double east_m) { return std::abs(east_m) < 80.0 ? 30.0 : 0.0; });
-  SceneRenderer renderer({&slab, nullptr});
+  test::SceneDrawer renderer(&slab, nullptr);
   const scene::Lens lens{30.0, 480, 240};
-  const TrackWidth width{20.0, TrackWidth::Unit::metres};
-  const TrackBuffer buffer(east_west_line(frame, 0.0));
+  const scene::TrackWidth width{20.0, scene::TrackWidth::Unit::metres};
+  const scene::TrackSet buffer = test::track_set({test::track_of(east_west_line(frame, 0.0))});
   const scene::Camera camera = looking_north_at(frame, 0.0, 350.0, 25.0, lens);
-  const auto images = test::render_both(renderer, camera, ground_options(width), {{&buffer, kTrackRed, false}});
+  const auto images = test::render_both(renderer, camera, ground_options(width), buffer);
   keep_image(images.with, "track_under_slab.png");
   const CoverCount count = check_cover(
       images, camera, frame, 0.0, 10.0,

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -31,20 +31,20 @@ int chroma(const std::array<std::uint8_t, 4>& p) {
 TEST_F(TrackHazeTest, AFarTrackKeepsItsColourWhereTheGroundFadesIntoHaze) {
   const scene::GeoPosition place{46.5, 10.0, 0.0};
   const LocalFrame frame(place);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{20.0, 320, 180};
   const glm::dvec3 eye = frame.point(0.0, -25000.0, 1300.0);
   const double pitch = std::atan2(1005.0 - 1300.0, 25000.0) * 180.0 / M_PI;
   const scene::Camera camera(eye, 0.0, pitch, lens, scene::DepthRange{100.0, 1.0e5});
-  const TrackBuffer buffer(
-      test::geometry_of({test::polyline(frame, {{-3000.0, 0.0, 1005.0}, {3000.0, 0.0, 1005.0}})}));
-  SceneRenderOptions options = test::plain_options(place, 1000.0);
-  options.track_settings.width = {8.0, TrackWidth::Unit::pixels};
-  options.tracks = {{&buffer, test::kTrackRed, false}};
-  options.atmosphere = false;
-  const scene::RgbaImage clear = renderer.render(camera, options).image;
-  options.atmosphere = true;
-  const scene::RgbaImage hazy = renderer.render(camera, options).image;
+  const scene::TrackSet buffer = test::track_set(
+      {test::track_of(test::geometry_of({test::polyline(frame, {{-3000.0, 0.0, 1005.0}, {3000.0, 0.0, 1005.0}})}))});
+  scene::Scene options = test::plain_scene(place, 1000.0);
+  options.style.tracks.width = {8.0, scene::TrackWidth::Unit::pixels};
+  options.tracks = &buffer;
+  options.style.shading.atmosphere = false;
+  const scene::RgbaImage clear = renderer.draw(camera, options).image;
+  options.style.shading.atmosphere = true;
+  const scene::RgbaImage hazy = renderer.draw(camera, options).image;
   keep_image(hazy, "track_haze.png");
 
   // The track's centre row: the reddest row of the clear picture's middle column.

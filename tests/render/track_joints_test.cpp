@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -35,16 +35,16 @@ class TrackJointsTest : public GlTest {
  protected:
   // The picture with the tracks and without, from 300 m above the ground, 400 m above the track.
   test::WithAndWithout render(const std::vector<scene::TrackPolyline>& segments, const std::string& name) {
-    SceneRenderer renderer({nullptr, nullptr});
+    test::SceneDrawer renderer(nullptr, nullptr);
     scene::TrackGeometry geometry;
     geometry.segments = segments;
-    const TrackBuffer buffer(geometry);
-    SceneRenderOptions options = test::plain_options(kPlace, kGroundM);
-    options.track_settings.width = {6.0, TrackWidth::Unit::metres};
-    options.track_settings.occlusion.alpha = kAlpha;
-    options.track_settings.occlusion.fade_near_m = 1.0e6f;
-    options.track_settings.occlusion.fade_far_m = 2.0e6f;
-    auto images = test::render_both(renderer, camera(), options, {{&buffer, kTrackRed, false}});
+    const scene::TrackSet buffer = test::track_set({test::track_of(geometry)});
+    scene::Scene options = test::plain_scene(kPlace, kGroundM);
+    options.style.tracks.width = {6.0, scene::TrackWidth::Unit::metres};
+    options.style.tracks.occlusion.alpha = kAlpha;
+    options.style.tracks.occlusion.fade_near_m = 1.0e6f;
+    options.style.tracks.occlusion.fade_far_m = 2.0e6f;
+    auto images = test::render_both(renderer, camera(), options, buffer);
     keep_image(images.with, name);
     return images;
   }

@@ -15,7 +15,7 @@
 
 #include "gl_test_support.hpp"
 #include "scene/colormap.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -29,7 +29,7 @@ using test::kTrackRed;
 using test::LocalFrame;
 using test::looking_down;
 using test::pixel_of;
-using test::plain_options;
+using test::plain_scene;
 using test::polyline;
 using test::render_both;
 using test::track_alpha;
@@ -43,10 +43,10 @@ double silhouette_width_px(double radius_m, double distance_m) {
   return 2.0 * radius_m * test::focal_length_px(kLens) / std::sqrt(distance_m * distance_m - radius_m * radius_m);
 }
 
-TrackSceneSettings width_settings(double value, TrackWidth::Unit unit) {
-  TrackSceneSettings settings;
-  settings.width = {value, unit};
-  return settings;
+scene::TrackStyle width_settings(double value, scene::TrackWidth::Unit unit) {
+  scene::TrackStyle style;
+  style.width = {value, unit};
+  return style;
 }
 
 // The red track's footprint: alpha summed over the picture, and how many columns and rows hold a
@@ -84,12 +84,12 @@ class TrackPassTest : public GlTest {};
 // An 8 m tube 200 m below the camera, running east-west across the whole picture, seen square-on.
 TEST_F(TrackPassTest, AMetreWideTubeIsTwoRFOverDPixelsWide) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  const TrackBuffer buffer(test::geometry_of({polyline(frame, {{-150, 0, 800}, {150, 0, 800}})}));
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
-  const auto images = render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{-150, 0, 800}, {150, 0, 800}})}))});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
+  const auto images = render_both(renderer, camera, options, buffer);
   keep_image(images.with, "track_width_8m.png");
 
   const double expected = silhouette_width_px(4.0, 200.0);  // 17.9 px
@@ -104,16 +104,16 @@ TEST_F(TrackPassTest, AMetreWideTubeIsTwoRFOverDPixelsWide) {
 // `--width 9px`: 9 pixels wide 200 m away and 5 km away.
 TEST_F(TrackPassTest, APixelWideTubeKeepsItsWidthAtAnyDistance) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   // Cut into 100 m segments: one 8 km segment has ragged edges (ALongSegmentHasStraightEdges).
   std::vector<glm::dvec3> line;
   for (double east = -4000.0; east <= 4000.0; east += 100.0) line.push_back({east, 0, 800});
-  const TrackBuffer buffer(test::geometry_of({polyline(frame, line)}));
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(9.0, TrackWidth::Unit::pixels);
+  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, line)}))});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(9.0, scene::TrackWidth::Unit::pixels);
   for (const double distance : {200.0, 5000.0}) {
     const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 800.0 + distance}, kLens, distance / 20.0);
-    const auto images = render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+    const auto images = render_both(renderer, camera, options, buffer);
     keep_image(images.with, "track_width_9px_" + std::to_string(static_cast<int>(distance)) + "m.png");
     for (std::uint32_t x = 10; x < kLens.width_px - 10; x += 15)
       EXPECT_NEAR(column_alpha(images.with, images.without, x), 9.0, 1.0) << distance << " m away, column " << x;
@@ -126,17 +126,17 @@ TEST_F(TrackPassTest, APixelWideTubeKeepsItsWidthAtAnyDistance) {
 // and would make the long segment's edges ragged).
 TEST_F(TrackPassTest, ALongSegmentHasStraightEdges) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   std::vector<glm::dvec3> cut;
   for (double east = -4000.0; east <= 4000.0; east += 100.0) cut.push_back({east, 0, 800});
-  const TrackBuffer one(test::geometry_of({polyline(frame, {{-4000, 0, 800}, {4000, 0, 800}})}));
-  const TrackBuffer many(test::geometry_of({polyline(frame, cut)}));
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(9.0, TrackWidth::Unit::pixels);
+  const scene::TrackSet one = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{-4000, 0, 800}, {4000, 0, 800}})}))});
+  const scene::TrackSet many = test::track_set({test::track_of(test::geometry_of({polyline(frame, cut)}))});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(9.0, scene::TrackWidth::Unit::pixels);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 5800.0}, kLens, 250.0);
-  for (const TrackBuffer* buffer : {&many, &one}) {
+  for (const scene::TrackSet* buffer : {&many, &one}) {
     const std::string what = buffer == &one ? "one 8 km segment" : "80 segments of 100 m";
-    const auto images = render_both(renderer, camera, options, {{buffer, kTrackRed, false}});
+    const auto images = render_both(renderer, camera, options, *buffer);
     keep_image(images.with, buffer == &one ? "track_long_segment.png" : "track_cut_segments.png");
     double least = 1.0e9, most = 0.0;
     for (std::uint32_t x = 10; x < kLens.width_px - 10; ++x) {
@@ -152,15 +152,15 @@ TEST_F(TrackPassTest, ALongSegmentHasStraightEdges) {
 // holds a half-covered pixel. The track runs 30 degrees off east, so it crosses rows too.
 TEST_F(TrackPassTest, ADistantThinTubeKeepsTheMinimumWidthWithoutGaps) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const double c = std::cos(M_PI / 6.0), s = std::sin(M_PI / 6.0);
-  const TrackBuffer buffer(
-      test::geometry_of({polyline(frame, {{-5000 * c, -5000 * s, 10}, {5000 * c, 5000 * s, 10}})}));
+  const scene::TrackSet buffer = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, {{-5000 * c, -5000 * s, 10}, {5000 * c, 5000 * s, 10}})}))});
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 20010.0}, kLens, 1000.0);
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(1.0, TrackWidth::Unit::metres);
-  ASSERT_DOUBLE_EQ(options.track_settings.min_width_px, 1.5);
-  const auto images = render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(1.0, scene::TrackWidth::Unit::metres);
+  ASSERT_DOUBLE_EQ(options.style.tracks.min_width_px, 1.5);
+  const auto images = render_both(renderer, camera, options, buffer);
   keep_image(images.with, "track_min_width.png");
 
   std::uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -181,12 +181,12 @@ TEST_F(TrackPassTest, ADistantThinTubeKeepsTheMinimumWidthWithoutGaps) {
 // of its near end's silhouette radius, not the far end's and not a square.
 TEST_F(TrackPassTest, ASegmentSeenEndOnIsARoundDiscOfItsNearEnd) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  const TrackBuffer buffer(test::geometry_of({polyline(frame, {{0, 0, 800}, {0, 0, 700}})}));
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
-  const auto images = render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{0, 0, 800}, {0, 0, 700}})}))});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
+  const auto images = render_both(renderer, camera, options, buffer);
   keep_image(images.with, "track_end_on.png");
   // The near end's cap: a sphere of 4 m radius 200 m away (the far end's would be 6 px).
   expect_disc(footprint(images), 0.5 * silhouette_width_px(4.0, 200.0), "end-on");
@@ -196,26 +196,26 @@ TEST_F(TrackPassTest, ASegmentSeenEndOnIsARoundDiscOfItsNearEnd) {
 // the halves show turbo at 0.5 and at 1.0, as the same tube drawn in those solid colours does.
 TEST_F(TrackPassTest, ValuesPickTheirColormapColours) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   const std::vector<glm::dvec3> points{{-150, 0, 800}, {-110, 0, 800}, {-70, 0, 800}, {-40, 0, 800},
                                        {40, 0, 800},   {70, 0, 800},   {110, 0, 800}, {150, 0, 800}};
-  const TrackBuffer valued(test::geometry_of({polyline(frame, points, {10, 10, 10, 10, 20, 20, 20, 20})}));
-  const TrackBuffer plain(test::geometry_of({polyline(frame, points)}));
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
-  options.track_settings.colormap = scene::Colormap::turbo;
-  options.track_settings.value_min = 0.0f;
-  options.track_settings.value_max = 20.0f;
-  options.tracks = {{&valued, kTrackRed, true}};
-  const scene::RgbaImage by_value = renderer.render(camera, options).image;
+  const scene::TrackSet valued = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, points, {10, 10, 10, 10, 20, 20, 20, 20})}), kTrackRed, true)});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
+  options.style.tracks.colormap = scene::Colormap::turbo;
+  options.color_range = track::ValueRange{0.0, 20.0};
+  options.tracks = &valued;
+  const scene::RgbaImage by_value = renderer.draw(camera, options).image;
   keep_image(by_value, "track_by_value.png");
 
   const glm::vec3 half = scene::colormap_color(scene::Colormap::turbo, 0.5f), full = scene::colormap_color(scene::Colormap::turbo, 1.0f);
   ASSERT_GT(glm::length(half - full), 0.3f) << "the two colours must be told apart";
   for (const auto& [east, colour] : {std::pair{-60.0, half}, std::pair{60.0, full}}) {
-    options.tracks = {{&plain, colour, false}};
-    const scene::RgbaImage solid = renderer.render(camera, options).image;
+    const scene::TrackSet plain = test::track_set({test::track_of(test::geometry_of({polyline(frame, points)}), colour)});
+    options.tracks = &plain;
+    const scene::RgbaImage solid = renderer.draw(camera, options).image;
     std::uint32_t x = 0, y = 0;
     ASSERT_TRUE(pixel_of(camera, frame.point(east, 0, 800), x, y));
     // Across the tube's middle (lit alike in both pictures): the same colour.
@@ -229,29 +229,30 @@ TEST_F(TrackPassTest, ValuesPickTheirColormapColours) {
 
 // Nothing to draw: the picture is the picture without tracks.
 TEST_F(TrackPassTest, AnEmptyTrackDrawsNothing) {
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   scene::TrackGeometry empty_segment;
   empty_segment.segments.emplace_back();
   const TrackBuffer none{scene::TrackGeometry{}}, hollow(empty_segment);
   EXPECT_EQ(none.point_count(), 0u);
   EXPECT_TRUE(hollow.segments().empty());
-  const auto images = render_both(renderer, camera, plain_options(kPlace, 0.0),
-                                  {{&none, kTrackRed, false}, {&hollow, kTrackRed, false}});
+  const scene::TrackSet tracks =
+      test::track_set({test::track_of(scene::TrackGeometry{}), test::track_of(empty_segment)});
+  const auto images = render_both(renderer, camera, plain_scene(kPlace, 0.0), tracks);
   EXPECT_EQ(images.with.rgba, images.without.rgba);
 }
 
 // A segment of one point, and one of two identical points: a sphere, a round disc.
 TEST_F(TrackPassTest, OnePointAndTwoIdenticalPointsDrawASphere) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(8.0, TrackWidth::Unit::metres);
-  const TrackBuffer one(test::geometry_of({polyline(frame, {{20, 10, 800}})}));
-  const TrackBuffer two(test::geometry_of({polyline(frame, {{20, 10, 800}, {20, 10, 800}})}));
-  for (const TrackBuffer* buffer : {&one, &two}) {
-    const auto images = render_both(renderer, camera, options, {{buffer, kTrackRed, false}});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
+  const scene::TrackSet one = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{20, 10, 800}})}))});
+  const scene::TrackSet two = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{20, 10, 800}, {20, 10, 800}})}))});
+  for (const scene::TrackSet* buffer : {&one, &two}) {
+    const auto images = render_both(renderer, camera, options, *buffer);
     const std::string what = buffer == &one ? "one point" : "two identical points";
     keep_image(images.with, buffer == &one ? "track_one_point.png" : "track_two_points.png");
     std::uint32_t x = 0, y = 0;
@@ -265,7 +266,7 @@ TEST_F(TrackPassTest, OnePointAndTwoIdenticalPointsDrawASphere) {
 // 100,000 points on a circle (49 texture rows, 391 block origins): the ring is whole.
 TEST_F(TrackPassTest, AHundredThousandPointsDrawAWholeRing) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
   constexpr int kPoints = 100000;
   constexpr double kRadius = 40.0;
@@ -274,12 +275,14 @@ TEST_F(TrackPassTest, AHundredThousandPointsDrawAWholeRing) {
     const double a = 2.0 * M_PI * i / (kPoints - 1);
     ring.push_back({kRadius * std::cos(a), kRadius * std::sin(a), 800.0});
   }
-  const TrackBuffer buffer(test::geometry_of({polyline(frame, ring)}));
-  EXPECT_EQ(buffer.point_count(), static_cast<std::size_t>(kPoints));
-  EXPECT_LE(buffer.gpu_bytes(), 20u * kPoints) << "the issue's memory budget";
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(4.0, TrackWidth::Unit::metres);
-  const auto images = render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  const scene::TrackGeometry geometry = test::geometry_of({polyline(frame, ring)});
+  const TrackBuffer uploaded(geometry);
+  EXPECT_EQ(uploaded.point_count(), static_cast<std::size_t>(kPoints));
+  EXPECT_LE(uploaded.gpu_bytes(), 20u * kPoints) << "the issue's memory budget";
+  const scene::TrackSet buffer = test::track_set({test::track_of(geometry)});
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(4.0, scene::TrackWidth::Unit::metres);
+  const auto images = render_both(renderer, camera, options, buffer);
   keep_image(images.with, "track_100k_ring.png");
   for (int degree = 0; degree < 360; ++degree) {
     const double a = degree * M_PI / 180.0;
@@ -295,19 +298,16 @@ TEST_F(TrackPassTest, AHundredThousandPointsDrawAWholeRing) {
 // 200 tracks, each its own buffer: every one is drawn, and the ground between them is not.
 TEST_F(TrackPassTest, TwoHundredTracksAreAllDrawn) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  std::vector<TrackBuffer> buffers;
-  buffers.reserve(200);
-  std::vector<TrackDraw> draws;
+  scene::TrackSet draws;
   for (int j = 0; j < 10; ++j)
     for (int i = 0; i < 20; ++i) {
       const double east = -60.0 + 6.0 * i, north = -45.0 + 10.0 * j;
-      buffers.emplace_back(test::geometry_of({polyline(frame, {{east - 2, north, 800}, {east + 2, north, 800}})}));
-      draws.push_back({&buffers.back(), kTrackRed, false});
+      draws.add(test::track_of(test::geometry_of({polyline(frame, {{east - 2, north, 800}, {east + 2, north, 800}})})));
     }
-  SceneRenderOptions options = plain_options(kPlace, 0.0);
-  options.track_settings = width_settings(1.0, TrackWidth::Unit::metres);
+  scene::Scene options = plain_scene(kPlace, 0.0);
+  options.style.tracks = width_settings(1.0, scene::TrackWidth::Unit::metres);
   const auto images = render_both(renderer, camera, options, draws);
   keep_image(images.with, "track_200_tracks.png");
   for (int j = 0; j < 10; ++j)

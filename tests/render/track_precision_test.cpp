@@ -10,7 +10,7 @@
 
 #include "geo/wgs84.hpp"
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -36,18 +36,18 @@ class TrackPrecisionTest : public GlTest {
   // constant; rounding makes it wander.
   static std::vector<double> centroid_errors(const LocalFrame& frame, const scene::TrackGeometry& geometry,
                                              const std::string& name) {
-    SceneRenderer renderer({nullptr, nullptr});
-    const TrackBuffer buffer(geometry);
+    test::SceneDrawer renderer(nullptr, nullptr);
+    const scene::TrackSet buffer = test::track_set({test::track_of(geometry)});
     const geo::Geodetic origin = geo::geodetic_from_ecef(frame.origin);
     const scene::GeoPosition place{origin.lat_deg, origin.lon_deg, origin.height_m};
-    SceneRenderOptions options = test::plain_options(place, 0.0);
-    options.track_settings.width = {0.2, TrackWidth::Unit::metres};
+    scene::Scene options = test::plain_scene(place, 0.0);
+    options.style.tracks.width = {0.2, scene::TrackWidth::Unit::metres};
     std::vector<double> errors;
     for (int step = 0; step <= kSteps; ++step) {
       const double east = -0.5 + kStepM * step;
       const scene::Camera camera(frame.point(east, 0.0, kTrackM + kAboveM), 0.0, -90.0, kLens,
-                                 scene::DepthRange{0.5, 1.0e5});
-      const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+                          scene::DepthRange{0.5, 1.0e5});
+      const auto images = test::render_both(renderer, camera, options, buffer);
       if (step == 0) keep_image(images.with, name);
       double sum = 0.0, weighted = 0.0;
       for (std::uint32_t y = kLens.height_px / 2 - 20; y < kLens.height_px / 2 + 20; ++y)

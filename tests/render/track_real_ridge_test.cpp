@@ -13,7 +13,7 @@
 
 #include "geo/wgs84.hpp"
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "terrain/height_sampler.hpp"
@@ -57,7 +57,7 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
   auto source = terrain::open_height_source(settings, {});
   ASSERT_TRUE(source);
   terrain::HeightSampler sampler(*source);
-  SceneRenderer renderer({source.get(), nullptr});
+  test::SceneDrawer renderer(source.get(), nullptr);
 
   constexpr double kLat = 46.71, kTrackM = 1200.0, kWidthPx = 5.0;
   constexpr float kAlpha = 0.45f;
@@ -72,14 +72,14 @@ TEST_F(TrackRealRidgeTest, ATrackThroughARealRidgeIsOpaqueInFrontAndAGhostBehind
   for (double lon = 7.840; lon <= 7.9101; lon += 0.001)
     line.points_ecef.push_back(scene::ecef_from({kLat, lon, kTrackM}));
   geometry.segments.push_back(line);
-  const TrackBuffer buffer(geometry);
-  SceneRenderOptions options = test::plain_options({kLat, 7.87, 0.0}, 560.0);
-  options.track_settings.width = {kWidthPx, TrackWidth::Unit::pixels};
-  options.track_settings.occlusion.alpha = kAlpha;
-  options.track_settings.occlusion.fade_near_m = 1.0e5f;  // constant alpha however deep
-  options.track_settings.occlusion.fade_far_m = 2.0e5f;
-  options.track_settings.cast_shadows = false;
-  const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+  const scene::TrackSet buffer = test::track_set({test::track_of(geometry)});
+  scene::Scene options = test::plain_scene({kLat, 7.87, 0.0}, 560.0);
+  options.style.tracks.width = {kWidthPx, scene::TrackWidth::Unit::pixels};
+  options.style.tracks.occlusion.alpha = kAlpha;
+  options.style.tracks.occlusion.fade_near_m = 1.0e5f;  // constant alpha however deep
+  options.style.tracks.occlusion.fade_far_m = 2.0e5f;
+  options.style.tracks.cast_shadows = false;
+  const auto images = test::render_both(renderer, camera, options, buffer);
   keep_image(images.with, "track_through_real_ridge.png");
 
   // Every 10 m along the track: its pixel, and whether the CPU sees the tube's near side.

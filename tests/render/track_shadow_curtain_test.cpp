@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
@@ -35,20 +35,20 @@ class TrackShadowCurtainTest : public GlTest {};
 // the track casts shadows; 28.9 m south and 60 m north it does not.
 TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 50.0);
-  const TrackBuffer buffer(test::geometry_of({polyline(frame, {{-300, 0, 50}, {300, 0, 50}})}));
-  SceneRenderOptions options = test::plain_options(kPlace, 0.0);
+  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{-300, 0, 50}, {300, 0, 50}})}))});
+  scene::Scene options = test::plain_scene(kPlace, 0.0);
   options.sun_direction_ecef = test::sun_from(kPlace.lat_deg, kPlace.lon_deg, 180.0, 60.0);
-  options.shadows = true;
-  options.tracks = {{&buffer, kTrackRed, false}};
-  options.track_settings.width = {8.0, TrackWidth::Unit::metres};
-  options.track_settings.cast_shadows = true;
-  const RenderedScene shadowed = renderer.render(camera, options);
+  options.style.shading.shadows = true;
+  options.tracks = &buffer;
+  options.style.tracks.width = {8.0, scene::TrackWidth::Unit::metres};
+  options.style.tracks.cast_shadows = true;
+  const test::Drawn shadowed = renderer.draw(camera, options);
   keep_image(shadowed.image, "track_shadow.png");
   ASSERT_TRUE(shadowed.report.shadows_drawn);
-  options.track_settings.cast_shadows = false;
-  const scene::RgbaImage unshadowed = renderer.render(camera, options).image;
+  options.style.tracks.cast_shadows = false;
+  const scene::RgbaImage unshadowed = renderer.draw(camera, options).image;
 
   const double shadow_north = 50.0 / std::tan(60.0 * M_PI / 180.0);
   for (const double east : {-50.0, 0.0, 50.0}) {
@@ -70,21 +70,21 @@ TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
 // changes.
 TEST_F(TrackShadowCurtainTest, TheCurtainHangsFromTheTrackToTheGround) {
   const LocalFrame frame(kPlace);
-  SceneRenderer renderer({nullptr, nullptr});
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera(frame.point(0, -400, 150), 0.0, -10.0, kLens, scene::DepthRange{10.0, 1.0e5});
   scene::TrackPolyline line = polyline(frame, {{-100, 0, 100}, {-30, 0, 100}, {40, 0, 100}, {100, 0, 100}});
   line.heights_above_ground_m = {100.0f, 100.0f, 100.0f, 100.0f};
-  const TrackBuffer buffer(test::geometry_of({line}));
-  ASSERT_TRUE(buffer.has_drops());
-  SceneRenderOptions options = test::plain_options(kPlace, 0.0);
-  options.track_settings.width = {3.0, TrackWidth::Unit::metres};
-  options.track_settings.curtain_alpha = 0.3f;
+  ASSERT_TRUE(TrackBuffer(test::geometry_of({line})).has_drops());
+  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({line}))});
+  scene::Scene options = test::plain_scene(kPlace, 0.0);
+  options.style.tracks.width = {3.0, scene::TrackWidth::Unit::metres};
+  options.style.tracks.curtain_alpha = 0.3f;
 
   const std::vector<glm::dvec3> on_wall{{-80, 0, 20}, {-30, 0, 50}, {0, 0, 10}, {40, 0, 80}, {80, 0, 50}};
   const std::vector<glm::dvec3> off_wall{{0, 0, 115}, {-60, 0, 130}, {120, 0, 50}, {-120, 0, 20}};
   for (const bool curtain : {true, false}) {
-    options.track_settings.curtain = curtain;
-    const auto images = test::render_both(renderer, camera, options, {{&buffer, kTrackRed, false}});
+    options.style.tracks.curtain = curtain;
+    const auto images = test::render_both(renderer, camera, options, buffer);
     keep_image(images.with, curtain ? "track_curtain.png" : "track_no_curtain.png");
     for (const glm::dvec3& p : on_wall) {
       std::uint32_t x = 0, y = 0;
@@ -92,7 +92,7 @@ TEST_F(TrackShadowCurtainTest, TheCurtainHangsFromTheTrackToTheGround) {
       const double a = track_alpha(images.with, images.without, x, y);
       if (curtain) {
         EXPECT_GT(a, 0.1) << "no wall at (" << p.x << ", " << p.z << ") m";
-        EXPECT_LT(a, options.track_settings.curtain_alpha + 0.03)
+        EXPECT_LT(a, options.style.tracks.curtain_alpha + 0.03)
             << "the wall blended twice at (" << p.x << ", " << p.z << ") m";
         EXPECT_GT(images.with.pixel(x, y)[0], images.with.pixel(x, y)[1]) << "the wall is not red";
       } else {

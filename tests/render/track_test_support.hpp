@@ -24,8 +24,8 @@
 
 #include "scene/camera.hpp"
 #include "render/gl/framebuffer_readback.hpp"
-#include "render/scene_renderer.hpp"
-#include "render/passes/track_buffer.hpp"
+#include "scene/scene.hpp"
+#include "scene/track_set.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render::test {
@@ -88,16 +88,31 @@ inline scene::Camera looking_down(const scene::GeoPosition& at, const scene::Len
   return scene::Camera(scene::ecef_from(at), 0.0, -90.0, lens, scene::DepthRange{near_m, far_m});
 }
 
-// Options for a geometric check over the flat neutral ground at `ground_m`: the sun high in the
+// A scene for a geometric check over the flat neutral ground at `ground_m`: the sun high in the
 // south, no SSAO, no atmosphere (flat sky, no haze), no shadows.
-inline SceneRenderOptions plain_options(const scene::GeoPosition& place, double ground_m) {
-  SceneRenderOptions options;
-  options.neutral_ground_height_m = ground_m;
-  options.sun_direction_ecef = sun_from(place.lat_deg, place.lon_deg, 180.0, 60.0);
-  options.ssao = false;
-  options.atmosphere = false;
-  options.shadows = false;
-  return options;
+inline scene::Scene plain_scene(const scene::GeoPosition& place, double ground_m) {
+  scene::Scene s = lit_scene(sun_from(place.lat_deg, place.lon_deg, 180.0, 60.0), ground_m);
+  s.style.shading.ssao = false;
+  s.style.shading.atmosphere = false;
+  s.style.shading.shadows = false;
+  return s;
+}
+
+// A track of a scene: its geometry, drawn in a solid colour or by its values.
+inline scene::Track track_of(scene::TrackGeometry geometry, const glm::vec3& color_srgb = kTrackRed,
+                             bool by_value = false) {
+  scene::Track t;
+  t.geometry = std::move(geometry);
+  t.color_srgb = color_srgb;
+  t.by_value = by_value;
+  return t;
+}
+
+// A set of tracks, drawn in this order.
+inline scene::TrackSet track_set(std::initializer_list<scene::Track> tracks) {
+  scene::TrackSet set;
+  for (const scene::Track& t : tracks) set.add(t);
+  return set;
 }
 
 // The red track's alpha at a pixel (see the file comment): 1 - green / green without tracks,
@@ -133,17 +148,17 @@ inline bool pixel_of(const scene::Camera& camera, const glm::dvec3& ecef, std::u
   return true;
 }
 
-// Renders the scene without tracks and with them (same options otherwise).
+// Draws the scene without tracks and with them (the same scene otherwise).
 struct WithAndWithout {
   scene::RgbaImage with, without;
 };
-inline WithAndWithout render_both(SceneRenderer& renderer, const scene::Camera& camera, SceneRenderOptions options,
-                                  std::vector<TrackDraw> tracks) {
+inline WithAndWithout render_both(SceneDrawer& drawer, const scene::Camera& camera, scene::Scene scene,
+                                  const scene::TrackSet& tracks) {
   WithAndWithout out;
-  options.tracks.clear();
-  out.without = renderer.render(camera, options).image;
-  options.tracks = std::move(tracks);
-  out.with = renderer.render(camera, options).image;
+  scene.tracks = nullptr;
+  out.without = drawer.draw(camera, scene).image;
+  scene.tracks = &tracks;
+  out.with = drawer.draw(camera, scene).image;
   return out;
 }
 

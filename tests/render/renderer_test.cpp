@@ -1,6 +1,6 @@
 // The first terrain pictures, headless (llvmpipe in CI), small: where a real peak lands, which
 // slope the sun lights, the neutral ground without a source.
-#include "render/scene_renderer.hpp"
+#include "render/renderer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -67,11 +67,11 @@ class HalvesImagery : public terrain::ImagerySource {
   terrain::SourceInfo info_;
 };
 
-class SceneRendererTest : public GlTest {};
+class RendererTest : public GlTest {};
 
-TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
+TEST_F(RendererTest, TheSunLightsTheSlopeFacingIt) {
   RidgeSource ridge;
-  SceneRenderer renderer({&ridge, nullptr});
+  test::SceneDrawer renderer(&ridge, nullptr);
   const scene::Lens lens{45.0, 240, 135};
   const auto camera = scene::camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, lens, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
@@ -81,9 +81,9 @@ TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   const auto east = camera.value->project(scene::ecef_from({kRidgeLat, kRidgeLon + deg_per_km, 1400.0}));
   ASSERT_TRUE(west && east);
 
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 270.0, 30.0);
-  const RenderedScene from_west = renderer.render(*camera.value, options);
+  const test::Drawn from_west = renderer.draw(*camera.value, options);
   keep_image(from_west.image, "ridge_sun_west.png");
   EXPECT_GT(from_west.report.tiles_with_data, 0u);
   EXPECT_EQ(from_west.image.width, 240u);
@@ -92,7 +92,7 @@ TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   EXPECT_GT(west_lit, east_dark + 40.0) << "sun in the west: west slope " << west_lit << ", east slope " << east_dark;
 
   options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 90.0, 30.0);
-  const RenderedScene from_east = renderer.render(*camera.value, options);
+  const test::Drawn from_east = renderer.draw(*camera.value, options);
   keep_image(from_east.image, "ridge_sun_east.png");
   const double west_dark = mean_luminance(from_east.image, west->x_px, west->y_px, 2);
   const double east_lit = mean_luminance(from_east.image, east->x_px, east->y_px, 2);
@@ -107,15 +107,15 @@ TEST_F(SceneRendererTest, TheSunLightsTheSlopeFacingIt) {
   EXPECT_GT(p[1], p[2]);
 }
 
-TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
+TEST_F(RendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
   RidgeSource ridge;
   HalvesImagery imagery;
-  SceneRenderer renderer({&ridge, &imagery});
+  test::SceneDrawer renderer(&ridge, &imagery);
   const auto camera = scene::camera_at({{kRidgeLat, kRidgeLon, 9000.0}, 0.0, -90.0}, scene::Lens{45.0, 160, 90}, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
   options.sun_direction_ecef = sun_from(kRidgeLat, kRidgeLon, 180.0, 89.0);
-  const RenderedScene scene = renderer.render(*camera.value, options);
+  const test::Drawn scene = renderer.draw(*camera.value, options);
   keep_image(scene.image, "ridge_imagery.png");
   EXPECT_GT(scene.report.imagery_tiles_used, 0u);
   EXPECT_EQ(scene.report.imagery_tiles_used, scene.report.tiles_drawn);
@@ -132,16 +132,16 @@ TEST_F(SceneRendererTest, ImageryFromAnAncestorTileLandsWhereItBelongs) {
   }
 }
 
-TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
-  SceneRenderer renderer({nullptr, nullptr});
+TEST_F(RendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{45.0, 160, 90};
   const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 30.0, -10.0}, lens, 500.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
-  options.neutral_ground_height_m = 500.0;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
+  options.neutral_ground_m = 500.0;
   options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
-  options.atmosphere = false;  // the flat sky, and ground colours without haze
-  const RenderedScene scene = renderer.render(*camera.value, options);
+  options.style.shading.atmosphere = false;  // the flat sky, and ground colours without haze
+  const test::Drawn scene = renderer.draw(*camera.value, options);
   keep_image(scene.image, "neutral_ground.png");
   EXPECT_GT(scene.report.tiles_drawn, 0u);
   EXPECT_EQ(scene.report.tiles_with_data, 0u);
@@ -162,16 +162,16 @@ TEST_F(SceneRendererTest, WithoutASourceTheNeutralGroundMeetsTheSky) {
 
 // Flat ground at the ellipsoid from 1500 m with a level camera: the ground meets the sky on the
 // ellipsoid's horizon row (earth curvature: 1.24 degrees below the horizontal), column by column.
-TEST_F(SceneRendererTest, FlatGroundMeetsTheSkyOnTheHorizonRowOfTheCurvedEarth) {
-  SceneRenderer renderer({nullptr, nullptr});
+TEST_F(RendererTest, FlatGroundMeetsTheSkyOnTheHorizonRowOfTheCurvedEarth) {
+  test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Lens lens{20.0, 320, 180};
   const auto camera = scene::camera_at({{47.0, 8.0, 1500.0}, 30.0, 0.0}, lens, 0.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
-  SceneRenderOptions options;
-  options.neutral_ground_height_m = 0.0;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
+  options.neutral_ground_m = 0.0;
   options.sun_direction_ecef = sun_from(47.0, 8.0, 180.0, 60.0);
-  options.atmosphere = false;  // haze would blend the far ground into the sky at the horizon
-  const RenderedScene scene = renderer.render(*camera.value, options);
+  options.style.shading.atmosphere = false;  // haze would blend the far ground into the sky at the horizon
+  const test::Drawn scene = renderer.draw(*camera.value, options);
   keep_image(scene.image, "horizon.png");
   for (const std::uint32_t x : {0u, 100u, 160u, 319u}) {
     const auto horizon = camera.value->horizon_row_px(x + 0.5);
@@ -187,13 +187,13 @@ TEST_F(SceneRendererTest, FlatGroundMeetsTheSkyOnTheHorizonRowOfTheCurvedEarth) 
 // the DEM's northern edge; found with GDAL over the whole raster), seen from 6.7 km south at its
 // own height: nothing in front of it is higher, and behind it there is only the neutral ground
 // 1440 m lower, so it is the top of the terrain in its pixel column.
-TEST_F(SceneRendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
+TEST_F(RendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
   TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
   terrain::SourceSettings settings;
   settings.source = dem.string();
   auto source = terrain::open_height_source(settings, {});
   ASSERT_TRUE(source);
-  SceneRenderer renderer({source.get(), nullptr});
+  test::SceneDrawer renderer(source.get(), nullptr);
   const scene::GeoPosition peak{46.734190, 7.919397, 2004.23};
   const scene::Lens lens{20.0, 320, 180};
   const auto camera = scene::camera_at({{peak.lat_deg - 0.06, peak.lon_deg, peak.height_m}, 0.0, -3.0}, lens, 560.0);
@@ -202,14 +202,14 @@ TEST_F(SceneRendererTest, TheHighestPeakOfARealDemProjectsToItsPixel) {
   ASSERT_TRUE(expected);
   ASSERT_GT(expected->y_px, 10.0);
 
-  SceneRenderOptions options;
-  options.neutral_ground_height_m = 560.0;
+  scene::Scene options = test::lit_scene(glm::dvec3(0.0, 0.0, 1.0));
+  options.neutral_ground_m = 560.0;
   options.sun_direction_ecef = sun_from(peak.lat_deg, peak.lon_deg, 180.0, 50.0);
-  options.atmosphere = false;  // the silhouette against the flat sky
-  const RenderedScene scene = renderer.render(*camera.value, options);
+  options.style.shading.atmosphere = false;  // the silhouette against the flat sky
+  const test::Drawn scene = renderer.draw(*camera.value, options);
   keep_image(scene.image, "interlaken_peak.png");
   EXPECT_GT(scene.report.tiles_with_data, 0u);
-  EXPECT_FALSE(scene.report.timed_out);
+  EXPECT_FALSE(scene.report.terrain.timed_out);
   const auto column = static_cast<std::uint32_t>(expected->x_px);
   std::uint32_t top = 0;
   while (top < 180 && is_sky(scene.image.pixel(column, top))) ++top;
