@@ -14,6 +14,41 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Consecutive track points share tiles: the work cut into batches of at most `tiles_per_batch`
+// containing tiles, so a long flight never holds all its tiles in memory at once.
+std::vector<std::vector<std::size_t>> batches_by_tile(std::span<const geo::LatLon> points,
+                                                      const std::vector<std::size_t>& todo, int zoom,
+                                                      std::size_t tiles_per_batch) {
+  std::vector<std::vector<std::size_t>> batches;
+  std::unordered_set<TileId> tiles;
+  for (std::size_t i : todo) {
+    const auto tile = geo::tile_containing(points[i].lat, points[i].lon, zoom);
+    if (!tile) continue;
+    if (!tiles.contains(*tile) && tiles.size() >= tiles_per_batch) {
+      tiles.clear();
+      batches.emplace_back();
+    }
+    if (batches.empty()) batches.emplace_back();
+    tiles.insert(*tile);
+    batches.back().push_back(i);
+  }
+  return batches;
+}
+
+// The footprints of a batch's points (into `feet`) and the tiles their samples lie in.
+std::unordered_set<TileId> footprints(std::span<const geo::LatLon> points, const std::vector<std::size_t>& batch,
+                                      int zoom, const SampleGrid& grid, std::vector<SampleFootprint>& feet) {
+  feet.reserve(batch.size());
+  std::unordered_set<TileId> needed;
+  for (std::size_t i : batch) {
+    const auto c = geo::fractional_tile_coord(points[i].lat, points[i].lon, zoom);
+    feet.push_back(sample_footprint(*c, zoom, grid));
+    for (auto col : feet.back().col)
+      for (auto row : feet.back().row) needed.insert(locate_sample(col, row, zoom, grid).tile);
+  }
+  return needed;
+}
+
 }  // namespace
 
 HeightSampler::HeightSampler(HeightSource& source, HeightSamplerOptions options)
@@ -55,23 +90,7 @@ bool HeightSampler::wait(TileLoader<HeightTile>& loader, const ProgressFunction&
 
 void HeightSampler::sample_level(std::span<const geo::LatLon> points, std::vector<std::size_t>& todo, int zoom,
                                  std::vector<double>& out, const ProgressFunction& on_progress) {
-  // Consecutive track points share tiles: cut the work into batches of at most tiles_per_batch
-  // containing tiles, so a long flight never holds all its tiles in memory at once.
-  std::vector<std::vector<std::size_t>> batches;
-  {
-    std::unordered_set<TileId> tiles;
-    for (std::size_t i : todo) {
-      const auto tile = geo::tile_containing(points[i].lat, points[i].lon, zoom);
-      if (!tile) continue;
-      if (!tiles.contains(*tile) && tiles.size() >= options_.tiles_per_batch) {
-        tiles.clear();
-        batches.emplace_back();
-      }
-      if (batches.empty()) batches.emplace_back();
-      tiles.insert(*tile);
-      batches.back().push_back(i);
-    }
-  }
+  const std::vector<std::vector<std::size_t>> batches = batches_by_tile(points, todo, zoom, options_.tiles_per_batch);
   TileLoaderOptions loader_options;
   loader_options.threads = options_.threads;
   // Room for a batch with its seam neighbours, at 256 x 256 floats a tile.
@@ -107,14 +126,7 @@ void HeightSampler::sample_level(std::span<const geo::LatLon> points, std::vecto
     }
     // Then the neighbours across seams that the four samples around each point need.
     std::vector<SampleFootprint> feet;
-    feet.reserve(batch.size());
-    std::unordered_set<TileId> needed;
-    for (std::size_t i : batch) {
-      const auto c = geo::fractional_tile_coord(points[i].lat, points[i].lon, zoom);
-      feet.push_back(sample_footprint(*c, zoom, grid_));
-      for (auto col : feet.back().col)
-        for (auto row : feet.back().row) needed.insert(locate_sample(col, row, zoom, grid_).tile);
-    }
+    const std::unordered_set<TileId> needed = footprints(points, batch, zoom, grid_, feet);
     requests.clear();
     for (const auto& id : needed) requests.push_back({id, 1.0});
     loader.request(requests);

@@ -36,6 +36,23 @@ SceneLighting lighting_for(const glm::dvec3& sun_direction_ecef, const scene::Ca
   return lighting;
 }
 
+namespace {
+
+// The atmosphere's switch, its model and the camera's height in it.
+void set_atmosphere_uniforms(const ShaderProgram& program, const ComposeSettings& settings, double camera_height_m) {
+  program.set_int("u_atmosphere", settings.atmosphere ? 1 : 0);
+  const AtmosphereModel& m = settings.model;
+  set_vec3(program, "u_rayleigh_per_m", m.rayleigh_per_m);
+  program.set_float("u_rayleigh_scale_height", m.rayleigh_scale_height_m);
+  program.set_float("u_mie_per_m", m.mie_per_m);
+  program.set_float("u_mie_scale_height", m.mie_scale_height_m);
+  program.set_float("u_mie_g", m.mie_asymmetry);
+  program.set_float("u_inscatter_scale", m.inscatter_scale);
+  program.set_float("u_camera_height", static_cast<float>(camera_height_m));
+}
+
+}  // namespace
+
 ComposePass::ComposePass()
     : program_(ShaderProgram::from_embedded("fullscreen_triangle.vert", "compose.frag")),
       fullscreen_(VertexArray::create()) {}
@@ -58,15 +75,7 @@ void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion,
   set_vec3(
       program_, "u_flat_sky",
       glm::vec3(srgb_to_linear(kSkyColorSrgb.r), srgb_to_linear(kSkyColorSrgb.g), srgb_to_linear(kSkyColorSrgb.b)));
-  program_.set_int("u_atmosphere", settings.atmosphere ? 1 : 0);
-  const AtmosphereModel& m = settings.model;
-  set_vec3(program_, "u_rayleigh_per_m", m.rayleigh_per_m);
-  program_.set_float("u_rayleigh_scale_height", m.rayleigh_scale_height_m);
-  program_.set_float("u_mie_per_m", m.mie_per_m);
-  program_.set_float("u_mie_scale_height", m.mie_scale_height_m);
-  program_.set_float("u_mie_g", m.mie_asymmetry);
-  program_.set_float("u_inscatter_scale", m.inscatter_scale);
-  program_.set_float("u_camera_height", static_cast<float>(at.height_m));
+  set_atmosphere_uniforms(program_, settings, at.height_m);
   program_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
   const bool has_ao = ambient_occlusion != nullptr && *ambient_occlusion;
   program_.set_int("u_has_ao", has_ao ? 1 : 0);

@@ -86,6 +86,75 @@ float sample_height_bilinear(const terrain::HeightTile& tile, double u, double v
   return static_cast<float>(sum / weight);
 }
 
+namespace {
+
+// The grid's vertices (positions relative to the origin, normals from the neighbours) and its
+// two triangles per cell.
+void add_grid(TerrainMesh& mesh, const std::vector<float>& heights, const std::vector<float>& covered,
+              const std::vector<scene::GeoPosition>& where, const std::vector<glm::dvec3>& positions,
+              const glm::dvec3& origin) {
+  const std::uint32_t n = mesh.grid_vertices;
+  const std::uint32_t cells = n - 1;
+  mesh.vertices.reserve(positions.size() + 4 * std::size_t{n});
+  for (std::uint32_t j = 0; j < n; ++j) {
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::size_t k = std::size_t{j} * n + i;
+      // Central differences (one-sided on the edges) of the ECEF positions: the normal follows the
+      // height differences and the ellipsoid's curvature alike.
+      const glm::dvec3 east =
+          positions[std::size_t{j} * n + std::min(i + 1, cells)] - positions[std::size_t{j} * n + (i > 0 ? i - 1 : 0)];
+      const glm::dvec3 north =
+          positions[std::size_t{j > 0 ? j - 1 : 0} * n + i] - positions[std::size_t{std::min(j + 1, cells)} * n + i];
+      glm::dvec3 normal = glm::cross(east, north);
+      const double length = glm::length(normal);
+      normal = length > 0.0 ? normal / length : scene::enu_axes_at(where[k].lat_deg, where[k].lon_deg).up;
+      const glm::vec3 p = to_vec3(positions[k] - origin), nn = to_vec3(normal);
+      mesh.vertices.push_back({p.x, p.y, p.z, nn.x, nn.y, nn.z, heights[k],
+                               static_cast<float>(i) / static_cast<float>(cells),
+                               static_cast<float>(j) / static_cast<float>(cells), covered[k]});
+    }
+  }
+  mesh.indices.reserve(std::size_t{cells} * cells * 6 + std::size_t{cells} * 4 * 6);
+  for (std::uint32_t j = 0; j < cells; ++j) {
+    for (std::uint32_t i = 0; i < cells; ++i) {
+      const std::uint32_t v00 = j * n + i, v10 = v00 + 1, v01 = v00 + n, v11 = v01 + 1;
+      mesh.indices.insert(mesh.indices.end(), {v00, v01, v10, v10, v01, v11});
+    }
+  }
+
+}
+
+// Skirts: the perimeter once around, each vertex with a copy hanging straight down below it.
+void add_skirts(TerrainMesh& mesh, const terrain::TileId& id, const std::vector<scene::GeoPosition>& where,
+                const std::vector<glm::dvec3>& positions, const glm::dvec3& origin) {
+  const std::uint32_t n = mesh.grid_vertices;
+  const std::uint32_t cells = n - 1;
+  std::vector<std::uint32_t> perimeter;
+  for (std::uint32_t i = 0; i < cells; ++i) perimeter.push_back(i);              // north, west to east
+  for (std::uint32_t j = 0; j < cells; ++j) perimeter.push_back(j * n + cells);  // east, north to south
+  for (std::uint32_t i = cells; i > 0; --i) perimeter.push_back(cells * n + i);  // south, east to west
+  for (std::uint32_t j = cells; j > 0; --j) perimeter.push_back(j * n);          // west, south to north
+  const double depth = terrain::skirt_depth_m(id, cells);
+  const auto first_skirt = static_cast<std::uint32_t>(mesh.vertices.size());
+  for (const std::uint32_t edge : perimeter) {
+    TerrainVertex v = mesh.vertices[edge];
+    const glm::dvec3 up = scene::enu_axes_at(where[edge].lat_deg, where[edge].lon_deg).up;
+    const glm::vec3 p = to_vec3(positions[edge] - depth * up - origin);
+    v.x = p.x;
+    v.y = p.y;
+    v.z = p.z;
+    mesh.vertices.push_back(v);
+  }
+  const auto count = static_cast<std::uint32_t>(perimeter.size());
+  for (std::uint32_t s = 0; s < count; ++s) {
+    const std::uint32_t a = perimeter[s], b = perimeter[(s + 1) % count];
+    const std::uint32_t a_low = first_skirt + s, b_low = first_skirt + (s + 1) % count;
+    mesh.indices.insert(mesh.indices.end(), {a, b, b_low, a, b_low, a_low});
+  }
+}
+
+}  // namespace
+
 TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t grid_vertices, float fill_height_m) {
   check_tile(tile);
   if (grid_vertices < 2)
@@ -124,56 +193,8 @@ TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t gr
   std::vector<glm::dvec3> positions(heights.size());
   for (std::size_t k = 0; k < positions.size(); ++k) positions[k] = scene::ecef_from(where[k]);
 
-  mesh.vertices.reserve(positions.size() + 4 * std::size_t{n});
-  for (std::uint32_t j = 0; j < n; ++j) {
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const std::size_t k = std::size_t{j} * n + i;
-      // Central differences (one-sided on the edges) of the ECEF positions: the normal follows the
-      // height differences and the ellipsoid's curvature alike.
-      const glm::dvec3 east =
-          positions[std::size_t{j} * n + std::min(i + 1, cells)] - positions[std::size_t{j} * n + (i > 0 ? i - 1 : 0)];
-      const glm::dvec3 north =
-          positions[std::size_t{j > 0 ? j - 1 : 0} * n + i] - positions[std::size_t{std::min(j + 1, cells)} * n + i];
-      glm::dvec3 normal = glm::cross(east, north);
-      const double length = glm::length(normal);
-      normal = length > 0.0 ? normal / length : scene::enu_axes_at(where[k].lat_deg, where[k].lon_deg).up;
-      const glm::vec3 p = to_vec3(positions[k] - origin), nn = to_vec3(normal);
-      mesh.vertices.push_back({p.x, p.y, p.z, nn.x, nn.y, nn.z, heights[k],
-                               static_cast<float>(i) / static_cast<float>(cells),
-                               static_cast<float>(j) / static_cast<float>(cells), covered[k]});
-    }
-  }
-  mesh.indices.reserve(std::size_t{cells} * cells * 6 + std::size_t{cells} * 4 * 6);
-  for (std::uint32_t j = 0; j < cells; ++j) {
-    for (std::uint32_t i = 0; i < cells; ++i) {
-      const std::uint32_t v00 = j * n + i, v10 = v00 + 1, v01 = v00 + n, v11 = v01 + 1;
-      mesh.indices.insert(mesh.indices.end(), {v00, v01, v10, v10, v01, v11});
-    }
-  }
-
-  // Skirts: the perimeter once around, each vertex with a copy hanging straight down below it.
-  std::vector<std::uint32_t> perimeter;
-  for (std::uint32_t i = 0; i < cells; ++i) perimeter.push_back(i);              // north, west to east
-  for (std::uint32_t j = 0; j < cells; ++j) perimeter.push_back(j * n + cells);  // east, north to south
-  for (std::uint32_t i = cells; i > 0; --i) perimeter.push_back(cells * n + i);  // south, east to west
-  for (std::uint32_t j = cells; j > 0; --j) perimeter.push_back(j * n);          // west, south to north
-  const double depth = terrain::skirt_depth_m(tile.id, cells);
-  const auto first_skirt = static_cast<std::uint32_t>(mesh.vertices.size());
-  for (const std::uint32_t edge : perimeter) {
-    TerrainVertex v = mesh.vertices[edge];
-    const glm::dvec3 up = scene::enu_axes_at(where[edge].lat_deg, where[edge].lon_deg).up;
-    const glm::vec3 p = to_vec3(positions[edge] - depth * up - origin);
-    v.x = p.x;
-    v.y = p.y;
-    v.z = p.z;
-    mesh.vertices.push_back(v);
-  }
-  const auto count = static_cast<std::uint32_t>(perimeter.size());
-  for (std::uint32_t s = 0; s < count; ++s) {
-    const std::uint32_t a = perimeter[s], b = perimeter[(s + 1) % count];
-    const std::uint32_t a_low = first_skirt + s, b_low = first_skirt + (s + 1) % count;
-    mesh.indices.insert(mesh.indices.end(), {a, b, b_low, a, b_low, a_low});
-  }
+  add_grid(mesh, heights, covered, where, positions, origin);
+  add_skirts(mesh, tile.id, where, positions, origin);
   return mesh;
 }
 

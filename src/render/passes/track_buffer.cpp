@@ -37,25 +37,31 @@ Texture upload_rgba32f(std::vector<float>& texels, int width) {
   return texture;
 }
 
+// Values and heights one per point (or none), every point finite.
+void check_segment(const scene::TrackPolyline& line, std::size_t s) {
+  const std::size_t n = line.points_ecef.size();
+  if (!line.values.empty() && line.values.size() != n)
+    throw std::invalid_argument("track segment " + std::to_string(s) + ": " + std::to_string(line.values.size()) +
+                                " values for " + std::to_string(n) + " points");
+  if (!line.heights_above_ground_m.empty() && line.heights_above_ground_m.size() != n)
+    throw std::invalid_argument("track segment " + std::to_string(s) + ": " +
+                                std::to_string(line.heights_above_ground_m.size()) + " heights above ground for " +
+                                std::to_string(n) + " points");
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3& p = line.points_ecef[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument("track segment " + std::to_string(s) + " point " + std::to_string(i) +
+                                  ": position is not a finite number");
+  }
+}
+
 }  // namespace
 
 TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
   for (std::size_t s = 0; s < geometry.segments.size(); ++s) {
     const scene::TrackPolyline& line = geometry.segments[s];
+    check_segment(line, s);
     const std::size_t n = line.points_ecef.size();
-    if (!line.values.empty() && line.values.size() != n)
-      throw std::invalid_argument("track segment " + std::to_string(s) + ": " + std::to_string(line.values.size()) +
-                                  " values for " + std::to_string(n) + " points");
-    if (!line.heights_above_ground_m.empty() && line.heights_above_ground_m.size() != n)
-      throw std::invalid_argument("track segment " + std::to_string(s) + ": " +
-                                  std::to_string(line.heights_above_ground_m.size()) + " heights above ground for " +
-                                  std::to_string(n) + " points");
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::dvec3& p = line.points_ecef[i];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw std::invalid_argument("track segment " + std::to_string(s) + " point " + std::to_string(i) +
-                                    ": position is not a finite number");
-    }
     if (n == 0) continue;
     if (point_count_ + n > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 8))
       throw RenderError("track: too many points for the GPU layout (" + std::to_string(point_count_ + n) + ")");
@@ -64,13 +70,27 @@ TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
     has_values_ = has_values_ || !line.values.empty();
     has_drops_ = has_drops_ || !line.heights_above_ground_m.empty();
   }
-
-  // Block origins, kept in double: each segment's points in blocks from its own first point
-  // (a gap between segments, however wide, costs no precision), blocks as large as the points'
-  // spread within them allows (see the header).
   std::vector<glm::dvec3> all;
   all.reserve(point_count_);
   for (const scene::TrackPolyline& line : geometry.segments) all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
+  make_blocks(all);
+  // Bounding sphere: the box's centre and the farthest point from it.
+  if (!all.empty()) {
+    glm::dvec3 lo = all.front(), hi = all.front();
+    for (const glm::dvec3& p : all) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    centre_ = 0.5 * (lo + hi);
+    for (const glm::dvec3& p : all) radius_ = std::max(radius_, glm::length(p - centre_));
+  }
+  upload(geometry);
+}
+
+// Block origins, kept in double: each segment's points in blocks from its own first point (a gap
+// between segments, however wide, costs no precision), blocks as large as the points' spread
+// within them allows (see the header).
+void TrackBuffer::make_blocks(const std::vector<glm::dvec3>& all) {
   const auto blocks_reach = [&](std::int32_t size) {
     for (const Range& range : segments_)
       for (std::int32_t first = range.first; first < range.first + range.count; first += size)
@@ -86,18 +106,10 @@ TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
     for (std::int32_t i = range.first; i < range.first + range.count; i += block_size)
       block_origins_.push_back(all[static_cast<std::size_t>(i)]);
   }
+}
 
-  // Bounding sphere: the box's centre and the farthest point from it.
-  if (!all.empty()) {
-    glm::dvec3 lo = all.front(), hi = all.front();
-    for (const glm::dvec3& p : all) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    centre_ = 0.5 * (lo + hi);
-    for (const glm::dvec3& p : all) radius_ = std::max(radius_, glm::length(p - centre_));
-  }
-
+// The points (offsets from their blocks' origins, with values), the drops and the blocks texture.
+void TrackBuffer::upload(const scene::TrackGeometry& geometry) {
   texture_width_ = width_for(point_count_);
   std::vector<float> texels;
   texels.reserve(point_count_ * 4);

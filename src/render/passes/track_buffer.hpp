@@ -78,6 +78,9 @@ class TrackBuffer {
   void set_eye(const glm::dvec3& eye_ecef);
 
  private:
+  void make_blocks(const std::vector<glm::dvec3>& all);
+  void upload(const scene::TrackGeometry& geometry);
+
   std::size_t point_count_ = 0;
   std::vector<Range> segments_;
   bool has_values_ = false, has_drops_ = false;

@@ -264,6 +264,33 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const scene::Camera& camera
   check_gl("drawing the tracks into the G-buffer");
 }
 
+void TrackPass::draw_curtains(const GBuffer& gbuffer, const scene::Camera& camera, const SceneLighting& lighting,
+                              std::span<const TrackDraw> tracks, const TrackSceneSettings& settings,
+                              const std::array<float, 16>& view_projection) const {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  curtain_.use();
+  curtain_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
+  curtain_.set_int("u_points", static_cast<int>(kPointsUnit));
+  curtain_.set_int("u_blocks", static_cast<int>(kBlocksUnit));
+  curtain_.set_int("u_drops", static_cast<int>(kDropsUnit));
+  curtain_.set_int("u_colormap", static_cast<int>(kColormapUnit));
+  curtain_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+  curtain_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  curtain_.set_float("u_curtain_alpha", settings.curtain_alpha);
+  const glm::vec3 eye(camera.position());
+  set_vec3(curtain_, "u_eye_ecef", eye);
+  set_vec3(curtain_, "u_sun_radiance", lighting.sun_radiance);
+  set_vec3(curtain_, "u_sky_radiance", lighting.sky_radiance);
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw) || !draw.buffer->has_drops()) continue;
+    set_color_uniforms(curtain_, draw, settings);
+    bind_texture(kDropsUnit, draw.buffer->drops());
+    draw_segments(curtain_, *draw.buffer);
+  }
+  glDisable(GL_BLEND);
+}
+
 void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
                              const SceneLighting& lighting, std::span<const TrackDraw> tracks,
                              const TrackSceneSettings& settings) const {
@@ -283,30 +310,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
 
   // Curtains first, blended, so that a tube in front of a wall replaces it and one behind is
   // hidden by its depth.
-  if (settings.curtain) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    curtain_.use();
-    curtain_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
-    curtain_.set_int("u_points", static_cast<int>(kPointsUnit));
-    curtain_.set_int("u_blocks", static_cast<int>(kBlocksUnit));
-    curtain_.set_int("u_drops", static_cast<int>(kDropsUnit));
-    curtain_.set_int("u_colormap", static_cast<int>(kColormapUnit));
-    curtain_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
-    curtain_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
-    curtain_.set_float("u_curtain_alpha", settings.curtain_alpha);
-    const glm::vec3 eye(camera.position());
-    set_vec3(curtain_, "u_eye_ecef", eye);
-    set_vec3(curtain_, "u_sun_radiance", lighting.sun_radiance);
-    set_vec3(curtain_, "u_sky_radiance", lighting.sky_radiance);
-    for (const TrackDraw& draw : tracks) {
-      if (!drawable(draw) || !draw.buffer->has_drops()) continue;
-      set_color_uniforms(curtain_, draw, settings);
-      bind_texture(kDropsUnit, draw.buffer->drops());
-      draw_segments(curtain_, *draw.buffer);
-    }
-    glDisable(GL_BLEND);
-  }
+  if (settings.curtain) draw_curtains(gbuffer, camera, lighting, tracks, settings, view_projection);
 
   overlay_.use();
   overlay_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));

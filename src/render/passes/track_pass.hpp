@@ -124,6 +124,10 @@ class TrackPass {
   };
   mutable TerrainCopy terrain_copy_;
   void copy_terrain(const GBuffer& gbuffer) const;
+  // The curtains into the bound overlay target (blended; its depth hides those behind tubes).
+  void draw_curtains(const GBuffer& gbuffer, const scene::Camera& camera, const SceneLighting& lighting,
+                     std::span<const TrackDraw> tracks, const TrackSceneSettings& settings,
+                     const std::array<float, 16>& view_projection) const;
 };
 
 }  // namespace trailray::render
