@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "render/gl/gl_api.hpp"
+
 namespace trailray::render {
 namespace {
 
@@ -18,14 +20,15 @@ F lookup(const char* extension_name, const char* core_name) {
 
 DebugGroups::DebugGroups(const GlCapabilities& capabilities) {
   if (!capabilities.debug_output) return;
-  push_ = lookup<PFNGLPUSHDEBUGGROUPKHRPROC>("glPushDebugGroupKHR", "glPushDebugGroup");
-  pop_ = lookup<PFNGLPOPDEBUGGROUPKHRPROC>("glPopDebugGroupKHR", "glPopDebugGroup");
+  push_ = lookup<PushFunction>("glPushDebugGroupKHR", "glPushDebugGroup");
+  pop_ = lookup<PopFunction>("glPopDebugGroupKHR", "glPopDebugGroup");
 }
 
 void DebugGroups::push(std::string_view name) const {
   if (!enabled()) return;
   // GL_MAX_DEBUG_MESSAGE_LENGTH is at least 1: pass names are far shorter than any real limit.
   const auto length = static_cast<GLsizei>(std::min<std::size_t>(name.size(), 256));
+  static_assert(sizeof(GLenum) == sizeof(unsigned) && sizeof(GLsizei) == sizeof(int));
   push_(GL_DEBUG_SOURCE_APPLICATION_KHR, 0, length, name.data());
 }
 

@@ -6,7 +6,6 @@
 
 #include <string_view>
 
-#include "render/gl/gl_api.hpp"
 #include "render/gl/gl_capabilities.hpp"
 
 namespace trailray::render {
@@ -21,8 +20,12 @@ class DebugGroups {
   void pop() const;
 
  private:
-  PFNGLPUSHDEBUGGROUPKHRPROC push_ = nullptr;
-  PFNGLPOPDEBUGGROUPKHRPROC pop_ = nullptr;
+  // glPushDebugGroupKHR(source, id, length, message) and glPopDebugGroupKHR(), spelled without
+  // the GL headers' typedefs (a window's headers may come first and define others).
+  using PushFunction = void (*)(unsigned source, unsigned id, int length, const char* message);
+  using PopFunction = void (*)();
+  PushFunction push_ = nullptr;
+  PopFunction pop_ = nullptr;
 };
 
 // A group for the lifetime of the scope.
