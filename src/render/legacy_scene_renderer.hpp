@@ -46,9 +46,9 @@ struct SceneRenderOptions {
   std::vector<TrackDraw> tracks;
   TrackSceneSettings track_settings;
   std::function<void(const terrain::LoadProgress&)> on_progress;  // while waiting for tiles
-  bool wait_for_tiles = true;                    // false: the viewer's mode (TileLoadPolicy::wait)
-  bool read_back = true;                         // false: RenderedScene::image stays empty
-  bool blit_to_default_framebuffer = false;      // copy the frame into the window's framebuffer
+  bool wait_for_tiles = true;                                     // false: the viewer's mode (TileLoadPolicy::wait)
+  bool read_back = true;                                          // false: RenderedScene::image stays empty
+  bool blit_to_default_framebuffer = false;                       // copy the frame into the window's framebuffer
   std::size_t mesh_budget_bytes = kDefaultMeshBudgetBytes;
   std::size_t imagery_budget_bytes = kDefaultImageryBudgetBytes;
 };

@@ -85,7 +85,8 @@ PixelOnTube pixel_on_tube(const scene::Camera& camera, const LocalFrame& frame, 
 
 // The tube's radius for a width: metres as given, pixels at the depth of the axis point nearest
 // the camera (where every capsule of an east-west line seen from due south takes it).
-double tube_radius_m(const scene::Camera& camera, const LocalFrame& frame, double up_m, const scene::TrackWidth& width) {
+double tube_radius_m(const scene::Camera& camera, const LocalFrame& frame, double up_m,
+                     const scene::TrackWidth& width) {
   if (width.unit == scene::TrackWidth::Unit::metres) return 0.5 * width.value;
   const glm::dvec3 eye = camera.position();
   const glm::dvec3 to_axis = frame.point(0.0, 0.0, up_m) - eye;

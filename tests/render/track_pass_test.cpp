@@ -86,7 +86,8 @@ TEST_F(TrackPassTest, AMetreWideTubeIsTwoRFOverDPixelsWide) {
   const LocalFrame frame(kPlace);
   test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{-150, 0, 800}, {150, 0, 800}})}))});
+  const scene::TrackSet buffer = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, {{-150, 0, 800}, {150, 0, 800}})}))});
   scene::Scene options = plain_scene(kPlace, 0.0);
   options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
   const auto images = render_both(renderer, camera, options, buffer);
@@ -129,7 +130,8 @@ TEST_F(TrackPassTest, ALongSegmentHasStraightEdges) {
   test::SceneDrawer renderer(nullptr, nullptr);
   std::vector<glm::dvec3> cut;
   for (double east = -4000.0; east <= 4000.0; east += 100.0) cut.push_back({east, 0, 800});
-  const scene::TrackSet one = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{-4000, 0, 800}, {4000, 0, 800}})}))});
+  const scene::TrackSet one = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, {{-4000, 0, 800}, {4000, 0, 800}})}))});
   const scene::TrackSet many = test::track_set({test::track_of(test::geometry_of({polyline(frame, cut)}))});
   scene::Scene options = plain_scene(kPlace, 0.0);
   options.style.tracks = width_settings(9.0, scene::TrackWidth::Unit::pixels);
@@ -183,7 +185,8 @@ TEST_F(TrackPassTest, ASegmentSeenEndOnIsARoundDiscOfItsNearEnd) {
   const LocalFrame frame(kPlace);
   test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
-  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{0, 0, 800}, {0, 0, 700}})}))});
+  const scene::TrackSet buffer = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, {{0, 0, 800}, {0, 0, 700}})}))});
   scene::Scene options = plain_scene(kPlace, 0.0);
   options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
   const auto images = render_both(renderer, camera, options, buffer);
@@ -201,7 +204,8 @@ TEST_F(TrackPassTest, ValuesPickTheirColormapColours) {
   const std::vector<glm::dvec3> points{{-150, 0, 800}, {-110, 0, 800}, {-70, 0, 800}, {-40, 0, 800},
                                        {40, 0, 800},   {70, 0, 800},   {110, 0, 800}, {150, 0, 800}};
   const scene::TrackSet valued = test::track_set(
-      {test::track_of(test::geometry_of({polyline(frame, points, {10, 10, 10, 10, 20, 20, 20, 20})}), kTrackRed, true)});
+      {test::track_of(test::geometry_of({polyline(frame, points, {10, 10, 10, 10, 20, 20, 20, 20})}), kTrackRed,
+                      true)});
   scene::Scene options = plain_scene(kPlace, 0.0);
   options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
   options.style.tracks.colormap = scene::Colormap::turbo;
@@ -213,7 +217,8 @@ TEST_F(TrackPassTest, ValuesPickTheirColormapColours) {
   const glm::vec3 half = scene::colormap_color(scene::Colormap::turbo, 0.5f), full = scene::colormap_color(scene::Colormap::turbo, 1.0f);
   ASSERT_GT(glm::length(half - full), 0.3f) << "the two colours must be told apart";
   for (const auto& [east, colour] : {std::pair{-60.0, half}, std::pair{60.0, full}}) {
-    const scene::TrackSet plain = test::track_set({test::track_of(test::geometry_of({polyline(frame, points)}), colour)});
+    const scene::TrackSet plain = test::track_set(
+        {test::track_of(test::geometry_of({polyline(frame, points)}), colour)});
     options.tracks = &plain;
     const scene::RgbaImage solid = renderer.draw(camera, options).image;
     std::uint32_t x = 0, y = 0;
@@ -250,7 +255,8 @@ TEST_F(TrackPassTest, OnePointAndTwoIdenticalPointsDrawASphere) {
   scene::Scene options = plain_scene(kPlace, 0.0);
   options.style.tracks = width_settings(8.0, scene::TrackWidth::Unit::metres);
   const scene::TrackSet one = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{20, 10, 800}})}))});
-  const scene::TrackSet two = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{20, 10, 800}, {20, 10, 800}})}))});
+  const scene::TrackSet two = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, {{20, 10, 800}, {20, 10, 800}})}))});
   for (const scene::TrackSet* buffer : {&one, &two}) {
     const auto images = render_both(renderer, camera, options, *buffer);
     const std::string what = buffer == &one ? "one point" : "two identical points";

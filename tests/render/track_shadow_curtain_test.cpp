@@ -37,7 +37,8 @@ TEST_F(TrackShadowCurtainTest, AFloatingTrackShadowsTheGroundAwayFromTheSun) {
   const LocalFrame frame(kPlace);
   test::SceneDrawer renderer(nullptr, nullptr);
   const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 50.0);
-  const scene::TrackSet buffer = test::track_set({test::track_of(test::geometry_of({polyline(frame, {{-300, 0, 50}, {300, 0, 50}})}))});
+  const scene::TrackSet buffer = test::track_set(
+      {test::track_of(test::geometry_of({polyline(frame, {{-300, 0, 50}, {300, 0, 50}})}))});
   scene::Scene options = test::plain_scene(kPlace, 0.0);
   options.sun_direction_ecef = test::sun_from(kPlace.lat_deg, kPlace.lon_deg, 180.0, 60.0);
   options.style.shading.shadows = true;

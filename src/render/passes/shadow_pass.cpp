@@ -52,7 +52,8 @@ void draw_shadow_pass(const ShadowMaps& maps, const ShadowCascades& cascades, co
     // far cascades only).
     std::vector<TrackDraw> casting;
     for (const TrackDraw& draw : casters.tracks)
-      if (draw.buffer != nullptr && light.may_hold(draw.buffer->bounding_centre_ecef(), draw.buffer->bounding_radius_m()))
+      if (draw.buffer != nullptr &&
+          light.may_hold(draw.buffer->bounding_centre_ecef(), draw.buffer->bounding_radius_m()))
         casting.push_back(draw);
     if (casting.empty()) return;
     const std::array<float, 16> relative = light.view_projection_relative_to(camera.position());
