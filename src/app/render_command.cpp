@@ -7,11 +7,12 @@
 #include "app/camera_options.hpp"
 #include "app/render_options.hpp"
 #include "app/render_report.hpp"
-#include "app/scene_frames.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "render/platform/gl_context.hpp"
+#include "render/renderer.hpp"
 #include "scene/legend_content.hpp"
+#include "scene/terrain_view.hpp"
 
 namespace trailray::app {
 namespace {
@@ -26,9 +27,13 @@ int run_render(const RenderArgs& a) {
   TerminalDiagnostics diagnostics(a.verbose);
 
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
+  scene::TerrainView terrain(sources.heights.get(), sources.imagery.get());
+  terrain.set_policy(
+      {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
   const SceneTracks tracks =
       load_scene_tracks(a.tracks, a.read, style.tracks, {sources.heights.get(), 0.0, a.analysis}, diagnostics);
   scene::Scene scene;
+  scene.terrain = &terrain;
   scene.tracks = &tracks.tracks;
   scene.style = style;
   scene.color_range = scene::color_range(tracks.tracks, style);
@@ -43,16 +48,13 @@ int run_render(const RenderArgs& a) {
 
   render::GlContext gl = render::GlContext::create_headless();
   for (const std::string& line : gl.describe()) diagnostics.note(line);
-  render::SceneRenderer renderer({sources.heights.get(), sources.imagery.get()});
-  SceneFrames frames;
-  render::SceneRenderOptions options = frames.options_for(scene);
-  options.timeout = timeout_of(a);
-  options.on_progress = [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); };
-  render::RenderedScene picture = renderer.render(camera, options);
+  render::Renderer renderer;
+  render::ImageTarget picture;
+  const render::FrameReport report = renderer.draw(scene, camera, picture);
   diagnostics.progress_done();
-  if (a.profile) profile_frames(renderer, camera, options, a.frames, picture);
+  if (a.profile) profile_frames(renderer, scene, camera, a.frames, picture);
 
-  report_render(picture.report, camera, scene, sources.heights.get(), a, diagnostics);
+  report_render(report, camera, scene, sources.heights.get(), a, diagnostics);
   scene::draw_scene_legend(picture.image, scene);
   scene::write_srgb_png(a.output, picture.image);
   diagnostics.note(fmt::format("wrote {} ({}x{})", a.output, picture.image.width, picture.image.height));

@@ -13,18 +13,18 @@ std::string tiles_status(const terrain::LoadProgress& p) {
                      p.failed ? fmt::format(", {} failed", p.failed) : "");
 }
 
-void report_render(const render::SceneRenderReport& r, const scene::Camera& camera, const scene::Scene& scene,
+void report_render(const render::FrameReport& r, const scene::Camera& camera, const scene::Scene& scene,
                    terrain::HeightSource* heights, const RenderArgs& a, scene::Diagnostics& diagnostics) {
-  if (r.timed_out)
+  if (r.terrain.timed_out)
     diagnostics.warning(
         fmt::format("tiles still loading after --timeout {} s: drawn with what had arrived", a.timeout_s));
-  if (!r.failures.empty())
-    diagnostics.warning(fmt::format("{} tile{} failed; first: {}", r.failures.size(), r.failures.size() == 1 ? "" : "s",
-                                    r.failures.front()));
+  if (!r.terrain.failures.empty())
+    diagnostics.warning(fmt::format("{} tile{} failed; first: {}", r.terrain.failures.size(),
+                                    r.terrain.failures.size() == 1 ? "" : "s", r.terrain.failures.front()));
   if (r.tiles_with_data == 0)
     diagnostics.warning(fmt::format("no terrain source covers the view ({}): drawing a neutral ground at {:.0f} m",
                                     heights ? heights->info().name : std::string("--terrain none"),
-                                    r.neutral_ground_height_m));
+                                    r.terrain.neutral_ground_m));
   const auto& g = camera.geodetic();
   const scene::SolarPosition sun = scene::solar_position(scene.sun_time_unix_s, g.lat_deg, g.lon_deg);
   if (sun.elevation_deg < 0.0)
@@ -33,18 +33,19 @@ void report_render(const render::SceneRenderReport& r, const scene::Camera& came
       "camera {:.6f},{:.6f},{:.0f} m heading {:.1f} pitch {:.1f}, sun azimuth {:.1f} elevation {:.1f}", g.lat_deg,
       g.lon_deg, g.height_m, camera.heading_deg(), camera.pitch_deg(), sun.azimuth_deg, sun.elevation_deg));
   diagnostics.note(fmt::format("{} tiles drawn ({} with terrain, {} with imagery), {} selection rounds", r.tiles_drawn,
-                               r.tiles_with_data, r.imagery_tiles_used, r.selection_rounds));
+                               r.tiles_with_data, r.imagery_tiles_used, r.terrain.selection_rounds));
   constexpr double kMiB = 1024.0 * 1024.0;
   diagnostics.note(fmt::format("GPU memory for terrain: meshes {:.1f} MiB ({} tiles), imagery {:.1f} MiB ({} tiles)",
                                static_cast<double>(r.gpu_meshes.bytes) / kMiB, r.gpu_meshes.entries,
                                static_cast<double>(r.gpu_imagery.bytes) / kMiB, r.gpu_imagery.entries));
 }
 
-void profile_frames(render::SceneRenderer& renderer, const scene::Camera& camera, render::SceneRenderOptions options,
-                    int frames, render::RenderedScene& picture) {
+void profile_frames(render::Renderer& renderer, const scene::Scene& scene, const scene::Camera& camera, int frames,
+                    render::ImageTarget& picture) {
   render::FrameProfiler profiler(render::query_gl_capabilities(), static_cast<std::size_t>(frames));
-  options.profiler = &profiler;
-  for (int frame = 0; frame < frames; ++frame) picture = renderer.render(camera, options);
+  picture.profiler = &profiler;
+  for (int frame = 0; frame < frames; ++frame) renderer.draw(scene, camera, picture);
+  picture.profiler = nullptr;
   profiler.finish();
   fmt::print(stderr, "{}", profiler.table());
 }

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/render_options.hpp"
-#include "render/legacy_scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "scene/camera.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/scene.hpp"
@@ -17,12 +17,12 @@ namespace trailray::app {
 // "tiles: 12/40 loaded, 1 failed".
 std::string tiles_status(const terrain::LoadProgress& progress);
 
-void report_render(const render::SceneRenderReport& report, const scene::Camera& camera, const scene::Scene& scene,
+void report_render(const render::FrameReport& report, const scene::Camera& camera, const scene::Scene& scene,
                    terrain::HeightSource* heights, const RenderArgs& args, scene::Diagnostics& diagnostics);
 
-// Renders `frames` more frames (the tiles are loaded by now) timing each pass, and prints the
-// table to standard error; `picture` becomes the last frame.
-void profile_frames(render::SceneRenderer& renderer, const scene::Camera& camera, render::SceneRenderOptions options,
-                    int frames, render::RenderedScene& picture);
+// Draws `frames` more frames (the tiles are loaded by now) timing each pass, and prints the
+// table to standard error; `picture` receives the last frame.
+void profile_frames(render::Renderer& renderer, const scene::Scene& scene, const scene::Camera& camera, int frames,
+                    render::ImageTarget& picture);
 
 }  // namespace trailray::app

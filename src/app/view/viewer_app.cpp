@@ -53,7 +53,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
       sources_(open_terrain_sources(o.terrain, diagnostics_)),
       window_(window_options(o)),
       imgui_(window_),
-      renderer_({sources_.heights.get(), sources_.imagery.get()}),
+      terrain_(sources_.heights.get(), sources_.imagery.get()),
       profiler_(window_.capabilities(), 60),
       controller_(scene::LookAt{}, o.lens) {
   for (const std::string& line : window_.describe()) diagnostics_.note(line);
@@ -67,7 +67,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
   controller_ = first_view(o, model_.tracks, sources_.heights.get(), neutral_, framing_room(o.lens));
-  controller_.set_ground([this](double lat, double lon) { return renderer_.height_in_memory(lat, lon); });
+  controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
 
 TrackLoadInputs ViewerApp::load_inputs(double neutral) const {
@@ -91,6 +91,7 @@ void ViewerApp::adopt(LoadedViewerTracks loaded) {
 // The scene as the panels have it now (visible tracks, style, the sun's time).
 scene::Scene ViewerApp::scene() {
   scene::Scene s;
+  s.terrain = &terrain_;
   s.tracks = &model_.tracks;
   s.style = model_.settings.style;
   s.color_range = model_.color_range();
@@ -145,29 +146,32 @@ void ViewerApp::frame(double wall_s, bool scripted) {
 
 // The scene without waiting for tiles, straight into the window; the profiler's figures.
 void ViewerApp::draw_scene_into_window(std::uint32_t width, std::uint32_t height, double wall_s) {
-  render::SceneRenderOptions options = frames_.options_for(scene());
-  options.wait_for_tiles = false;
-  options.read_back = false;
-  options.blit_to_default_framebuffer = true;
-  options.profiler = &profiler_;
-  const render::RenderedScene drawn = renderer_.render(controller_.camera(), options);
-  progress_ = drawn.report.progress;
+  // Never wait: the tiles stream in coarse-to-fine while the loaders work between frames.
+  scene::TileLoadPolicy never_wait;
+  never_wait.wait = false;
+  terrain_.set_policy(never_wait);
+  render::DefaultFramebufferTarget window;
+  window.profiler = &profiler_;
+  const render::FrameReport drawn = renderer_.draw(scene(), controller_.camera(), window);
+  progress_ = drawn.terrain.progress;
   model_.loading = progress_.pending() > 0;
   model_.profile = profiler_table(profiler_, wall_s);
-  model_.profile.mesh_bytes = drawn.report.gpu_meshes.bytes;
-  model_.profile.mesh_budget_bytes = drawn.report.gpu_meshes.budget_bytes;
-  model_.profile.imagery_bytes = drawn.report.gpu_imagery.bytes;
-  model_.profile.imagery_budget_bytes = drawn.report.gpu_imagery.budget_bytes;
+  model_.profile.mesh_bytes = drawn.gpu_meshes.bytes;
+  model_.profile.mesh_budget_bytes = drawn.gpu_meshes.budget_bytes;
+  model_.profile.imagery_bytes = drawn.gpu_imagery.bytes;
+  model_.profile.imagery_budget_bytes = drawn.gpu_imagery.budget_bytes;
   glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
 }
 
 // A picture as `render` makes it: the scene once its tiles are in, with the legend.
 void ViewerApp::screenshot(const std::string& path, bool status) {
   const scene::Scene s = scene();
-  render::SceneRenderOptions options = frames_.options_for(s);
-  options.timeout = std::chrono::milliseconds(static_cast<long long>(options_.timeout_s * 1000.0));
-  render::RenderedScene picture = renderer_.render(controller_.camera(), options);
-  if (picture.report.timed_out)
+  scene::TileLoadPolicy wait;
+  wait.timeout = std::chrono::milliseconds(static_cast<long long>(options_.timeout_s * 1000.0));
+  terrain_.set_policy(wait);
+  render::ImageTarget picture;
+  const render::FrameReport drawn = renderer_.draw(s, controller_.camera(), picture);
+  if (drawn.terrain.timed_out)
     diagnostics_.warning(
         fmt::format("tiles still loading after {} s: the picture has what had arrived", options_.timeout_s));
   scene::draw_scene_legend(picture.image, s);

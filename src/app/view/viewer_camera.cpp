@@ -40,8 +40,7 @@ void ViewerApp::fly_to_track(int index) {
   const scene::Track* const one[] = {&t};
   const auto framed = scene::frame_tracks(one, framing);
   if (!framed.ok()) return;
-  double ground =
-      renderer_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
+  double ground = terrain_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
   if (std::isnan(ground)) ground = framed.value->ground_height_m;
   controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
 }

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_frames.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/view/camera_controller.hpp"
@@ -20,9 +19,10 @@
 #include "render/gl/frame_profiler.hpp"
 #include "render/platform/imgui_layer.hpp"
 #include "render/platform/window.hpp"
-#include "render/legacy_scene_renderer.hpp"
+#include "render/renderer.hpp"
 #include "scene/framing.hpp"
 #include "scene/scene.hpp"
+#include "scene/terrain_view.hpp"
 
 namespace trailray::app::view {
 
@@ -70,9 +70,9 @@ class ViewerApp {
   // GL objects after the window (the context) and before nothing else: destroyed first.
   render::Window window_;
   render::ImGuiLayer imgui_;
-  render::SceneRenderer renderer_;
+  scene::TerrainView terrain_;  // the tiles for a camera (GL-free; its loaders read sources_)
+  render::Renderer renderer_;
   render::FrameProfiler profiler_;
-  SceneFrames frames_;
   CameraController controller_;
   std::vector<std::future<LoadedViewerTracks>> loading_;
   terrain::LoadProgress progress_;
@@ -84,7 +84,7 @@ class ViewerApp {
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
-                            terrain::HeightSource* heights, double neutral, const FramingRoom& room);
+CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks, terrain::HeightSource* heights,
+                            double neutral, const FramingRoom& room);
 
 }  // namespace trailray::app::view
