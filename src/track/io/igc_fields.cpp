@@ -10,8 +10,6 @@
 namespace trailray::track::detail {
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
 // Structurally valid UTF-8 (lead and continuation bytes; overlong 3/4-byte forms not checked).
 bool valid_utf8(std::string_view s) {
   for (std::size_t i = 0; i < s.size();) {
@@ -36,30 +34,6 @@ bool valid_utf8(std::string_view s) {
 }
 
 }  // namespace
-
-bool is_alnum(char c) { return is_digit(c) || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-
-bool read_digits(std::string_view s, std::size_t pos, std::size_t n, std::int64_t& out) {
-  if (pos > s.size() || n > s.size() - pos) return false;
-  std::int64_t v = 0;
-  for (std::size_t i = pos; i < pos + n; ++i) {
-    if (!is_digit(s[i])) return false;
-    v = v * 10 + (s[i] - '0');
-  }
-  out = v;
-  return true;
-}
-
-bool read_altitude(std::string_view s, std::size_t pos, std::int64_t& out) {
-  if (pos + 5 > s.size()) return false;
-  if (s[pos] == '-') {
-    std::int64_t v = 0;
-    if (!read_digits(s, pos + 1, 4, v)) return false;
-    out = -v;
-    return true;
-  }
-  return read_digits(s, pos, 5, out);
-}
 
 bool numeric_extension(std::string_view v) {
   std::size_t i = 0;

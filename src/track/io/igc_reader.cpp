@@ -45,39 +45,6 @@ constexpr std::size_t kMaxLine = 4096;  // IGC lines are at most 76 characters (
 
 namespace detail {
 
-void IgcParser::line(std::string_view s, std::int64_t line_no, std::int64_t offset, bool last_unterminated) {
-  line_no_ = line_no;
-  offset_ = offset;
-  if (line_no == 1 && s.starts_with("\xEF\xBB\xBF")) {
-    s.remove_prefix(3);
-    offset_ += 3;
-  }
-  if (s.empty()) return;
-  switch (s[0]) {
-    case 'B':
-      ++b_lines_;
-      if (last_unterminated && s.size() < expected_b_length()) {
-        warnings_.add_single(at(s.size() + 1), "file ends inside a record (cut short?): incomplete B record of " +
-                                                   std::to_string(s.size()) + " characters dropped; kept the " +
-                                                   std::to_string(points().size()) + " complete points before it");
-        return;
-      }
-      b_record(s);
-      break;
-    case 'H':
-      h_record(s);
-      break;
-    case 'I':
-      i_record(s);
-      break;
-    case 'A':
-      if (!seen_a_ && s.size() >= 4 && is_alnum(s[1]) && is_alnum(s[2]) && is_alnum(s[3])) a_record(s);
-      break;
-    default:
-      break;
-  }
-}
-
 void IgcParser::long_line(std::int64_t line_no, std::int64_t offset) {
   warnings_.add("long-line", SourcePosition{line_no, 1, offset},
                 "line longer than " + std::to_string(kMaxLine) + " bytes ignored (not an IGC record)");

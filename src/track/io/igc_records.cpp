@@ -18,6 +18,41 @@ constexpr double kRolloverSeconds = 12 * 3600.0;
 
 }  // namespace
 
+// The line dispatch lives with the record parsers, so each B record's parsing is inlined into
+// it (a B record per second of flight).
+void IgcParser::line(std::string_view s, std::int64_t line_no, std::int64_t offset, bool last_unterminated) {
+  line_no_ = line_no;
+  offset_ = offset;
+  if (line_no == 1 && s.starts_with("\xEF\xBB\xBF")) {
+    s.remove_prefix(3);
+    offset_ += 3;
+  }
+  if (s.empty()) return;
+  switch (s[0]) {
+    case 'B':
+      ++b_lines_;
+      if (last_unterminated && s.size() < expected_b_length()) {
+        warnings_.add_single(at(s.size() + 1), "file ends inside a record (cut short?): incomplete B record of " +
+                                                   std::to_string(s.size()) + " characters dropped; kept the " +
+                                                   std::to_string(points().size()) + " complete points before it");
+        return;
+      }
+      b_record(s);
+      break;
+    case 'H':
+      h_record(s);
+      break;
+    case 'I':
+      i_record(s);
+      break;
+    case 'A':
+      if (!seen_a_ && s.size() >= 4 && is_alnum(s[1]) && is_alnum(s[2]) && is_alnum(s[3])) a_record(s);
+      break;
+    default:
+      break;
+  }
+}
+
 void IgcParser::b_record(std::string_view s) {
   if (s.size() < kBaseLength) {
     drop("b-short", 1,
