@@ -10,10 +10,8 @@
 
 #include "geo/tile_id.hpp"
 #include "render/gl/frame_profiler.hpp"
-#include "scene/framing.hpp"
-#include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_api.hpp"
-#include "render/platform/gl_context.hpp"
+#include "render/passes/gbuffer.hpp"
 #include "render/passes/reference/reference_track.hpp"
 #include "render/passes/reference/ribbon_pass.hpp"
 #include "render/passes/reference/tube_pass.hpp"
@@ -21,6 +19,8 @@
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_buffer.hpp"
 #include "render/passes/track_pass.hpp"
+#include "render/platform/gl_context.hpp"
+#include "scene/framing.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::app {
@@ -48,8 +48,10 @@ std::vector<render::TerrainTileGpu> flat_ground(const std::vector<scene::GeoPosi
   // Tiles about half the span wide: 3 to 4 a side.
   const int zoom = std::clamp(static_cast<int>(std::floor(std::log2(40075016.7 * cos_lat / (0.5 * span_m)))), 1, 18);
   const double margin_lat = margin_m / kMetresPerDegree, margin_lon = margin_m / (kMetresPerDegree * cos_lat);
-  const auto north_west = geo::tile_containing(std::min(max_lat + margin_lat, 85.0), std::max(min_lon - margin_lon, -180.0), zoom);
-  const auto south_east = geo::tile_containing(std::max(min_lat - margin_lat, -85.0), std::min(max_lon + margin_lon, 179.999), zoom);
+  const auto north_west =
+      geo::tile_containing(std::min(max_lat + margin_lat, 85.0), std::max(min_lon - margin_lon, -180.0), zoom);
+  const auto south_east =
+      geo::tile_containing(std::max(min_lat - margin_lat, -85.0), std::min(max_lon + margin_lon, 179.999), zoom);
   std::vector<render::TerrainTileGpu> tiles;
   if (!north_west || !south_east) return tiles;
   const auto h = static_cast<float>(height_m);
@@ -105,11 +107,11 @@ struct TrackBench::State {
       if (timed) profiler.begin_frame();
       before_frame();
       terrain.draw(gbuffer, camera, ground);
-      glFinish();  // the ground is done before any clock starts
+      render::wait_for_gpu();  // the ground is done before any clock starts
       for (const TimedPass& pass : passes) {
         if (timed) profiler.begin_pass(pass.name);
         pass.draw();
-        glFinish();  // CPU time then covers the GPU's work (a no-op for the GPU clock)
+        render::wait_for_gpu();  // CPU time then covers the GPU's work (a no-op for the GPU clock)
         if (timed) profiler.end_pass(pass.name);
       }
       if (timed) profiler.end_frame();
@@ -192,8 +194,8 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     row.tube_radius_m = render::reference::radius_for_pixel_width(camera, row.view_distance_m, s.settings.width_px);
     const render::reference::TubeBuffer buffer(dataset.geometry, row.tube_radius_m);
     row.tube_bytes = buffer.gpu_bytes();
-    const PassMedians m =
-        s.time_passes(camera, ground, {{"tube", [&] { s.tube.draw(s.gbuffer, camera, buffer, kTrackColorSrgb); }}}, [] {});
+    const PassMedians m = s.time_passes(
+        camera, ground, {{"tube", [&] { s.tube.draw(s.gbuffer, camera, buffer, kTrackColorSrgb); }}}, [] {});
     row.tube_ms = m.ms.at("tube");
     gpu = gpu && m.gpu;
   }

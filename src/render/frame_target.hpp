@@ -34,7 +34,8 @@ class ImageTarget : public FrameTarget {
   scene::RgbaImage image;  // the last frame received
 };
 
-// The frame copied into the default framebuffer (a window's, which must be the lens's size).
+// The frame copied into the default framebuffer (a window's, which must be the lens's size),
+// which is left bound with a viewport over all of it.
 class DefaultFramebufferTarget : public FrameTarget {
  public:
   void receive(const ColorDepthTarget& frame) override;

@@ -15,8 +15,6 @@
 #include "app/view/viewer_overlay.hpp"
 #include "app/view/viewer_panels.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "render/gl/framebuffer_readback.hpp"
-#include "render/gl/gl_api.hpp"
 #include "scene/legend_content.hpp"
 
 namespace trailray::app::view {
@@ -133,11 +131,10 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     draw_legend_overlay(scene::color_legend_for(style, model_.color_range()),
                         scene::track_key_for(style, model_.tracks));
   }
-  if (width > 0 && height > 0) draw_scene_into_window(width, height, wall_s);
+  if (width > 0 && height > 0) draw_scene_into_window(wall_s);
   imgui_.render();
   if (!window_grab_.empty() && width > 0 && height > 0) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    scene::write_srgb_png(window_grab_, render::read_rgba8(0, 0, static_cast<int>(width), static_cast<int>(height)));
+    scene::write_srgb_png(window_grab_, window_.read_pixels());
     diagnostics_.info(fmt::format("wrote {} ({}x{}, the window)", window_grab_, width, height));
     window_grab_.clear();
   }
@@ -145,7 +142,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
 }
 
 // The scene without waiting for tiles, straight into the window; the profiler's figures.
-void ViewerApp::draw_scene_into_window(std::uint32_t width, std::uint32_t height, double wall_s) {
+void ViewerApp::draw_scene_into_window(double wall_s) {
   // Never wait: the tiles stream in coarse-to-fine while the loaders work between frames.
   scene::TileLoadPolicy never_wait;
   never_wait.wait = false;
@@ -160,7 +157,6 @@ void ViewerApp::draw_scene_into_window(std::uint32_t width, std::uint32_t height
   model_.profile.mesh_budget_bytes = drawn.gpu_meshes.budget_bytes;
   model_.profile.imagery_bytes = drawn.gpu_imagery.bytes;
   model_.profile.imagery_budget_bytes = drawn.gpu_imagery.budget_bytes;
-  glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
 }
 
 // A picture as `render` makes it: the scene once its tiles are in, with the legend.

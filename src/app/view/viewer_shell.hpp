@@ -41,7 +41,7 @@ class ViewerApp {
   // One frame: input (unless scripted), scene, panels, overlays, swap. `wall_s` drives the
   // replay clock and the camera's flights.
   void frame(double wall_s, bool scripted);
-  void draw_scene_into_window(std::uint32_t width, std::uint32_t height, double wall_s);
+  void draw_scene_into_window(double wall_s);
   void handle_mouse(const scene::Camera& camera);
   void handle_keys(double wall_s);
   void take_dropped_files();

@@ -277,4 +277,6 @@ std::string FrameProfiler::table() const {
   return out;
 }
 
+void wait_for_gpu() { glFinish(); }
+
 }  // namespace trailray::render

@@ -105,4 +105,8 @@ class FrameProfiler {
   const GlTimerFunctions* gl_ = nullptr;
 };
 
+// Blocks until the GPU has done everything asked of it so far: wall-clock timings (where the
+// context has no timer queries) then cover the GPU's work.
+void wait_for_gpu();
+
 }  // namespace trailray::render

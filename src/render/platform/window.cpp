@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "render/gl/framebuffer_readback.hpp"
+
 namespace trailray::render {
 namespace {
 
@@ -99,6 +101,11 @@ void Window::on_drop(GLFWwindow* window, int count, const char** paths) {
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
   if (self == nullptr) return;
   for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+}
+
+scene::RgbaImage Window::read_pixels() const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return read_rgba8(0, 0, static_cast<int>(framebuffer_width()), static_cast<int>(framebuffer_height()));
 }
 
 }  // namespace trailray::render

@@ -15,6 +15,7 @@
 
 #include "render/gl/gl_capabilities.hpp"
 #include "render/gl/render_error.hpp"
+#include "scene/rgba_image.hpp"
 
 struct GLFWwindow;
 
@@ -48,6 +49,8 @@ class Window {
   std::uint32_t framebuffer_height() const;
   // Files dropped onto the window since the last call, oldest first.
   std::vector<std::string> take_dropped_files();
+  // What the window shows now (its default framebuffer, interface included), top-down.
+  scene::RgbaImage read_pixels() const;
   const GlCapabilities& capabilities() const { return capabilities_; }
   std::vector<std::string> describe() const;  // GL renderer and version, for --verbose
 
