@@ -13,6 +13,7 @@
 #include "app/bench_datasets.hpp"
 #include "app/bench_runner.hpp"
 #include "app/camera_options.hpp"
+#include "app/terminal_diagnostics.hpp"
 
 namespace trailray::app {
 namespace {
@@ -102,25 +103,24 @@ std::string targets_text(const nlohmann::json& t) {
 int run_bench_tracks(const BenchArgs& a) {
   const auto counts = parse_point_counts(a.points);
   if (!counts.ok()) throw CLI::ValidationError("--points", counts.error);
-  const auto size = parse_image_size(a.size);
-  if (!size)
-    throw CLI::ValidationError("--size",
-                               fmt::format("'{}' is not WxH with W and H in 1..16384, e.g. 1920x1080", a.size));
+  const scene::Lens lens = parse_lens(a.size, scene::kDefaultVerticalFovDeg);
   if (a.frames < 1 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 1..{}", a.frames, kMaxFrames));
 
+  TerminalDiagnostics diagnostics;
   RealTracks real;
   if (a.data != "none") real = load_real_tracks(a.data);
-  for (const std::string& note : real.skipped) fmt::print(stderr, "bench: skipped {}\n", note);
+  for (const std::string& note : real.skipped) diagnostics.info("skipped " + note);
 
   BenchSettings settings;
-  settings.lens = scene::Lens{scene::kDefaultVerticalFovDeg, size->width, size->height};
+  settings.lens = lens;
   settings.frames = a.frames;
   TrackBench bench(settings);
   const std::string timing =
       bench.gpu_timing() ? "gpu (EXT_disjoint_timer_query)" : "cpu (wall time around the draw and glFinish)";
-  fmt::print(stderr, "bench: {} at {}x{}, {} timed frames after {} warm-up, track width {} px, timing: {}\n",
-             bench.renderer(), size->width, size->height, a.frames, settings.warmup_frames, settings.width_px, timing);
+  diagnostics.info(fmt::format("{} at {}x{}, {} timed frames after {} warm-up, track width {} px, timing: {}",
+                               bench.renderer(), lens.width_px, lens.height_px, a.frames, settings.warmup_frames,
+                               settings.width_px, timing));
 
   const std::size_t total = counts.value->size() + real.datasets.size();
   std::vector<BenchRow> rows;
@@ -128,10 +128,15 @@ int run_bench_tracks(const BenchArgs& a) {
   std::size_t index = 0;
   const auto measure = [&](const BenchDataset& d) {
     const auto start = std::chrono::steady_clock::now();
-    fmt::print(stderr, "bench: [{}/{}] {} ({} points):", ++index, total, d.name, d.point_count());
-    BenchRow row = bench.run(d, [](const std::string& technique) { fmt::print(stderr, " {}", technique); });
-    fmt::print(stderr, " ({:.1f} s)\n",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const std::string what = fmt::format("[{}/{}] {} ({} points):", ++index, total, d.name, d.point_count());
+    std::string done;
+    BenchRow row = bench.run(d, [&](const std::string& technique) {
+      done += " " + technique;
+      diagnostics.progress(what + done);
+    });
+    diagnostics.progress_done();
+    diagnostics.info(fmt::format("{}{} ({:.1f} s)", what, done,
+                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
     if (d.kind == "random_walk" && (!largest_walk || row.points >= largest_walk->points)) largest_walk = row;
     rows.push_back(std::move(row));
   };
@@ -140,7 +145,8 @@ int run_bench_tracks(const BenchArgs& a) {
   for (const BenchDataset& d : real.datasets) try {
       measure(d);
     } catch (const std::exception& e) {
-      fmt::print(stderr, " failed\n");
+      diagnostics.progress_done();
+      diagnostics.info(fmt::format("{} failed", d.name));
       real.skipped.push_back(d.name + ": " + e.what());
     }
 
@@ -149,7 +155,7 @@ int run_bench_tracks(const BenchArgs& a) {
   if (a.json) {
     nlohmann::json doc{{"renderer", bench.renderer()},
                        {"timing", bench.gpu_timing() ? "gpu" : "cpu"},
-                       {"size", {{"width", size->width}, {"height", size->height}}},
+                       {"size", {{"width", lens.width_px}, {"height", lens.height_px}}},
                        {"frames", a.frames},
                        {"warmup_frames", settings.warmup_frames},
                        {"width_px", settings.width_px},
@@ -160,7 +166,7 @@ int run_bench_tracks(const BenchArgs& a) {
     std::cout << doc.dump(2) << '\n';
   } else {
     fmt::print("renderer: {}; {}x{}; median of {} frames; track width {} px; timing: {}\n", bench.renderer(),
-               size->width, size->height, a.frames, settings.width_px, timing);
+               lens.width_px, lens.height_px, a.frames, settings.width_px, timing);
     fmt::print("{}", table(rows));
     if (targets) fmt::print("{}", targets_text(*targets));
   }

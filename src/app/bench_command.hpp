@@ -1,5 +1,5 @@
 #pragma once
-// `trailray bench tracks` (issue 5, "Speed"): the capsules of the track pass against the two
+// `trailray bench tracks` the capsules of the track pass against the two
 // usual techniques (a screen-space ribbon and an explicit 8-sided tube mesh), on seeded random
 // walks of the requested sizes and on the real tracks of a data folder, at one picture size:
 // median pass times, their ratios, and the GPU memory each technique spends per point. Prints a

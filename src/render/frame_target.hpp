@@ -1,7 +1,7 @@
 #pragma once
 // Where a frame goes (Renderer::draw): the renderer composes the frame offscreen, at the
 // camera's lens size, then hands it to its target, which reads it back into a picture, copies it
-// into a window, or (later) a browser canvas or a video encoder's frame.
+// into a window; a browser canvas or a video encoder's frame is one more kind of target.
 
 #include <string_view>
 

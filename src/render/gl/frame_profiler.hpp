@@ -1,6 +1,6 @@
 #pragma once
-// Time per render pass, per frame, averaged over the last frames: what `--profile` prints
-// (issue 4). CPU time is the wall time between begin and end of a pass (std::chrono::
+// Time per render pass, per frame, averaged over the last frames: what `--profile` prints.
+// CPU time is the wall time between begin and end of a pass (std::chrono::
 // steady_clock: what the pass costs the calling thread, including waits on the driver). GPU
 // time comes from EXT_disjoint_timer_query (GL_TIME_ELAPSED_EXT queries) where the context has
 // it: results are read a frame later (reading them at once would stall the pipeline), and a

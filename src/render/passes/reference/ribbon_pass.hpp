@@ -1,5 +1,5 @@
 #pragma once
-// The reference ribbon of the track benchmark (issue 5, "Speed"): the usual way to draw a
+// The reference ribbon of the track benchmark: the usual way to draw a
 // polyline, a flat camera-facing strip of constant width in pixels. Two vertices per point in a
 // vertex buffer (28 bytes each: the offset from the track's origin, the track's direction at
 // the point, the side), one GL_TRIANGLE_STRIP per segment, no joint handling beyond the

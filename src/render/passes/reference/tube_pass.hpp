@@ -1,5 +1,5 @@
 #pragma once
-// The reference tube of the track benchmark (issue 5, "Speed"): the explicit-mesh way to draw a
+// The reference tube of the track benchmark: the explicit-mesh way to draw a
 // track in 3D. Every point gets a ring of 8 vertices (position and normal, 24 bytes each), the
 // ring lying in the plane of the joint's bisector (widened along the bend, so the tube keeps its
 // radius through a turn and consecutive rings join without gaps), its vertices carried from ring
