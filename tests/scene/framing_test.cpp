@@ -428,3 +428,35 @@ TEST(Framing, RealFlightsFit) {
 
 }  // namespace
 }  // namespace trailray::scene
+
+namespace trailray::scene {
+namespace {
+
+// Framing the scene's tracks from their ECEF points (no geodetic conversion) gives the camera
+// framing the same points from latitude, longitude and height does.
+TEST(Framing, TracksFramedFromTheirEcefPointsAsFromTheirPositions) {
+  const std::vector<GeoPosition> points = straight_track(46.7, 7.85, 35.0, 8000.0, 1500.0);
+  Track t;
+  TrackPolyline line;
+  for (const GeoPosition& p : points) {
+    line.points_ecef.push_back(ecef_from(p));
+    t.altitude_m.push_back(p.height_m);
+  }
+  t.geometry.segments.push_back(line);
+  TrackSet set;
+  set.add(t);
+  FramingOptions options;
+  options.lens = {45.0, 960, 540};
+  const auto from_positions = frame_points(points, options);
+  const auto from_tracks = frame_tracks(set, options);
+  ASSERT_TRUE(from_positions.ok()) << from_positions.error;
+  ASSERT_TRUE(from_tracks.ok()) << from_tracks.error;
+  EXPECT_LT(glm::length(from_tracks.value->camera.position() - from_positions.value->camera.position()), 0.01);
+  EXPECT_NEAR(from_tracks.value->look_at.heading_deg, from_positions.value->look_at.heading_deg, 1e-6);
+  EXPECT_DOUBLE_EQ(from_tracks.value->ground_height_m, from_positions.value->ground_height_m);
+  set[0].visible = false;
+  EXPECT_FALSE(frame_tracks(set, options).ok()) << "only visible tracks are framed";
+}
+
+}  // namespace
+}  // namespace trailray::scene

@@ -184,6 +184,31 @@ TEST(ViewerTrack, ColourByChangesValuesAndRevision) {
   EXPECT_TRUE(t.geometry.segments[0].values.empty());
 }
 
+// The viewer keeps the colour scale until what it depends on changes: the metric, the given
+// range, a track's visibility, colouring or revision.
+TEST(ViewerModel, ColourRangeIsKeptUntilWhatItDependsOnChanges) {
+  ViewerModel model;
+  model.tracks = viewer_tracks(two_segment_file());
+  model.settings.style.tracks.color_by = track::ColorMetric::altitude;
+  EXPECT_FALSE(model.color_range().has_value()) << "no values yet: the tracks were built solid";
+  apply_color_metric(model.tracks, track::ColorMetric::altitude);  // a new revision
+  ASSERT_TRUE(model.color_range().has_value());
+  EXPECT_NEAR(model.color_range()->max, 700.0, 1e-6);
+  // Values changed in place without a new revision are not seen (the revision is the contract)...
+  model.tracks[0].geometry.segments[1].values.assign(11, 900.0f);
+  EXPECT_NEAR(model.color_range()->max, 700.0, 1e-6);
+  // ...and are once the revision says so.
+  model.tracks[0].bump_revision();
+  EXPECT_NEAR(model.color_range()->max, 900.0, 1e-6);
+  model.tracks[0].visible = false;
+  EXPECT_FALSE(model.color_range().has_value());
+  model.tracks[0].visible = true;
+  model.settings.style.tracks.range = track::ValueRange{0.0, 50.0};
+  EXPECT_EQ(model.color_range()->max, 50.0);
+  model.settings.style.tracks.color_by = track::ColorMetric::solid;
+  EXPECT_FALSE(model.color_range().has_value());
+}
+
 TEST(ViewerTrack, CurtainHeightsFromAltitudeAndGround) {
   auto tracks = viewer_tracks(two_segment_file());
   scene::Track& t = tracks[0];
