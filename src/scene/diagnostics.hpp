@@ -34,14 +34,6 @@ class CollectedDiagnostics : public Diagnostics {
   void info(const std::string& message) override { infos.push_back(message); }
   void note(const std::string& message) override { notes.push_back(message); }
 
-  // Hands everything collected to `sink`, in the order warnings, errors, infos, notes.
-  void forward_to(Diagnostics& sink) const {
-    for (const std::string& m : warnings) sink.warning(m);
-    for (const std::string& m : errors) sink.error(m);
-    for (const std::string& m : infos) sink.info(m);
-    for (const std::string& m : notes) sink.note(m);
-  }
-
   std::vector<std::string> warnings, errors, infos, notes;
 };
 

@@ -308,8 +308,7 @@ std::optional<std::string> options_problem(const FramingOptions& o) {
     if (!inside || !centred)
       return "framing area " + number(a.left_px) + "," + number(a.top_px) + " to " + number(a.right_px) + "," +
              number(a.bottom_px) + " px is not a rectangle of at least 16x16 px within the " +
-             std::to_string(o.lens.width_px) + "x" + std::to_string(o.lens.height_px) +
-             " image holding its centre";
+             std::to_string(o.lens.width_px) + "x" + std::to_string(o.lens.height_px) + " image holding its centre";
   }
   const KeptClearCorner& k = o.keep_clear;
   if (!(k.width_px >= 0.0 && std::isfinite(k.width_px) && k.height_px >= 0.0 && std::isfinite(k.height_px))) {
@@ -318,14 +317,14 @@ std::optional<std::string> options_problem(const FramingOptions& o) {
   return std::nullopt;
 }
 
-}  // namespace
+// The terrain height under the points: options.ground_height_m, else the lowest height among
+// them (NaN: none has one), else sea level.
+double ground_under(const FramingOptions& options, double lowest) {
+  return std::isfinite(options.ground_height_m) ? options.ground_height_m : std::isfinite(lowest) ? lowest : 0.0;
+}
 
-// The framing of points given in ECEF, with the lowest recorded height among them (NaN: none has
-// one) and the terrain height under them (options.ground_height_m, else that lowest height).
-static Result<Framing> frame_ecef(std::vector<glm::dvec3> ecef, double lowest, const FramingOptions& options) {
-  const double ground = std::isfinite(options.ground_height_m) ? options.ground_height_m
-                        : std::isfinite(lowest)                ? lowest
-                                                               : 0.0;
+// The framing of points given in ECEF over the ground at `ground` metres.
+Result<Framing> frame_ecef(std::vector<glm::dvec3> ecef, double ground, const FramingOptions& options) {
   // Centre: the points' mean in ECEF, brought onto the ellipsoid; a local frame there.
   glm::dvec3 sum(0.0);
   for (const glm::dvec3& p : ecef) sum += p;
@@ -383,6 +382,8 @@ static Result<Framing> frame_ecef(std::vector<glm::dvec3> ecef, double lowest, c
   return {Framing{look_at, camera, ground}, {}};
 }
 
+}  // namespace
+
 Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingOptions& options) {
   if (auto problem = options_problem(options)) return {std::nullopt, *problem};
   std::vector<GeoPosition> usable;
@@ -395,13 +396,12 @@ Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingO
   if (usable.empty())
     return {std::nullopt, "framing: none of the " + std::to_string(points.size()) +
                               " points has a latitude within -90..90 and a longitude within -180..180"};
-  const double ground = std::isfinite(options.ground_height_m) ? options.ground_height_m
-                        : std::isfinite(lowest)                ? lowest
-                                                               : 0.0;
+  const double ground = ground_under(options, lowest);
   std::vector<glm::dvec3> ecef;
   ecef.reserve(usable.size());
-  for (const GeoPosition& p : usable) ecef.push_back(ecef_from({p.lat_deg, p.lon_deg, std::isfinite(p.height_m) ? p.height_m : ground}));
-  return frame_ecef(std::move(ecef), lowest, options);
+  for (const GeoPosition& p : usable)
+    ecef.push_back(ecef_from({p.lat_deg, p.lon_deg, std::isfinite(p.height_m) ? p.height_m : ground}));
+  return frame_ecef(std::move(ecef), ground, options);
 }
 
 Result<Framing> frame_tracks(std::span<const Track* const> tracks, const FramingOptions& options) {
@@ -410,12 +410,13 @@ Result<Framing> frame_tracks(std::span<const Track* const> tracks, const Framing
   double lowest = std::numeric_limits<double>::quiet_NaN();
   for (const Track* track : tracks) {
     const Track& t = *track;
-    for (const TrackPolyline& line : t.geometry.segments) ecef.insert(ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
-    for (double h : t.altitude_m)
-      if (std::isfinite(h) && !(h >= lowest)) lowest = h;
+    for (const TrackPolyline& line : t.geometry.segments)
+      ecef.insert(ecef.end(), line.points_ecef.begin(), line.points_ecef.end());
+    const double track_lowest = t.lowest_altitude();
+    if (!(track_lowest >= lowest)) lowest = track_lowest;
   }
   if (ecef.empty()) return {std::nullopt, "framing: no track has a point"};
-  return frame_ecef(std::move(ecef), lowest, options);
+  return frame_ecef(std::move(ecef), ground_under(options, lowest), options);
 }
 
 Result<Framing> frame_tracks(const TrackSet& tracks, const FramingOptions& options) {

@@ -30,7 +30,6 @@ std::vector<LoadedTrackFile> read_track_files(const std::vector<std::string>& pa
 
 void RecordedPoints::add(const track::TrackFile& file) {
   const auto add_point = [&](const track::TrackPoint& p) {
-    ++count;
     if (p.has_ele() && !(p.ele >= lowest_m)) lowest_m = p.ele;
     if (!any_lon_deg) any_lon_deg = p.lon;
     if (!first_time_s && !std::isnan(p.time)) {

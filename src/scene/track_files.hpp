@@ -29,7 +29,6 @@ std::vector<LoadedTrackFile> read_track_files(const std::vector<std::string>& pa
 
 // Facts of the recorded points (track and route points of every file).
 struct RecordedPoints {
-  std::size_t count = 0;
   double lowest_m = std::numeric_limits<double>::quiet_NaN();  // NaN: no point has a height
   std::optional<double> first_time_s;                          // of the first timed point
   double first_time_lon_deg = 0.0;                             // where that point was

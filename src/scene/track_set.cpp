@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace trailray::scene {
@@ -31,10 +32,18 @@ std::optional<double> Track::end_time() const {
   return std::nullopt;
 }
 
+double Track::lowest_altitude() const {
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  for (double h : altitude_m)
+    if (std::isfinite(h) && !(h >= lowest)) lowest = h;
+  return lowest;
+}
+
 std::size_t Track::points_with_value() const {
   std::size_t n = 0;
   for (const TrackPolyline& line : geometry.segments)
-    n += static_cast<std::size_t>(std::count_if(line.values.begin(), line.values.end(), [](float v) { return !std::isnan(v); }));
+    n += static_cast<std::size_t>(
+        std::count_if(line.values.begin(), line.values.end(), [](float v) { return !std::isnan(v); }));
   return n;
 }
 
@@ -51,8 +60,6 @@ const Track* TrackSet::find(TrackId id) const {
   return nullptr;
 }
 
-Track* TrackSet::find(TrackId id) {
-  return const_cast<Track*>(static_cast<const TrackSet&>(*this).find(id));
-}
+Track* TrackSet::find(TrackId id) { return const_cast<Track*>(static_cast<const TrackSet&>(*this).find(id)); }
 
 }  // namespace trailray::scene

@@ -69,6 +69,8 @@ struct Track {
   // The first and last timestamp (nullopt: no timed point).
   std::optional<double> start_time() const;
   std::optional<double> end_time() const;
+  // The lowest recorded altitude (NaN: no point has one).
+  double lowest_altitude() const;
   // Points with a colour value.
   std::size_t points_with_value() const;
   void bump_revision() { ++revision; }

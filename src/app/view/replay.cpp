@@ -32,14 +32,13 @@ std::optional<std::size_t> last_point_before(const scene::Track& t, double time)
 }  // namespace
 
 TrackPosition position_at(const scene::Track& t, double time) {
-  const auto start = t.start_time();
-  const auto end = t.end_time();
-  if (!start) return {};
+  if (t.timed_points.empty()) return {};
+  const double start = t.time_unix_s[t.timed_points.front()], end = t.time_unix_s[t.timed_points.back()];
   const std::size_t n = t.point_count();
   const std::optional<std::size_t> before = last_point_before(t, time);
   if (!before) return on_point(t, t.timed_points.front(), false);
   const std::size_t a = *before;
-  const bool active = time >= *start && time <= *end;
+  const bool active = time >= start && time <= end;
   // The next timed point in the same segment: interpolate towards it; none: wait at `a`.
   const std::size_t seg = t.segment_of(a);
   const std::size_t seg_end = seg + 1 < t.segment_first.size() ? t.segment_first[seg + 1] : n;

@@ -17,27 +17,25 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
       out.errors.emplace_back(e.what());
     }
   }
-  out.warnings = diagnostics.warnings;
-  if (files.empty()) return out;
-  scene::TrackBuildOptions options;
-  options.heights = inputs.heights;
-  options.analysis = inputs.analysis;
-  options.inspect = true;
-  // The neutral ground (under points without elevation): as given, else the lowest point.
-  options.neutral_ground_m = inputs.neutral_ground_m;
-  if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = out.recorded.lowest_m;
-  if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = 0.0;
-  scene::TrackStyle style = inputs.style;
-  // Per-track --color counts the command line's tracks; later files take the palette.
-  if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
-  scene::CollectedDiagnostics build_diagnostics;
-  try {
-    out.tracks = scene::build_tracks(files, style, options, build_diagnostics, inputs.tracks_open);
-  } catch (const std::exception& e) {
-    out.errors.emplace_back(e.what());
-    out.tracks.clear();
+  if (!files.empty()) {
+    scene::TrackBuildOptions options;
+    options.heights = inputs.heights;
+    options.analysis = inputs.analysis;
+    options.inspect = true;
+    // The neutral ground (under points without elevation): as given, else the lowest point.
+    options.neutral_ground_m = inputs.neutral_ground_m;
+    if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = out.recorded.lowest_m;
+    if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = 0.0;
+    scene::TrackStyle style = inputs.style;
+    // Per-track --color counts the command line's tracks; later files take the palette.
+    if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
+    try {
+      out.tracks = scene::build_tracks(files, style, options, diagnostics, inputs.tracks_open);
+    } catch (const std::exception& e) {
+      out.errors.emplace_back(e.what());
+    }
   }
-  out.warnings.insert(out.warnings.end(), build_diagnostics.warnings.begin(), build_diagnostics.warnings.end());
+  out.warnings = std::move(diagnostics.warnings);
   return out;
 }
 

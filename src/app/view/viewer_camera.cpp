@@ -34,8 +34,7 @@ void ViewerApp::fly_to_track(int index) {
   framing.area = room.area;
   // The ground under the track when no terrain is in memory: its lowest recorded point, else the
   // neutral ground.
-  for (double h : t.altitude_m)
-    if (std::isfinite(h) && !(h >= framing.ground_height_m)) framing.ground_height_m = h;
+  framing.ground_height_m = t.lowest_altitude();
   if (std::isnan(framing.ground_height_m)) framing.ground_height_m = neutral_;
   const scene::Track* const one[] = {&t};
   const auto framed = scene::frame_tracks(one, framing);
