@@ -9,40 +9,21 @@
 #include <cmath>
 #include <thread>
 
-#include "geo/tile_id.hpp"
+#include "terrain/east_profile_source.hpp"
 
 namespace trailray::scene {
 namespace {
 
 constexpr double kLat = 46.5, kLon = 10.0;
 
-// A plane rising 0.1 m per 0.001 degree of longitude from 1000 m at kLon (65 x 65 pixel-is-point
-// tiles up to zoom 14).
-class SlopeSource : public terrain::HeightSource {
- public:
-  SlopeSource() {
-    info_.name = "slope";
-    info_.max_zoom = 14;
-  }
-  const terrain::SourceInfo& info() const override { return info_; }
-  terrain::TileResult<terrain::HeightTile> load(const terrain::TileId& id, std::stop_token) override {
-    terrain::TileResult<terrain::HeightTile> r;
-    r.status = terrain::TileStatus::ok;
-    terrain::HeightTile& t = r.tile;
-    t.id = id;
-    t.width = t.height = 65;
-    t.layout = terrain::SampleLayout::pixel_is_point;
-    for (std::uint32_t row = 0; row < 65; ++row)
-      for (std::uint32_t col = 0; col < 65; ++col)
-        t.heights.push_back(static_cast<float>(height_at(geo::latlon_from_tile_pixel(id, col, row, 64)->lon)));
-    terrain::update_height_range(t);
-    return r;
-  }
-  static double height_at(double lon) { return 1000.0 + 100.0 * (lon - kLon); }
+// A plane rising 0.1 m per 0.001 degree of longitude from 1000 m at kLon.
+double height_at(double lon) { return 1000.0 + 100.0 * (lon - kLon); }
 
- private:
-  terrain::SourceInfo info_;
-};
+test::EastProfileSource slope_source() {
+  const double metres_per_degree = 111320.0 * std::cos(kLat * M_PI / 180.0);
+  return test::EastProfileSource("slope", kLat, kLon,
+                                 [=](double east_m) { return height_at(kLon + east_m / metres_per_degree); });
+}
 
 Camera overhead() {
   auto made = camera_at({{kLat, kLon, 6000.0}, 0.0, -60.0}, Lens{45.0, 96, 54}, 1000.0);
@@ -65,7 +46,7 @@ TEST(TerrainView, WithoutASourceEveryTileIsTheNeutralGround) {
 }
 
 TEST(TerrainView, WaitingHandsOutLoadedTilesAndTheLowestTerrainInView) {
-  SlopeSource source;
+  test::EastProfileSource source = slope_source();
   TerrainView view(&source, nullptr);
   EXPECT_TRUE(std::isnan(view.height_in_memory(kLat + 0.01, kLon + 0.005)));  // nothing loaded yet
   const TerrainTiles tiles = view.tiles_for(overhead(), NAN);
@@ -78,11 +59,11 @@ TEST(TerrainView, WaitingHandsOutLoadedTilesAndTheLowestTerrainInView) {
     lowest = std::min(lowest, static_cast<double>(t.heights->min_m));
   }
   EXPECT_EQ(tiles.report.neutral_ground_m, lowest);
-  EXPECT_NEAR(view.height_in_memory(kLat + 0.01, kLon + 0.005), SlopeSource::height_at(kLon + 0.005), 0.01);
+  EXPECT_NEAR(view.height_in_memory(kLat + 0.01, kLon + 0.005), height_at(kLon + 0.005), 0.01);
 }
 
 TEST(TerrainView, NeverWaitingRequestsTilesForLaterCalls) {
-  SlopeSource source;
+  test::EastProfileSource source = slope_source();
   TerrainView view(&source, nullptr);
   TileLoadPolicy policy;
   policy.wait = false;
