@@ -14,9 +14,8 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
   const std::vector<scene::LoadedTrackFile> files = scene::read_track_files(paths, read, diagnostics);
   SceneTracks out;
   out.recorded = scene::recorded_points(files);
-  out.neutral_ground_m = std::isnan(out.recorded.lowest_m) ? 0.0 : out.recorded.lowest_m;
   scene::TrackBuildOptions build = options;
-  build.neutral_ground_m = out.neutral_ground_m;
+  build.neutral_ground_m = out.recorded.lowest_or_sea_level();
   for (scene::Track& t : scene::build_tracks(files, style, build, diagnostics)) out.tracks.add(std::move(t));
   return out;
 }
@@ -52,7 +51,7 @@ scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& le
   if (request.placement || request.look_at) {
     const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
     double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
-    if (std::isnan(ground)) ground = std::isnan(neutral_ground_m) ? 0.0 : neutral_ground_m;
+    if (std::isnan(ground)) ground = neutral_ground_m;
     auto made = request.placement ? scene::camera_at(*request.placement, lens, ground)
                                   : scene::camera_looking_at(*request.look_at, lens, ground);
     if (!made.ok()) throw CLI::ValidationError(request.placement ? "--camera" : "--look-at", made.error);

@@ -34,10 +34,10 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon);
 struct SceneTracks {
   scene::TrackSet tracks;
   scene::RecordedPoints recorded;  // the files' points as recorded (the sun's day, the lowest height)
-  double neutral_ground_m = 0.0;   // the lowest recorded height, else 0: under points without one
 };
 // Reads every file (the first that cannot be read throws, naming it) and builds its tracks
-// (build_tracks' errors).
+// (build_tracks' errors), points without an elevation on the lowest recorded height where there
+// is no terrain (options.neutral_ground_m is not read).
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics);

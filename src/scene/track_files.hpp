@@ -3,6 +3,7 @@
 // needs of the recorded points before anything is cleaned: the lowest height (the neutral
 // ground's), the first timestamp and where it was (the sun's day).
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -35,6 +36,9 @@ struct RecordedPoints {
   std::optional<double> any_lon_deg;                           // of the first point at all
 
   void add(const track::TrackFile& file);
+  // Where points without an elevation are placed when there is no terrain under them: the
+  // lowest recorded height, else sea level.
+  double lowest_or_sea_level() const { return std::isnan(lowest_m) ? 0.0 : lowest_m; }
 };
 RecordedPoints recorded_points(const std::vector<LoadedTrackFile>& files);
 

@@ -23,9 +23,8 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
     options.analysis = inputs.analysis;
     options.inspect = true;
     // The neutral ground (under points without elevation): as given, else the lowest point.
-    options.neutral_ground_m = inputs.neutral_ground_m;
-    if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = out.recorded.lowest_m;
-    if (std::isnan(options.neutral_ground_m)) options.neutral_ground_m = 0.0;
+    options.neutral_ground_m =
+        std::isnan(inputs.neutral_ground_m) ? out.recorded.lowest_or_sea_level() : inputs.neutral_ground_m;
     scene::TrackStyle style = inputs.style;
     // Per-track --color counts the command line's tracks; later files take the palette.
     if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();

@@ -58,7 +58,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   // Tracks are read before the first frame (like `render`); later files load in the background.
   LoadedViewerTracks first = load_viewer_tracks(o.tracks, load_inputs(std::numeric_limits<double>::quiet_NaN()));
   recorded_ = first.recorded;
-  neutral_ = std::isnan(recorded_.lowest_m) ? 0.0 : recorded_.lowest_m;
+  neutral_ = recorded_.lowest_or_sea_level();
   model_.settings.style = o.style;
   model_.settings.sun_time_unix = sun_time(o.sun_time_unix, recorded_);
   model_.analysis = o.analysis;
