@@ -92,11 +92,13 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
   }
   report.tracks_drawn = content.tracks.size();
 
-  const std::optional<ShadowCascades> cascades = shadow_cascades(content, camera, neutral);
+  // The sun and sky light of the frame: what decides the shadows and what the passes shade with.
+  const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);
+  const std::optional<ShadowCascades> cascades = shadow_cascades(content, camera, lighting, neutral);
   report.shadows_drawn = cascades.has_value();
   // The tracks' block origins relative to this camera (the shadow and track passes use them).
   TrackPass::prepare(content.tracks, camera);
-  run_passes(content, camera, target, items, cascades);
+  run_passes(content, camera, lighting, target, items, cascades);
 
   // Between frames: the draw lists above point into the caches until here.
   terrain_gpu_.end_frame(options_.mesh_budget_bytes, options_.imagery_budget_bytes);
@@ -106,8 +108,7 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
 }
 
 std::optional<ShadowCascades> Renderer::shadow_cascades(const FrameContent& content, const scene::Camera& camera,
-                                                        float neutral_m) {
-  const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);
+                                                        const SceneLighting& lighting, float neutral_m) {
   // The sun's disc below the horizon gives no direct light (sun_radiance is 0): nothing to shade.
   const bool sun_up = glm::dot(lighting.sun_radiance, glm::vec3(1.0f)) > 0.0f;
   if (!content.shading.shadows || !sun_up) return std::nullopt;
@@ -123,13 +124,13 @@ std::optional<ShadowCascades> Renderer::shadow_cascades(const FrameContent& cont
   return cascades;
 }
 
-void Renderer::run_passes(const FrameContent& content, const scene::Camera& camera, FrameTarget& target,
-                          std::span<const TerrainDrawItem> items, const std::optional<ShadowCascades>& cascades) {
+void Renderer::run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
+                          FrameTarget& target, std::span<const TerrainDrawItem> items,
+                          const std::optional<ShadowCascades>& cascades) {
   const scene::Lens& lens = camera.lens();
   const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
   ComposeSettings compose;
   compose.atmosphere = content.shading.atmosphere;
-  const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, compose.model);
   const TrackSceneSettings& tracks = content.track_settings;
   FramePasses passes(debug_groups_, target.profiler);
   if (cascades)

@@ -99,9 +99,10 @@ class Renderer {
  private:
   // The sun's cascades when the frame has shadows (and the maps for them), else nullopt.
   std::optional<ShadowCascades> shadow_cascades(const FrameContent& content, const scene::Camera& camera,
-                                                float neutral_m);
-  void run_passes(const FrameContent& content, const scene::Camera& camera, FrameTarget& target,
-                  std::span<const TerrainDrawItem> items, const std::optional<ShadowCascades>& cascades);
+                                                const SceneLighting& lighting, float neutral_m);
+  void run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
+                  FrameTarget& target, std::span<const TerrainDrawItem> items,
+                  const std::optional<ShadowCascades>& cascades);
 
   RendererOptions options_;
   DistanceEncoding distance_encoding_;
