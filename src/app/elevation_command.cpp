@@ -162,7 +162,7 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
       "grid, or a tile source's finest level (see README, \"Terrain sources\").\n"
       "--replace -o OUT.gpx writes a copy with the terrain heights as elevations (GPX 1.1).\n"
       "Exit status: 0 done, 1 a file or source could not be read, 2 a usage error.");
-  cmd->add_option("TRACK", args->file, "GPX, IGC or TCX file (gzip too), or - for standard input")
+  cmd->add_option("TRACK", args->file, "Track file: GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON (gzip too), or - for standard input")
       ->required()
       ->type_name("FILE");
   auto* json = cmd->add_flag("--json", args->json, "Print one JSON document: path, points, summary");

@@ -59,7 +59,7 @@ void add_stats_command(CLI::App& app, int& exit_code) {
       "(duplicates, same-second runs, backward jumps), enforcing --min-distance and Gaussian\n"
       "smoothing. The table shows clean figures; --json prints both, per track and per segment.\n"
       "Exit status: 0 all read, 1 when any file could not be read, 2 for a usage error.");
-  cmd->add_option("TRACK", args->files, "GPX, IGC or TCX files (gzip too), or - for standard input")
+  cmd->add_option("TRACK", args->files, "Track files: GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON (gzip too), or - for standard input")
       ->required()
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of tables");

@@ -67,7 +67,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "--screenshot OUT.png"
       " writes the picture at the end and exits.\n"
       "Exit status: 0 done, 1 a file, source, script or GL failed, 2 a usage error.");
-  cmd->add_option("TRACK", args->tracks, "GPX, IGC or TCX files to show (the view frames them)")->type_name("FILE");
+  cmd->add_option("TRACK", args->tracks, "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to show (the view frames them)")->type_name("FILE");
   cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");
   add_camera_options(*cmd, args->camera);
   add_shading_options(*cmd, args->style);

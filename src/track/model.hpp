@@ -72,7 +72,7 @@ struct Metadata {
   std::vector<std::pair<std::string, std::string>> fields;
 };
 
-enum class Format { Gpx, Igc, Tcx };
+enum class Format { Gpx, Igc, Tcx, Fit, Kml, Kmz, GeoJson };
 
 inline const char* format_name(Format f) {
   switch (f) {
@@ -82,6 +82,14 @@ inline const char* format_name(Format f) {
       return "igc";
     case Format::Tcx:
       return "tcx";
+    case Format::Fit:
+      return "fit";
+    case Format::Kml:
+      return "kml";
+    case Format::Kmz:
+      return "kmz";
+    case Format::GeoJson:
+      return "geojson";
   }
   return "unknown";
 }

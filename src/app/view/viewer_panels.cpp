@@ -122,7 +122,7 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     return;
   }
   if (model.loading) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading terrain...");
-  if (model.tracks.empty()) ImGui::TextDisabled("No track: drop a GPX, IGC or TCX file onto the window.");
+  if (model.tracks.empty()) ImGui::TextDisabled("No track: drop a track file (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) onto the window.");
   for (std::size_t i = 0; i < model.tracks.size(); ++i) {
     scene::Track& t = model.tracks[i];
     ImGui::PushID(static_cast<int>(i));

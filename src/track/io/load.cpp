@@ -30,7 +30,8 @@ ReadResult load_track_file(const std::string& path, const ReadOptions& options) 
   }
   auto format = detect_format(head, path);
   if (!format) {
-    result.error = Diagnostic{name, {1, 1, 0}, "not a GPX, IGC or TCX file (unrecognised content)"};
+    result.error =
+        Diagnostic{name, {1, 1, 0}, "not a GPX, IGC, TCX, FIT, KML, KMZ or GeoJSON file (unrecognised content)"};
     return result;
   }
   switch (*format) {
@@ -40,6 +41,14 @@ ReadResult load_track_file(const std::string& path, const ReadOptions& options) 
       return read_igc(*source, options);
     case Format::Tcx:
       return read_tcx(*source, options);
+    case Format::Fit:
+      return read_fit(*source, options);
+    case Format::Kml:
+      return read_kml(*source, options);
+    case Format::Kmz:
+      return read_kmz(*source, options);
+    case Format::GeoJson:
+      return read_geojson(*source, options);
   }
   return result;
 }

@@ -17,6 +17,12 @@ ReadResult read_gpx(ByteSource& source, const ReadOptions& options);
 std::optional<ReadResult> read_gpx_in_halves(ByteSource& source, const ReadOptions& options);
 ReadResult read_igc(ByteSource& source, const ReadOptions& options);
 ReadResult read_tcx(ByteSource& source, const ReadOptions& options);
+// Garmin FIT (binary; fit_reader.cpp).
+ReadResult read_fit(ByteSource& source, const ReadOptions& options);
+// KML, and KMZ (a zip holding KML files).
+ReadResult read_kml(ByteSource& source, const ReadOptions& options);
+ReadResult read_kmz(ByteSource& source, const ReadOptions& options);
+ReadResult read_geojson(ByteSource& source, const ReadOptions& options);
 
 // True when lat/lon are finite and within WGS84 range.
 inline bool valid_coordinates(double lat, double lon) {
