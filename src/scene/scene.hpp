@@ -11,6 +11,7 @@
 
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
+#include "scene/waypoints.hpp"
 #include "track/color_values.hpp"
 
 namespace trailray::scene {
@@ -21,7 +22,8 @@ struct Scene {
   // The terrain: nullptr draws the neutral ground everywhere. Not const: asking it for a camera's
   // tiles requests the missing ones.
   TerrainView* terrain = nullptr;
-  const TrackSet* tracks = nullptr;  // nullptr: no tracks
+  const TrackSet* tracks = nullptr;        // nullptr: no tracks
+  const WaypointSet* waypoints = nullptr;  // nullptr: no waypoints or place labels
   Style style;
   // The colour scale in use (color_range(*tracks, style)); nullopt: solid colours.
   std::optional<track::ValueRange> color_range;
