@@ -127,8 +127,15 @@ void TrackBuilder::add_record(const Message& m) {
 
 void TrackBuilder::add_event(const Message& m) {
   auto event = m.integer(event::kEvent), type = m.integer(event::kEventType);
-  if (event && type && *event == event::kEventTimer && (*type == event::kTypeStop || *type == event::kTypeStopAll))
+  if (!event || !type || *event != event::kEventTimer) return;
+  // The segment breaks at the restart, not at the stop: devices often write one more record
+  // after the stop event, which belongs to the stretch before the pause (gpsbabel agrees).
+  if (*type == event::kTypeStop || *type == event::kTypeStopAll) {
+    timer_stopped_ = true;
+  } else if (*type == event::kTypeStart && timer_stopped_) {
+    timer_stopped_ = false;
     break_pending_ = true;
+  }
 }
 
 void TrackBuilder::add_course_point(const Message& m) {

@@ -9,8 +9,8 @@
 //                     metadata field "records_without_position" (routine, so not a warning).
 //   session        -> one Track per session (multisport files have several): sport -> type;
 //                     records go to the session whose start_time they follow.
-//   event timer stop -> the next record starts a new Segment: the device recorded nothing
-//                     while stopped, so nothing may be measured across the pause (the
+//   timer stop, then start -> the next record starts a new Segment: the device recorded
+//                     nothing while stopped, so nothing may be measured across the pause (the
 //                     session's own distance leaves it out too). Laps do NOT split segments:
 //                     a lap boundary is a button press in a continuous recording, and a
 //                     segment boundary would drop the distance between the laps from
@@ -78,6 +78,7 @@ class TrackBuilder {
   std::optional<std::uint32_t> time_created_;
   std::optional<std::int64_t> correlation_offset_, utc_offset_;
   bool break_pending_ = false;
+  bool timer_stopped_ = false;
   int current_file_ = 0;
   bool saw_relative_time_ = false;
   std::size_t records_without_position_ = 0;
