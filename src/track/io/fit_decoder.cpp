@@ -206,7 +206,6 @@ std::optional<Diagnostic> decode(std::string_view bytes, WarningCollector& warni
       warnings.add_single(at(pos), "file cut inside the header of chained FIT file " + std::to_string(stats.files + 1));
       break;
     }
-    stats.header_ok = true;
     ++stats.files;
     if (header_size >= 14) {
       const std::uint16_t stored = le16(bytes, pos + 12);
@@ -217,9 +216,16 @@ std::optional<Diagnostic> decode(std::string_view bytes, WarningCollector& warni
             "FIT header CRC mismatch (stored " + hex(stored, 4) + ", computed " + hex(computed, 4) + "): data kept");
     }
     const std::size_t begin = pos + header_size;
-    std::size_t end = begin + le32(bytes, pos + 4);
+    const std::uint32_t data_size = le32(bytes, pos + 4);
+    std::size_t end = begin + data_size;
     bool cut = false;
-    if (end > bytes.size()) {
+    if (data_size == 0 && bytes.size() > begin) {
+      // A writer that never finished the file (a crash, a dead battery) leaves the size 0:
+      // read to the end of the input, where the data may stop in mid-message.
+      warnings.add_single(at(pos + 4), "the FIT header gives no data size (an unfinished file): read to the end");
+      end = bytes.size();
+      cut = true;
+    } else if (end > bytes.size()) {
       cut = stats.cut = true;
       warnings.add_single(at(pos + 4), "file cut: the FIT header announces " + std::to_string(end - begin) +
                                            " data bytes, " + std::to_string(bytes.size() - begin) +

@@ -51,7 +51,6 @@ struct DecodeStats {
   std::size_t compressed_headers = 0;  // data messages with a compressed-timestamp header
   std::size_t developer_fields = 0;    // developer fields skipped (in data messages)
   std::size_t mismatched_fields = 0;   // fields whose size is no multiple of their base type
-  bool header_ok = false;              // the first file header was a FIT header
   bool cut = false;                    // the input ended inside a file or a message
 };
 

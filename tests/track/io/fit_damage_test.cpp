@@ -133,6 +133,18 @@ TEST(FitDamage, AMessagePastTheAnnouncedDataSizeEndsThatFileOnly) {
   EXPECT_TRUE(mentions(r.warnings, "runs past the end of the FIT data"));
 }
 
+TEST(FitDamage, AnUnfinishedFileWithoutDataSizeIsReadToTheEnd) {
+  std::string bytes = simple_activity(5);
+  bytes.resize(bytes.size() - 2 - 10);  // no CRC, the last record cut
+  for (int i = 4; i < 8; ++i) bytes[static_cast<std::size_t>(i)] = 0;
+  bytes[12] = bytes[13] = 0;
+  auto r = read_fit_bytes(bytes);
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(all_points(r.file).size(), 4u);
+  EXPECT_TRUE(mentions(r.warnings, "no data size"));
+  EXPECT_TRUE(mentions(r.warnings, "cut"));
+}
+
 TEST(FitDamage, RandomByteFlipsNeverBreakTheContract) {
   const std::string whole = simple_activity(8);
   std::uint32_t seed = 12345;
