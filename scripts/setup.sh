@@ -13,6 +13,7 @@ packages=(
   # --- libraries used by src/ ---
   libfast-float-dev      # correctly rounded number parsing, several times faster than strtod/from_chars
   zlib1g-dev             # reading .gpx.gz / .igc.gz / .tcx.gz transparently
+  libzip-dev             # KMZ: the zip archives Google Earth packs KML in (track/io/zip_archive)
   libgeographiclib-dev   # WGS84 geodesic distances and local Cartesian frames (geo/)
   libcli11-dev           # command-line parsing (app/)
   libfmt-dev             # formatting of tables and messages

@@ -69,6 +69,9 @@ struct ReadOptions {
   enum class IgcAltitude { Auto, Gnss, Pressure } igc_altitude = IgcAltitude::Auto;
   // A plain GPX file at least this big is read in two halves on two threads (same result).
   std::int64_t two_part_min_bytes = 8 << 20;
+  // KMZ: the most bytes the archive may have, and its KML entries may decompress to together
+  // (a zip bomb is refused with an error instead of filling memory).
+  std::int64_t kmz_max_bytes = std::int64_t{1} << 30;
 };
 
 struct ReadResult {
