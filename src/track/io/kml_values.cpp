@@ -46,7 +46,7 @@ void split_kml_tuples(std::string_view text, std::vector<KmlTuple>& out) {
       std::size_t start = i;
       while (i < n && !is_space(text[i]) && text[i] != ',') ++i;
       auto v = parse_double(text.substr(start, i - start));
-      if (!v || count == 3)
+      if (!v || count >= 3)
         readable = false;
       else
         parts[count] = *v;
