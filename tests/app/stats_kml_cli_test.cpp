@@ -72,6 +72,5 @@ TEST(StatsKmlCli, KmzWithoutKmlFailsNamingTheFile) {
   auto r = run_command(binary() + " stats " + shell_quote(empty.string()) + " 2>" + shell_quote(err.str()));
   EXPECT_NE(r.status, 0);
   auto text = run_command("cat " + shell_quote(err.str()));
-  EXPECT_NE(text.out.find(empty.string() + ": no KML document inside the KMZ archive"), std::string::npos)
-      << text.out;
+  EXPECT_NE(text.out.find(empty.string() + ": no KML document inside the KMZ archive"), std::string::npos) << text.out;
 }

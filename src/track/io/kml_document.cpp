@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "track/io/kml_coordinates.hpp"
 #include "track/io/kml_gx_track.hpp"
 #include "track/io/kml_values.hpp"
 #include "track/io/parse_util.hpp"
@@ -102,13 +103,18 @@ struct PlacemarkState {
 
 class KmlHandler final : public XmlHandler {
  public:
-  KmlHandler(TrackFile& file, WarningCollector& warnings) : file_(file), warnings_(warnings) {}
+  KmlHandler(TrackFile& file, WarningCollector& warnings)
+      : file_(file),
+        warnings_(warnings),
+        on_tuple_([this](const KmlTuple& t, const SourcePosition& p) { add(t, p); }) {}
 
   std::size_t complete_points() const { return complete_points_; }
 
-  // After a cut: what was complete before it is kept (a gx:Track's points so far, lines whose
-  // coordinates ended, the placemark they belong to).
+  // After a cut: what was complete before it is kept (a gx:Track's points so far, the tuples
+  // before the last one of a cut <coordinates>, the placemark they belong to).
   void finish() {
+    if (in_coordinates_) coordinates_.finish_cut(on_tuple_);
+    in_coordinates_ = false;
     if (piece_) end_piece(false);
     if (multitrack_depth_ > 0) end_multitrack();
     if (placemark_.depth > 0) end_placemark();
@@ -143,7 +149,11 @@ class KmlHandler final : public XmlHandler {
         }
         break;
       case Tag::Coordinates:
-        coordinates_where_ = position();
+        if (piece_ && piece_->kind != Tag::Track && depth == piece_depth_ + 1 && !in_coordinates_) {
+          in_coordinates_ = true;
+          coordinates_.begin(position());
+          stream_text();  // a long track's coordinates may be far longer than the scanner's values
+        }
         break;
       case Tag::SimpleArrayData:
         array_index_ = -1;
@@ -169,6 +179,10 @@ class KmlHandler final : public XmlHandler {
     }
   }
 
+  void text_piece(std::string_view piece) override {
+    if (in_coordinates_) coordinates_.feed(piece, on_tuple_);
+  }
+
   void end_element(std::string_view /*name*/, std::string_view text) override {
     const Tag tag = stack_.back();
     const int depth = static_cast<int>(stack_.size());
@@ -189,7 +203,10 @@ class KmlHandler final : public XmlHandler {
         if (in_gx_track() && depth == piece_depth_ + 1) read_gx_coord(text);
         break;
       case Tag::Coordinates:
-        if (piece_ && piece_->kind != Tag::Track && depth == piece_depth_ + 1) read_coordinates(text);
+        if (in_coordinates_ && depth == piece_depth_ + 1) {
+          coordinates_.finish(on_tuple_);
+          in_coordinates_ = false;
+        }
         break;
       case Tag::AltitudeMode:
         if (piece_ && depth == piece_depth_ + 1)
@@ -251,41 +268,23 @@ class KmlHandler final : public XmlHandler {
   void read_gx_coord(std::string_view text) {
     auto c = parse_gx_coord(text);
     if (c && !valid_coordinates(c->lat, c->lon)) c.reset();
-    if (!c) warnings_.add("coords", position(), "point with invalid coordinates dropped (gx:coord " + quoted(text) + ")");
+    if (!c)
+      warnings_.add("coords", position(), "point with invalid coordinates dropped (gx:coord " + quoted(text) + ")");
     gx_.coords.push_back(c);
   }
 
-  // Where a tuple starts: the line by the newlines before it in the text; the column where
-  // known (the text's first line starts after the tag, whose length is not known here).
-  SourcePosition tuple_position(std::string_view text, std::size_t offset) const {
-    SourcePosition p = coordinates_where_;
-    p.byte_offset = -1;
-    std::string_view before = text.substr(0, offset);
-    std::size_t lines = 0;
-    for (char c : before) lines += c == '\n';
-    if (lines > 0) {
-      p.line += static_cast<std::int64_t>(lines);
-      p.column = static_cast<std::int64_t>(offset - before.rfind('\n'));
+  // One tuple of the <coordinates> being read.
+  void add(const KmlTuple& t, const SourcePosition& where) {
+    if (!t.value || !valid_coordinates(t.value->lat, t.value->lon)) {
+      warnings_.add("coords", where, "point with invalid coordinates dropped (" + quoted(t.text) + ")");
+      return;
     }
-    return p;
-  }
-
-  void read_coordinates(std::string_view text) {
-    tuples_.clear();
-    split_kml_tuples(text, tuples_);
-    for (const KmlTuple& t : tuples_) {
-      if (!t.value || !valid_coordinates(t.value->lat, t.value->lon)) {
-        warnings_.add("coords", tuple_position(text, t.offset),
-                      "point with invalid coordinates dropped (" + quoted(t.text) + ")");
-        continue;
-      }
-      if (piece_->kind == Tag::Point && !piece_->points.empty()) break;  // a Point has one position
-      TrackPoint p;
-      p.lon = t.value->lon;
-      p.lat = t.value->lat;
-      p.ele = t.value->alt;
-      piece_->points.push_back(p);
-    }
+    if (piece_->kind == Tag::Point && !piece_->points.empty()) return;  // a Point has one position
+    TrackPoint p;
+    p.lon = t.value->lon;
+    p.lat = t.value->lat;
+    p.ele = t.value->alt;
+    piece_->points.push_back(p);
   }
 
   void read_altitude_mode(std::string_view text, std::optional<AltitudeMode>& mode, SourcePosition& where) {
@@ -394,8 +393,9 @@ class KmlHandler final : public XmlHandler {
   std::size_t multitrack_first_ = 0;  // its first piece in placemark_.pieces
   std::optional<AltitudeMode> multitrack_mode_;
   SourcePosition multitrack_mode_where_;
-  SourcePosition coordinates_where_;
-  std::vector<KmlTuple> tuples_;
+  CoordinatesStream coordinates_;
+  bool in_coordinates_ = false;
+  CoordinatesStream::TupleHandler on_tuple_;
   bool data_is_type_ = false;
   std::size_t complete_points_ = 0;
 };

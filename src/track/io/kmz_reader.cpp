@@ -84,9 +84,10 @@ ReadResult read_kmz(ByteSource& source, const ReadOptions& options) {
   const std::vector<std::string>& names = archive->entry_names();
   const std::vector<std::size_t> entries = kml_entries(names);
   if (entries.empty()) {
-    result.error = Diagnostic{file, {},
-                              "no KML document inside the KMZ archive (" + std::to_string(names.size()) +
-                                  " entries" + (names.empty() ? "" : ": " + listed(names)) + ")"};
+    result.error = Diagnostic{file,
+                              {},
+                              "no KML document inside the KMZ archive (" + std::to_string(names.size()) + " entries" +
+                                  (names.empty() ? "" : ": " + listed(names)) + ")"};
     return result;
   }
   for (std::size_t index : entries) {

@@ -33,6 +33,10 @@ void XmlScanner::text(std::size_t from, std::size_t to) {
       }
     return;
   }
+  if (depth_ == stream_depth_) {
+    stream_piece(piece, from);
+    return;
+  }
   if (piece.find('&') != std::string_view::npos) {
     materialize_text();
     std::string why;
@@ -48,6 +52,21 @@ void XmlScanner::text(std::size_t from, std::size_t to) {
     text_.append(piece);
   }
   if (text_owned_ && text_.size() > XmlStream::kMaxValueBytes) error("text value longer than 1 MiB", to);
+}
+
+void XmlScanner::stream_piece(std::string_view piece, std::size_t from) {
+  if (piece.find('&') == std::string_view::npos) {
+    handler_.text_piece(piece);
+    return;
+  }
+  stream_decoded_.clear();
+  std::string why;
+  std::size_t bad = decode_references(piece, stream_decoded_, why);
+  if (bad != std::string_view::npos) {
+    error(why, from + bad);
+    return;
+  }
+  handler_.text_piece(stream_decoded_);
 }
 
 XmlScanner::Step XmlScanner::special(std::size_t p) {
@@ -68,9 +87,13 @@ XmlScanner::Step XmlScanner::special(std::size_t p) {
       error("CDATA outside the document element", p);
       return Step::Done;
     }
-    materialize_text();
-    text_.append(rest.substr(9, close - 9));
-    if (text_.size() > XmlStream::kMaxValueBytes) error("text value longer than 1 MiB", p);
+    if (depth_ == stream_depth_) {
+      handler_.text_piece(rest.substr(9, close - 9));
+    } else {
+      materialize_text();
+      text_.append(rest.substr(9, close - 9));
+      if (text_.size() > XmlStream::kMaxValueBytes) error("text value longer than 1 MiB", p);
+    }
     pos_ = p + close + 3;
     return Step::Done;
   }
@@ -265,6 +288,17 @@ XmlScanner::Step XmlScanner::markup(std::size_t p) {
   return start_tag(p);
 }
 
+std::size_t XmlScanner::before_cut_reference(std::size_t end) const {
+  // A character reference is at most 12 bytes after its '&' (decode_references' limit): one
+  // that the buffer's end cuts waits for the rest of the input.
+  if (eof_) return end;
+  const std::size_t tail = end - std::min<std::size_t>(end - pos_, 12);
+  const void* amp = memrchr(buf_.data() + tail, '&', end - tail);
+  if (!amp) return end;
+  const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(amp) - buf_.data());
+  return std::memchr(buf_.data() + at, ';', end - at) ? end : at;
+}
+
 XmlParseOutcome XmlScanner::run() {
   fill(0);
   if (!part_ && end_ >= 3 && std::memcmp(buf_.data(), "\xEF\xBB\xBF", 3) == 0) pos_ = 3;
@@ -277,8 +311,15 @@ XmlParseOutcome XmlScanner::run() {
     if (buf_[pos_] != '<') {
       const char* lt = static_cast<const char*>(std::memchr(buf_.data() + pos_, '<', end_ - pos_));
       std::size_t stop_at = lt ? static_cast<std::size_t>(lt - buf_.data()) : end_;
-      text(pos_, stop_at);
-      pos_ = stop_at;
+      if (!lt) stop_at = before_cut_reference(stop_at);
+      if (stop_at > pos_) {
+        text(pos_, stop_at);
+        pos_ = stop_at;
+      } else if (!fill(pos_)) {
+        // The input ends inside a reference: a cut file (inside the document) or junk after it.
+        if (depth_ == 0) text(pos_, end_);
+        pos_ = end_;
+      }
       continue;
     }
     if (markup(pos_) == Step::Done) continue;

@@ -54,6 +54,7 @@ class XmlScanner {
   XmlParseOutcome run();
   SourcePosition position_of(std::int64_t absolute);
   SourcePosition event_position() { return position_of(event_abs_); }
+  void stream_current_element() { stream_depth_ = depth_; }
   void stop(std::string message, std::int64_t absolute) {
     if (stopped_) return;
     stopped_ = true;
@@ -73,13 +74,16 @@ class XmlScanner {
   Step special(std::size_t p);
   bool collect_attributes();  // attrs_ -> attr_store_/attr_ptrs_; false on a bad reference
   void text(std::size_t from, std::size_t to);
+  void stream_piece(std::string_view piece, std::size_t from);  // text of a streamed element
   void materialize_text();
+  std::size_t before_cut_reference(std::size_t end) const;  // where text may be handed out up to
   void reset_text() {  // a new element starts, or one ended: its text is handed out
     text_.clear();
     text_view_ = {};
     text_owned_ = false;
   }
   void close_element() {  // pops the innermost open element
+    if (depth_ == stream_depth_) stream_depth_ = 0;
     names_.resize(starts_.back());
     starts_.pop_back();
     locals_.pop_back();
@@ -107,6 +111,8 @@ class XmlScanner {
   bool saw_root_ = false;
   bool root_closed_ = false;
   int depth_ = 0;
+  int stream_depth_ = 0;  // the depth of the element whose text is streamed; 0 when none
+  std::string stream_decoded_;
   std::string names_;                  // open element names, concatenated
   std::vector<std::uint32_t> starts_;  // where each open name starts in names_
   std::vector<std::uint32_t> locals_;  // where its local part (after any prefix) starts

@@ -27,6 +27,10 @@ void XmlHandler::fail(std::string message) {
   }
 }
 
+void XmlHandler::stream_text() {
+  if (context_) scanner_of(context_)->stream_current_element();
+}
+
 const char* xml_attribute(const char** attrs, std::string_view local_name) {
   for (const char** a = attrs; *a; a += 2)
     if (xml_local_name(a[0]) == local_name) return a[1];

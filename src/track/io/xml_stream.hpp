@@ -27,11 +27,19 @@ class XmlHandler {
   virtual void start_element(std::string_view local_name, const char** attrs) = 0;
   // `text` is the character data since the element (or its last child) started, untrimmed.
   virtual void end_element(std::string_view local_name, std::string_view text) = 0;
+  // A piece of the text of an element that stream_text() was called for, references decoded.
+  // Pieces split the text anywhere, even inside a number or a UTF-8 character.
+  virtual void text_piece(std::string_view /*piece*/) {}
 
   // Position of the current event (inside a callback), for warnings.
   SourcePosition position() const;
   // Stops parsing with an error at the current position (inside a callback).
   void fail(std::string message);
+  // Inside start_element: the text of the element just started (its own, not its children's)
+  // goes to text_piece() as it is read, and end_element gets none. For values with no bound on
+  // their length, such as KML's <coordinates>: not collected, they are not limited to
+  // XmlStream::kMaxValueBytes.
+  void stream_text();
 
  private:
   friend class XmlStream;

@@ -101,7 +101,7 @@ TEST(KmlReaderData, GxTrackSevenTimedPointsClampedToGround) {
   const auto& p = r.file.tracks[0].segments.at(0).points;
   ASSERT_EQ(p.size(), 7u);
   EXPECT_DOUBLE_EQ(p[6].lon, -122.203207);
-  EXPECT_DOUBLE_EQ(p[6].time, 1275012176.0);  // 2010-05-28T02:02:56Z
+  EXPECT_DOUBLE_EQ(p[6].time, 1275012176.0);                // 2010-05-28T02:02:56Z
   for (const TrackPoint& q : p) EXPECT_FALSE(q.has_ele());  // no altitudeMode: the spec's clampToGround
 }
 

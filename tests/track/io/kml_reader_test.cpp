@@ -1,8 +1,10 @@
 // The KML reader on synthetic documents, one construct each.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "track/io/byte_source.hpp"
 #include "track/io/readers.hpp"
@@ -75,8 +77,9 @@ TEST(KmlReader, GxTrackPairsTimesPositionsAndChannelsByIndex) {
 }
 
 TEST(KmlReader, GxTrackWithMismatchedListsIsWarnedAndPairedByOrder) {
-  ReadResult r = read(kml("<Placemark><gx:Track><when>2020-01-01T10:00:00Z</when>"
-                          "<gx:coord>8.1 47.1 1</gx:coord><gx:coord>8.2 47.2 1</gx:coord></gx:Track></Placemark>"));
+  ReadResult r =
+      read(kml("<Placemark><gx:Track><when>2020-01-01T10:00:00Z</when>"
+               "<gx:coord>8.1 47.1 1</gx:coord><gx:coord>8.2 47.2 1</gx:coord></gx:Track></Placemark>"));
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.file.tracks.size(), 1u);
   const auto& p = r.file.tracks[0].segments[0].points;
@@ -87,14 +90,14 @@ TEST(KmlReader, GxTrackWithMismatchedListsIsWarnedAndPairedByOrder) {
 }
 
 TEST(KmlReader, MultiTrackIsOneTrackWithASegmentPerGxTrack) {
-  ReadResult r = read(kml(
-      "<Placemark><name>Run</name><ExtendedData><Data name=\"type\"><value>running</value></Data></ExtendedData>\n"
-      "<gx:MultiTrack><altitudeMode>absolute</altitudeMode>\n"
-      "<gx:Track><when>2020-01-01T10:00:00Z</when><gx:coord>8.1 47.1 100</gx:coord>"
-      "<when>2020-01-01T10:00:01Z</when><gx:coord>8.2 47.2 101</gx:coord></gx:Track>\n"
-      "<gx:Track><altitudeMode>clampToGround</altitudeMode><when>2020-01-01T11:00:00Z</when>"
-      "<gx:coord>8.3 47.3 102</gx:coord></gx:Track>\n"
-      "</gx:MultiTrack></Placemark>"));
+  ReadResult r = read(
+      kml("<Placemark><name>Run</name><ExtendedData><Data name=\"type\"><value>running</value></Data></ExtendedData>\n"
+          "<gx:MultiTrack><altitudeMode>absolute</altitudeMode>\n"
+          "<gx:Track><when>2020-01-01T10:00:00Z</when><gx:coord>8.1 47.1 100</gx:coord>"
+          "<when>2020-01-01T10:00:01Z</when><gx:coord>8.2 47.2 101</gx:coord></gx:Track>\n"
+          "<gx:Track><altitudeMode>clampToGround</altitudeMode><when>2020-01-01T11:00:00Z</when>"
+          "<gx:coord>8.3 47.3 102</gx:coord></gx:Track>\n"
+          "</gx:MultiTrack></Placemark>"));
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.file.tracks.size(), 1u);
   const Track& t = r.file.tracks[0];
@@ -109,9 +112,9 @@ TEST(KmlReader, MultiTrackIsOneTrackWithASegmentPerGxTrack) {
 }
 
 TEST(KmlReader, LineStringTuplesWithAndWithoutAltitude) {
-  ReadResult r = read(
-      kml("<Placemark><name>Line</name><LineString><altitudeMode>absolute</altitudeMode><coordinates>\n"
-          "  8.1,47.1,500 8.2,47.2\n\t+008.3000,+47.300,520.25\n 8.4, 47.4, 530\n</coordinates></LineString></Placemark>"));
+  ReadResult r = read(kml(
+      "<Placemark><name>Line</name><LineString><altitudeMode>absolute</altitudeMode><coordinates>\n"
+      "  8.1,47.1,500 8.2,47.2\n\t+008.3000,+47.300,520.25\n 8.4, 47.4, 530\n</coordinates></LineString></Placemark>"));
   ASSERT_TRUE(r.ok());
   EXPECT_TRUE(r.warnings.empty());
   ASSERT_EQ(r.file.tracks.size(), 1u);
@@ -126,14 +129,14 @@ TEST(KmlReader, LineStringTuplesWithAndWithoutAltitude) {
 }
 
 TEST(KmlReader, MultiGeometryLinesAreSegmentsAndItsPointsWaypoints) {
-  ReadResult r = read(kml(
-      "<Placemark><name>Both</name><description>d</description><MultiGeometry>\n"
-      "<LineString><coordinates>8.1,47.1 8.2,47.2</coordinates></LineString>\n"
-      "<Point><coordinates>8.15,47.15</coordinates></Point>\n"
-      "<LineString><coordinates>8.3,47.3 8.4,47.4 8.5,47.5</coordinates></LineString>\n"
-      "<Polygon><outerBoundaryIs><LinearRing><coordinates>1,1 2,2 3,1 1,1</coordinates></LinearRing>"
-      "</outerBoundaryIs></Polygon>\n"
-      "</MultiGeometry></Placemark>"));
+  ReadResult r =
+      read(kml("<Placemark><name>Both</name><description>d</description><MultiGeometry>\n"
+               "<LineString><coordinates>8.1,47.1 8.2,47.2</coordinates></LineString>\n"
+               "<Point><coordinates>8.15,47.15</coordinates></Point>\n"
+               "<LineString><coordinates>8.3,47.3 8.4,47.4 8.5,47.5</coordinates></LineString>\n"
+               "<Polygon><outerBoundaryIs><LinearRing><coordinates>1,1 2,2 3,1 1,1</coordinates></LinearRing>"
+               "</outerBoundaryIs></Polygon>\n"
+               "</MultiGeometry></Placemark>"));
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.file.tracks.size(), 1u);
   ASSERT_EQ(r.file.tracks[0].segments.size(), 2u);  // the polygon is an area, not a track
@@ -146,12 +149,13 @@ TEST(KmlReader, MultiGeometryLinesAreSegmentsAndItsPointsWaypoints) {
 }
 
 TEST(KmlReader, NestedFoldersAndDocumentsAreReadInOrder) {
-  ReadResult r = read(kml("<name>Top</name><Folder><name>Inner</name><Document><Folder>\n"
-                          "<Placemark><name>A</name><LineString><coordinates>1,1 2,2</coordinates></LineString>"
-                          "</Placemark>\n</Folder></Document>\n"
-                          "<Placemark><name>B</name><LineString><coordinates>3,3 4,4</coordinates></LineString>"
-                          "</Placemark></Folder>\n"
-                          "<Placemark><name>C</name><Point><coordinates>5,5</coordinates></Point></Placemark>\n"));
+  ReadResult r =
+      read(kml("<name>Top</name><Folder><name>Inner</name><Document><Folder>\n"
+               "<Placemark><name>A</name><LineString><coordinates>1,1 2,2</coordinates></LineString>"
+               "</Placemark>\n</Folder></Document>\n"
+               "<Placemark><name>B</name><LineString><coordinates>3,3 4,4</coordinates></LineString>"
+               "</Placemark></Folder>\n"
+               "<Placemark><name>C</name><Point><coordinates>5,5</coordinates></Point></Placemark>\n"));
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.file.metadata.name, "Top");  // the Document under <kml>, not the folders inside
   ASSERT_EQ(r.file.tracks.size(), 2u);
@@ -162,11 +166,12 @@ TEST(KmlReader, NestedFoldersAndDocumentsAreReadInOrder) {
 }
 
 TEST(KmlReader, PointKeepsItsTimeStamp) {
-  ReadResult r = read(kml("<Placemark><name>Summit</name><TimeStamp><when>2015-07-27T20:08:36+03:00</when>"
-                          "</TimeStamp><Point><altitudeMode>absolute</altitudeMode>"
-                          "<coordinates>40.44,56.41,138.5</coordinates></Point></Placemark>\n"
-                          "<Placemark><name>Untimed</name><Point><coordinates>40.5,56.5,0</coordinates></Point>"
-                          "</Placemark>"));
+  ReadResult r =
+      read(kml("<Placemark><name>Summit</name><TimeStamp><when>2015-07-27T20:08:36+03:00</when>"
+               "</TimeStamp><Point><altitudeMode>absolute</altitudeMode>"
+               "<coordinates>40.44,56.41,138.5</coordinates></Point></Placemark>\n"
+               "<Placemark><name>Untimed</name><Point><coordinates>40.5,56.5,0</coordinates></Point>"
+               "</Placemark>"));
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.file.waypoints.size(), 2u);
   EXPECT_DOUBLE_EQ(r.file.waypoints[0].point.time, 1438016916.0);  // 17:08:36Z
@@ -204,22 +209,24 @@ TEST(KmlReader, AltitudeModes) {
   EXPECT_NE(warning_containing(unknown, "unknown altitudeMode 'onTheMoon'"), nullptr);
 
   // After the coordinates, where the schema does not put it, it still applies.
-  ReadResult after = read(kml("<Placemark><LineString><coordinates>8.1,47.1,500</coordinates>"
-                              "<altitudeMode>absolute</altitudeMode></LineString></Placemark>"));
+  ReadResult after =
+      read(kml("<Placemark><LineString><coordinates>8.1,47.1,500</coordinates>"
+               "<altitudeMode>absolute</altitudeMode></LineString></Placemark>"));
   EXPECT_DOUBLE_EQ(after.file.tracks[0].segments[0].points[0].ele, 500.0);
 }
 
 TEST(KmlReader, BadCoordinatesAreDroppedWithOneCountedWarningNamingTheLine) {
-  ReadResult r = read(kml("<Placemark><LineString><altitudeMode>absolute</altitudeMode><coordinates>\n"
-                          "8.1,47.1,1\n"
-                          "8.2,91,1\n"      // latitude out of range
-                          "abc,47.3,1\n"    // not a number
-                          "8.4\n"           // one component
-                          "1,2,3,4\n"       // four
-                          "8.5,47.5,1\n"
-                          "</coordinates></LineString></Placemark>\n"
-                          "<Placemark><gx:Track><when>2020-01-01T10:00:00Z</when><when>2020-01-01T10:00:01Z</when>"
-                          "<gx:coord>200 47 1</gx:coord><gx:coord>8 47 1</gx:coord></gx:Track></Placemark>"));
+  ReadResult r =
+      read(kml("<Placemark><LineString><altitudeMode>absolute</altitudeMode><coordinates>\n"
+               "8.1,47.1,1\n"
+               "8.2,91,1\n"    // latitude out of range
+               "abc,47.3,1\n"  // not a number
+               "8.4\n"         // one component
+               "1,2,3,4\n"     // four
+               "8.5,47.5,1\n"
+               "</coordinates></LineString></Placemark>\n"
+               "<Placemark><gx:Track><when>2020-01-01T10:00:00Z</when><when>2020-01-01T10:00:01Z</when>"
+               "<gx:coord>200 47 1</gx:coord><gx:coord>8 47 1</gx:coord></gx:Track></Placemark>"));
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.file.tracks.size(), 2u);
   EXPECT_EQ(r.file.tracks[0].segments[0].points.size(), 2u);
@@ -234,9 +241,10 @@ TEST(KmlReader, BadCoordinatesAreDroppedWithOneCountedWarningNamingTheLine) {
 }
 
 TEST(KmlReader, UnreadableTimesAndValuesAreWarned) {
-  ReadResult r = read(kml("<Placemark><gx:Track><when>yesterday</when><gx:coord>8 47 1</gx:coord>"
-                          "<ExtendedData><SchemaData><gx:SimpleArrayData name=\"hr\"><gx:value>fast</gx:value>"
-                          "</gx:SimpleArrayData></SchemaData></ExtendedData></gx:Track></Placemark>"));
+  ReadResult r =
+      read(kml("<Placemark><gx:Track><when>yesterday</when><gx:coord>8 47 1</gx:coord>"
+               "<ExtendedData><SchemaData><gx:SimpleArrayData name=\"hr\"><gx:value>fast</gx:value>"
+               "</gx:SimpleArrayData></SchemaData></ExtendedData></gx:Track></Placemark>"));
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.file.tracks.size(), 1u);
   EXPECT_FALSE(r.file.tracks[0].segments[0].points[0].has_time());
@@ -257,8 +265,9 @@ TEST(KmlReader, PrefixedKml21AndCdataNamesRead) {
 }
 
 TEST(KmlReader, Utf16DocumentIsRead) {
-  const std::string utf8 = kml("<Placemark><name>Zürich</name><Point><coordinates>8.5,47.4</coordinates></Point>"
-                               "</Placemark>");
+  const std::string utf8 =
+      kml("<Placemark><name>Zürich</name><Point><coordinates>8.5,47.4</coordinates></Point>"
+          "</Placemark>");
   std::string utf16 = "\xFF\xFE";
   for (std::size_t i = 0; i < utf8.size(); ++i) {
     unsigned char c = static_cast<unsigned char>(utf8[i]);
@@ -288,12 +297,14 @@ TEST(KmlReader, CutFileKeepsCompletePointsWithAWarning) {
   ASSERT_EQ(r.file.tracks.size(), 1u);
   EXPECT_EQ(r.file.tracks[0].segments[0].points.size(), 2u);
   EXPECT_NE(warning_containing(r, "kept the 2 complete points"), nullptr);
-  // Cut inside a LineString's coordinates: those points are not complete.
+  // Cut inside a LineString's coordinates: the tuples before the last are complete (the last
+  // might have gone on: "2,2" could have been "2,2,5").
   const std::string line =
       kml("<Placemark><LineString><coordinates>1,1 2,2 3,3</coordinates></LineString></Placemark>");
   ReadResult r2 = read(line.substr(0, line.find("3,3")));
   ASSERT_TRUE(r2.ok());
-  EXPECT_TRUE(r2.file.tracks.empty());
+  ASSERT_EQ(r2.file.tracks.size(), 1u);
+  EXPECT_EQ(r2.file.tracks[0].point_count(), 1u);
   ReadOptions strict;
   strict.strict = true;
   EXPECT_FALSE(read(cut, strict).ok());
@@ -310,4 +321,82 @@ TEST(KmlReader, ErrorsNameLineAndColumn) {
   ReadResult wrong_root = read("<gpx><trk/></gpx>");
   ASSERT_FALSE(wrong_root.ok());
   EXPECT_NE(wrong_root.error->message.find("expected <kml>"), std::string::npos);
+}
+
+TEST(KmlReader, LineStringLongerThanTheScannersValueLimitIsReadWhole) {
+  // 200,000 tuples (about 5 MB of text, past the 1 MiB the scanner holds as one value), with a
+  // bad one near the end whose line is still named.
+  std::string coordinates = "\n";
+  for (int i = 0; i < 200000; ++i) {
+    if (i == 199990) coordinates += "8.5,95.0,1\n";
+    coordinates += std::to_string(8.0 + i * 1e-6) + "," + std::to_string(47.0 + i * 1e-6) + "," +
+                   std::to_string(500 + i % 100) + "\n";
+  }
+  const std::string doc =
+      kml("<Placemark><LineString><altitudeMode>absolute</altitudeMode>"
+          "<coordinates>" +
+          coordinates + "</coordinates></LineString></Placemark>");
+  ASSERT_GT(doc.size(), 4u << 20);
+  ReadResult r = read(doc);
+  ASSERT_TRUE(r.ok()) << r.error->to_string();
+  ASSERT_EQ(r.file.tracks.size(), 1u);
+  const auto& p = r.file.tracks[0].segments[0].points;
+  ASSERT_EQ(p.size(), 200000u);
+  EXPECT_NEAR(p[123456].lon, 8.123456, 1e-9);
+  EXPECT_DOUBLE_EQ(p[123456].ele, 556.0);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].position.line, 4 + 199990 + 1);  // the document's 4th line holds <coordinates>
+  EXPECT_EQ(r.warnings[0].position.column, 1);
+}
+
+// A source that gives a few bytes per read, so the scanner's buffer ends everywhere: inside
+// names, numbers and character references.
+class TrickleSource final : public ByteSource {
+ public:
+  TrickleSource(std::string data, std::size_t step)
+      : ByteSource("test.kml", "test.kml"), data_(std::move(data)), step_(step) {}
+  std::ptrdiff_t read(char* out, std::size_t max) override {
+    const std::size_t n = std::min({max, step_, data_.size() - at_});
+    data_.copy(out, n, at_);
+    at_ += n;
+    return static_cast<std::ptrdiff_t>(n);
+  }
+  std::string error() const override { return {}; }
+
+ private:
+  std::string data_;
+  std::size_t step_, at_ = 0;
+};
+
+TEST(KmlReader, ReadsAlikeWhateverChunksTheInputComesIn) {
+  const std::string doc = kml("<name>A &amp; B &#x263A; &lt;&gt;</name>\n" + kGxTrack +
+                              "<Placemark><name>Line &quot;1&quot;</name><LineString><coordinates>"
+                              "8.1,47.1&#32;8.2,47.2&#x0A;8.3,47.3 bad,1 <![CDATA[8.4,47.4]]> 8.5,47.5"
+                              "</coordinates></LineString></Placemark>");
+  const ReadResult whole = read(doc);
+  ASSERT_TRUE(whole.ok()) << whole.error->to_string();
+  EXPECT_EQ(whole.file.metadata.name, "A & B \u263A <>");
+  ASSERT_EQ(whole.file.tracks.size(), 2u);
+  EXPECT_EQ(whole.file.tracks[1].name, "Line \"1\"");
+  EXPECT_EQ(whole.file.tracks[1].point_count(), 5u);
+  ASSERT_EQ(whole.warnings.size(), 1u);
+  for (std::size_t step = 1; step <= 9; ++step) {
+    TrickleSource src(doc, step);
+    const ReadResult r = read_kml(src, {});
+    ASSERT_TRUE(r.ok()) << step << ": " << r.error->to_string();
+    EXPECT_EQ(r.file.metadata.name, whole.file.metadata.name) << step;
+    ASSERT_EQ(r.file.tracks.size(), 2u) << step;
+    EXPECT_EQ(r.file.tracks[1].name, whole.file.tracks[1].name) << step;
+    for (std::size_t t = 0; t < 2; ++t) {
+      const auto& a = r.file.tracks[t].segments[0].points;
+      const auto& b = whole.file.tracks[t].segments[0].points;
+      ASSERT_EQ(a.size(), b.size()) << step;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].lon, b[i].lon) << step;
+        EXPECT_EQ(a[i].lat, b[i].lat) << step;
+      }
+    }
+    ASSERT_EQ(r.warnings.size(), 1u) << step;
+    EXPECT_EQ(r.warnings[0].position.line, whole.warnings[0].position.line) << step;
+  }
 }

@@ -27,8 +27,8 @@ TEST(KmlValues, TuplesSplitOnWhitespaceAndKeepTheirOffsets) {
 
 TEST(KmlValues, TuplesWithTooFewOrTooManyComponentsAreUnreadable) {
   std::vector<KmlTuple> t;
-  split_kml_tuples("1 1,2,3,4 1,,2 , 1,2,3,4,5,6,7", t);
-  ASSERT_EQ(t.size(), 4u);  // the comma after "1,,2" continues it
+  split_kml_tuples("1 1,2,3,4 1,,2 , 9 1,2,3,4,5,6,7", t);
+  ASSERT_EQ(t.size(), 4u);  // the comma after "1,,2" continues it to the 9
   for (const auto& x : t) EXPECT_FALSE(x.value) << x.text;
   t.clear();
   split_kml_tuples("   \n ", t);

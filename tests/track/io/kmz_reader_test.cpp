@@ -46,11 +46,11 @@ TEST(KmzReader, DocKmlIsReadAloneWhenPresent) {
 }
 
 TEST(KmzReader, WithoutDocKmlEveryKmlEntryIsReadInOrder) {
-  std::string zip = make_zip({{"b/track1.kml", kml("First", line("A", "1,1 2,2"))},
-                              {"__MACOSX/b/._track1.kml", "\0\x05\x16\x07 not xml"},
-                              {"readme.txt", "hello"},
-                              {"track2.KML", kml("Second", line("B", "3,3 4,4 5,5") +
-                                                               "<Placemark><name>W</name><Point><coordinates>6,6"
+  std::string zip = make_zip(
+      {{"b/track1.kml", kml("First", line("A", "1,1 2,2"))},
+       {"__MACOSX/b/._track1.kml", "\0\x05\x16\x07 not xml"},
+       {"readme.txt", "hello"},
+       {"track2.KML", kml("Second", line("B", "3,3 4,4 5,5") + "<Placemark><name>W</name><Point><coordinates>6,6"
                                                                "</coordinates></Point></Placemark>")}});
   ReadResult r = read(zip);
   ASSERT_TRUE(r.ok()) << r.error->to_string();
