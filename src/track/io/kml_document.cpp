@@ -17,7 +17,6 @@
 
 #include "track/io/kml_document.hpp"
 
-#include <cctype>
 #include <optional>
 #include <string>
 #include <vector>
