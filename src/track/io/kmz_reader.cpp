@@ -49,15 +49,15 @@ std::string listed(const std::vector<std::string>& names) {
 // The whole archive: a zip is read from its end (the central directory), and the source may be
 // a stream. False with `error` set on a read error or an archive over `limit` bytes.
 bool read_all(ByteSource& source, std::int64_t limit, std::string& bytes, std::string& error) {
-  char chunk[1 << 16];
+  std::vector<char> chunk(1 << 16);  // on the heap: WebAssembly stacks are small
   for (;;) {
-    const std::ptrdiff_t n = source.next(chunk, sizeof chunk);
+    const std::ptrdiff_t n = source.next(chunk.data(), chunk.size());
     if (n < 0) {
       error = "cannot read: " + source.error();
       return false;
     }
     if (n == 0) return true;
-    bytes.append(chunk, static_cast<std::size_t>(n));
+    bytes.append(chunk.data(), static_cast<std::size_t>(n));
     if (static_cast<std::int64_t>(bytes.size()) > limit) {
       error = "archive larger than " + std::to_string(limit >> 20) + " MiB: not read";
       return false;
