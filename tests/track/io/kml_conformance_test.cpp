@@ -1,10 +1,9 @@
-// Conformance with two peers read in the same test run.
+// Conformance with two peers, each read in the same test run.
 //
-// GDAL's OGR (Debian python3-gdal, the LIBKML driver), read in the same test
-// run: for every KML and KMZ in shared/data/kml that OGR reads, trailray's lines and points have
-// the same positions, to 1e-7 degree. Lines are tracks' segments (LineString, gx:Track, each
-// gx:Track of a gx:MultiTrack), points are waypoints; both sides are compared as sorted lists,
-// since OGR orders features by its layers (folders) rather than by the document.
+// GDAL's OGR (Debian python3-gdal, the LIBKML driver): for every KML and KMZ in shared/data/kml
+// that OGR reads, trailray's lines and points have the same positions, to 1e-7 degree. Lines are tracks' segments
+// (LineString, gx:Track, each gx:Track of a gx:MultiTrack), points are waypoints; both sides are compared as sorted
+// lists, since OGR orders features by its layers (folders) rather than by the document.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
