@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_command.hpp"
+#include "app/convert_command.hpp"
 #include "app/elevation_command.hpp"
 #include "app/render_command.hpp"
 #include "app/stats_command.hpp"
@@ -21,6 +22,7 @@ int run_cli(int argc, char** argv) {
   int exit_code = 0;
   add_stats_command(app, exit_code);
   add_elevation_command(app, exit_code);
+  add_convert_command(app, exit_code);
   add_render_command(app, exit_code);
   add_view_command(app, exit_code);
   add_bench_command(app, exit_code);

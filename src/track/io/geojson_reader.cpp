@@ -11,6 +11,7 @@
 //   Polygon, MultiPolygon, unknown types -> skipped with a counted warning.
 //   positions [lon, lat, ele?] (further numbers ignored); properties.name -> Track.name,
 //   desc|description -> description, type -> Track.type.
+//   The top level's "name", "description" and "time" (foreign members) -> metadata.
 //   Per-point values (togeojson's conventions), one value per position, an array per line for
 //   multi-line geometries, null for none:
 //     properties.coordTimes or coordinateProperties.times      ISO 8601 strings
@@ -161,6 +162,7 @@ class GeoJsonHandler {
     switch (f.role) {
       case Role::Object:
         if (f.key == "type" && text) f.object->type = *text;
+        if (f.slot == Slot::Root && text) root_text(f.key, *text);
         break;
       case Role::Properties:
         if (text) property_text(f, *text);
@@ -180,6 +182,17 @@ class GeoJsonHandler {
         break;
     }
     return true;
+  }
+
+  // A FeatureCollection's own name, description and time (foreign members; our writer's).
+  void root_text(const std::string& k, const std::string& text) {
+    Metadata& m = file_.metadata;
+    if (k == "name")
+      m.name = text;
+    else if (k == "description")
+      m.description = text;
+    else if (k == "time")
+      if (auto t = parse_iso8601(text)) m.time = *t;
   }
 
   void property_text(const Frame& f, const std::string& text) {

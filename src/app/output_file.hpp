@@ -1,0 +1,24 @@
+#pragma once
+// Writing a command's output file safely: never over one of its inputs (the same file by
+// identity, device and inode, so a hard link, a symbolic link or another spelling of the path is
+// caught too), never over an existing file unless asked, and atomically (a temporary file in the
+// same folder, flushed to disk, then renamed over the target: a reader never sees half a file
+// and a failure leaves any earlier file as it was).
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace trailray::app {
+
+// Throws std::runtime_error naming `output` when it is one of `inputs` ("-" never is), or when it
+// exists and `force` is false, or is a folder.
+void check_output_path(const std::string& output, const std::vector<std::string>& inputs, bool force);
+
+// Calls `write` with a stream into a temporary file next to `output`, then renames it over
+// `output`. Throws std::runtime_error naming `output` and the reason; the temporary file is
+// removed on any failure, also when `write` throws.
+void write_file_atomically(const std::string& output, const std::function<void(std::ostream&)>& write);
+
+}  // namespace trailray::app
