@@ -123,6 +123,7 @@ class GeoJsonHandler {
   const std::string& syntax_error() const { return syntax_error_; }
   const std::string& abort_message() const { return abort_message_; }
   std::unique_ptr<GeoObject>& root() { return root_; }
+  bool cut() const { return cut_; }
 
  private:
   enum class Scalar { Null, Number, String, Other };
@@ -487,7 +488,8 @@ ReadResult read_geojson(ByteSource& source, const ReadOptions& options) {
   }
   if (!result.error) {
     const std::unique_ptr<GeoObject>& root = handler.root();
-    if (root && !root->has_features) {
+    // After a cut, a top level that has not said what it is yet is just empty.
+    if (root && !root->has_features && root->type != "FeatureCollection" && !(handler.cut() && root->type.empty())) {
       if (root->type == "Feature" || is_geojson_geometry_type(root->type))
         add_geojson_feature(*root, false, result.file, warnings);
       else
