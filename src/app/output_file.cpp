@@ -38,11 +38,22 @@ void check_output_path(const std::string& output, const std::vector<std::string>
       throw failure(output, "is the input file " + in + " (trailray never modifies its input)");
   }
   if (S_ISDIR(out.st_mode)) throw failure(output, "is a folder, not a file");
-  if (!force) throw failure(output, "already exists (--force replaces it)");
+  if (S_ISREG(out.st_mode) && !force) throw failure(output, "already exists (--force replaces it)");
 }
 
 void write_file_atomically(const std::string& output, const std::function<void(std::ostream&)>& write) {
   const std::filesystem::path target(output);
+  struct stat st {};
+  if (::stat(output.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+    // /dev/null, a named pipe, a terminal: written into, never renamed over (that would replace
+    // the device itself).
+    std::ofstream stream(target, std::ios::binary);
+    if (!stream) throw failure(output, "cannot open for writing", errno);
+    write(stream);
+    stream.flush();
+    if (!stream) throw failure(output, "cannot write", errno);
+    return;
+  }
   const std::filesystem::path temporary = temporary_path(target);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) throw failure(output, "cannot create a temporary file in its folder", errno);

@@ -12,13 +12,14 @@
 
 namespace trailray::app {
 
-// Throws std::runtime_error naming `output` when it is one of `inputs` ("-" never is), or when it
-// exists and `force` is false, or is a folder.
+// Throws std::runtime_error naming `output` when it is one of `inputs` ("-" never is), when it is
+// an existing file and `force` is false, or when it is a folder. A device or a named pipe
+// (/dev/null, /dev/stdout) may be written without --force.
 void check_output_path(const std::string& output, const std::vector<std::string>& inputs, bool force);
 
 // Calls `write` with a stream into a temporary file next to `output`, then renames it over
-// `output`. Throws std::runtime_error naming `output` and the reason; the temporary file is
-// removed on any failure, also when `write` throws.
+// `output` (a device or a named pipe is written directly). Throws std::runtime_error naming `output` and the reason;
+// the temporary file is removed on any failure, also when `write` throws.
 void write_file_atomically(const std::string& output, const std::function<void(std::ostream&)>& write);
 
 }  // namespace trailray::app

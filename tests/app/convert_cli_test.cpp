@@ -2,6 +2,7 @@
 // --cleaned, and the safety of the output file (atomic, --force, never over an input).
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -206,6 +207,15 @@ TEST(ConvertCli, ErrorsNameTheFileAndWriteNothing) {
       convert(shell_quote(in.str()) + " -o " + shell_quote((dir / "no" / "such" / "x.kml").string()) + " 2>&1"));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("x.kml: cannot create a temporary file in its folder"), std::string::npos) << r.out;
+}
+
+TEST(ConvertCli, ADeviceIsWrittenIntoNotReplaced) {
+  TempFile in("in.gpx", kGpx);
+  auto r = run_command(convert(shell_quote(in.str()) + " -o /dev/null --format kml 2>&1"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  struct stat st {};
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));  // renaming a file over it would have made it a file
 }
 
 TEST(ConvertCli, StandardInputToStandardOutput) {

@@ -70,7 +70,7 @@ class Collector {
  public:
   Collector(WarningCollector& warnings) : warnings_(warnings) {}
 
-  void add(const GeoObject& g, std::vector<Line>& lines, std::vector<TrackPoint>& singles) {
+  void add(GeoObject& g, std::vector<Line>& lines, std::vector<TrackPoint>& singles) {
     const std::string& t = g.type;
     if (t == "GeometryCollection") {
       for (const auto& member : g.geometries)
@@ -90,6 +90,10 @@ class Collector {
     }
     if (t == "Point" || t == "MultiPoint") {
       singles.insert(singles.end(), g.points.begin(), g.points.end());
+      return;
+    }
+    if (g.part_ends.size() == 1 && g.part_ends[0] == g.points.size() && g.part_levels[0] == want - 1) {
+      lines.push_back({std::move(g.points)});  // one line, the common case: no copy of a big track
       return;
     }
     std::size_t begin = 0;
@@ -171,8 +175,8 @@ bool is_geojson_geometry_type(const std::string& t) {
          t == "MultiPolygon" || t == "GeometryCollection";
 }
 
-void add_geojson_feature(const GeoObject& feature, bool cut, TrackFile& file, WarningCollector& warnings) {
-  const GeoObject* geometry = feature.geometry ? feature.geometry.get() : nullptr;
+void add_geojson_feature(GeoObject& feature, bool cut, TrackFile& file, WarningCollector& warnings) {
+  GeoObject* geometry = feature.geometry ? feature.geometry.get() : nullptr;
   if (!geometry && is_geojson_geometry_type(feature.type)) geometry = &feature;  // a bare geometry
   if (!geometry) {
     if (!cut)

@@ -61,7 +61,8 @@ struct GeoObject {
 
 // Adds what a finished Feature (or a bare geometry at the top level) holds to `file`. `cut`: the
 // file ended inside it (per-point arrays longer than the coordinates read are then expected).
-void add_geojson_feature(const GeoObject& feature, bool cut, TrackFile& file, WarningCollector& warnings);
+// Takes the points out of `feature` (it is dropped afterwards).
+void add_geojson_feature(GeoObject& feature, bool cut, TrackFile& file, WarningCollector& warnings);
 
 // True for the GeoJSON geometry type names.
 bool is_geojson_geometry_type(const std::string& type);

@@ -491,7 +491,7 @@ ReadResult read_geojson(ByteSource& source, const ReadOptions& options) {
     // After a cut, a top level that has not said what it is yet is just empty.
     if (root && !root->has_features && root->type != "FeatureCollection" && !(handler.cut() && root->type.empty())) {
       if (root->type == "Feature" || is_geojson_geometry_type(root->type))
-        add_geojson_feature(*root, false, result.file, warnings);
+        add_geojson_feature(*root, handler.cut(), result.file, warnings);
       else
         result.error =
             Diagnostic{name,
