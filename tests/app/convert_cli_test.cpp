@@ -209,6 +209,17 @@ TEST(ConvertCli, ErrorsNameTheFileAndWriteNothing) {
   EXPECT_NE(r.out.find("x.kml: cannot create a temporary file in its folder"), std::string::npos) << r.out;
 }
 
+TEST(ConvertCli, FitInputConvertsToGpxWithTheSamePoints) {
+  TRAILRAY_REQUIRE_DATA(fit, "fit/fitparse_garmin-fenix-5-bike.fit");
+  TempFile out("bike.gpx");
+  std::filesystem::remove(out.path());
+  auto r = run_command(convert(shell_quote(fit.string()) + " -o " + shell_quote(out.str()) + " 2>&1"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string original = as_csv(fit.string());
+  EXPECT_EQ(lines(original), 1u + 19);  // MANIFEST: 19 records with a position
+  EXPECT_EQ(as_csv(out.str()), original);
+}
+
 TEST(ConvertCli, ADeviceIsWrittenIntoNotReplaced) {
   TempFile in("in.gpx", kGpx);
   auto r = run_command(convert(shell_quote(in.str()) + " -o /dev/null --format kml 2>&1"));
