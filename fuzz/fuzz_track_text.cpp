@@ -5,6 +5,8 @@
 //   metric   parse_color_metric -> a metric whose name parses back to itself, or nullopt
 //   values   the bytes as floats through robust_range and format_color_value: a range with
 //            finite ends and min <= max; every value prints as text
+//   points   read_points_csv (--labels FILE): an error naming the file, or waypoints with
+//            valid coordinates and finite elevations
 
 #include <cmath>
 #include <cstddef>
@@ -16,6 +18,8 @@
 #include <vector>
 
 #include "track/color_values.hpp"
+#include "track/io/points_csv.hpp"
+#include "track/io/readers.hpp"
 
 namespace {
 
@@ -33,7 +37,7 @@ void check(bool ok, const char* what) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
-  switch (data[0] % 3) {
+  switch (data[0] % 4) {
     case 0: {
       if (const auto range = parse_value_range(text))
         check(std::isfinite(range->min) && std::isfinite(range->max) && range->min < range->max, "range");
@@ -42,6 +46,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 1: {
       if (const auto metric = parse_color_metric(text))
         check(parse_color_metric(color_metric_name(*metric)) == metric, "metric name round trip");
+      break;
+    }
+    case 3: {
+      const ReadResult r = read_points_csv(text, "fuzz.csv");
+      check(r.ok() || (r.error->file == "fuzz.csv" && r.file.waypoints.empty()), "points error");
+      for (const Waypoint& w : r.file.waypoints)
+        check(valid_coordinates(w.point.lat, w.point.lon) && (std::isnan(w.point.ele) || std::isfinite(w.point.ele)),
+              "points coordinates");
       break;
     }
     default: {

@@ -5,7 +5,7 @@
 #
 # 1. configures and builds build-fuzz (clang, -DTRAILRAY_FUZZ=ON) -> fuzz_gpx, fuzz_igc, fuzz_tcx, fuzz_fit, fuzz_kml (KML and KMZ), fuzz_geojson, fuzz_tile,
 #    fuzz_terrain_text (config, URL templates, Cache-Control, disk cache entries)
-#    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges)
+#    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges, points CSV)
 # 2. regressions: runs each fuzzer once over every file in tests/fuzz/regressions/<format>/
 # 3. fuzzes each target for SECONDS_PER_TARGET. The corpus lives in fuzz-corpus/<format>/
 #    (git-ignored, kept between runs); seeds are read in place from ../shared/data/<format>/

@@ -44,6 +44,23 @@ struct TrackStyle {
   Colormap colormap = Colormap::turbo;
   std::optional<track::ValueRange> range;  // nullopt: the robust range of the visible tracks' values
   std::vector<glm::vec3> colors;           // `--color`, sRGB: none (the palette), one for all, or one per track
+  // Routes (planned, GPX rte): a solid colour unlike the palette's that reads on terrain
+  // (`--route-color`), half the tracks' width, dashed.
+  glm::vec3 route_color{1.0f, 0.88f, 0.0f};
+};
+
+// Pins: a thin stem from the ground up to a marker (a ball), for waypoints and (smaller) place
+// labels. Sizes in pixels, never under the metres given when the camera is near.
+struct PinStyle {
+  glm::vec3 waypoint_color{0.89f, 0.0f, 0.17f};  // sRGB: the markers of the files' waypoints
+  glm::vec3 place_color{0.96f, 0.96f, 0.96f};    // and of place labels
+  glm::vec3 stem_color{0.16f, 0.16f, 0.16f};
+  double marker_px = 13.0, place_marker_px = 8.0;  // the ball's diameter
+  double marker_m = 6.0, place_marker_m = 4.0;     // ... at least
+  double stem_px = 2.0, stem_m = 0.6;              // the stem's diameter, at least
+  // The ball rests this high above the marker's position (pixels, at least metres), so a waypoint
+  // on the ground still stands on a stem; the labels sit above it.
+  double lift_px = 18.0, lift_m = 8.0, place_lift_px = 10.0, place_lift_m = 5.0;
 };
 
 // Snow by altitude and slope on the terrain.
@@ -63,6 +80,7 @@ struct Style {
   TrackStyle tracks;
   Shading shading;
   bool legend = true;  // `--legend`: colour bar or key of track names
+  PinStyle pins;
 };
 
 }  // namespace trailray::scene

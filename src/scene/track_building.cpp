@@ -26,6 +26,7 @@ struct NamedTrack {
   std::string name;
   const track::Track* track = nullptr;
   track::Track route_as_track;
+  bool is_route() const { return track == nullptr; }
   const track::Track& raw() const { return track != nullptr ? *track : route_as_track; }
 };
 
@@ -58,6 +59,16 @@ bool needs_ground(const track::Track& t, const TrackStyle& style) {
   return false;
 }
 
+// The metres along each segment of a route: its "values", which the track pass dashes it by.
+std::vector<std::vector<float>> distances_along(const track::TrackMetrics& metrics) {
+  std::vector<std::vector<float>> out;
+  for (const track::SegmentMetrics& m : metrics.segments) {
+    out.emplace_back();
+    for (double d : m.distance_m) out.back().push_back(static_cast<float>(d));
+  }
+  return out;
+}
+
 // The drawn polylines: each point in ECEF (on the ground, or the neutral ground, without an
 // elevation), the metric's values, curtain heights.
 void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
@@ -80,15 +91,25 @@ void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
   }
 }
 
+// Recorded tracks from --color or the palette; routes in the route colour (not counted).
 void assign_colors(std::vector<Track>& tracks, const TrackStyle& style, std::size_t first_palette_index) {
   const auto& colors = style.colors;
-  if (!colors.empty() && colors.size() != 1 && colors.size() != tracks.size())
+  std::size_t recorded = 0;
+  for (const Track& t : tracks) recorded += t.is_route ? 0 : 1;
+  if (!colors.empty() && colors.size() != 1 && colors.size() != recorded)
     throw std::runtime_error(fmt::format("--color was given {} times for {} tracks: give it once, or once per track",
-                                         colors.size(), tracks.size()));
-  for (std::size_t i = 0; i < tracks.size(); ++i)
-    tracks[i].color_srgb = colors.empty()       ? palette_color(first_palette_index + i)
-                           : colors.size() == 1 ? colors.front()
-                                                : colors[i];
+                                         colors.size(), recorded));
+  std::size_t i = 0;
+  for (Track& t : tracks) {
+    if (t.is_route) {
+      t.color_srgb = style.route_color;
+      continue;
+    }
+    t.color_srgb = colors.empty()       ? palette_color(first_palette_index + i)
+                   : colors.size() == 1 ? colors.front()
+                                        : colors[i];
+    ++i;
+  }
 }
 
 }  // namespace
@@ -175,11 +196,15 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
       std::vector<std::vector<double>> ground;
       if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))
         ground = sample_ground_heights(t.cleaned, options.heights);
+      t.is_route = named.is_route();
+      t.by_value = !t.is_route;
       std::vector<std::vector<float>> values;
-      if (by_value)
+      if (t.is_route)
+        values = distances_along(t.metrics);
+      else if (by_value)
         values = track::color_values(t.cleaned, t.metrics, style.color_by, ground.empty() ? nullptr : &ground);
       fill_geometry(t, ground, values, style, options.neutral_ground_m);
-      points_with_value += t.points_with_value();
+      if (!t.is_route) points_with_value += t.points_with_value();
       // Ground heights are kept only where they were sampled for every point of a source.
       fill_point_arrays(t, options.heights != nullptr ? ground : std::vector<std::vector<double>>{});
       if (options.inspect)
@@ -203,6 +228,7 @@ void set_ground_heights(Track& t, terrain::HeightSource& heights) {
 }
 
 void apply_color_metric(Track& t, track::ColorMetric metric) {
+  if (t.is_route) return;  // never by value: its values are the dashes' distances
   std::vector<std::vector<double>> ground;
   if (metric == track::ColorMetric::agl) {
     std::size_t flat = 0;

@@ -26,7 +26,8 @@ struct TrackBuildOptions {
 };
 
 // The tracks of the files, in order (each file's tracks, then its routes), with colours from
-// `style.colors` or the palette counted from `first_palette_index`. Throws std::runtime_error
+// `style.colors` or the palette counted from `first_palette_index` (recorded tracks only: routes
+// are is_route, in `style.route_color`, never by value, their values the metres along them). Throws std::runtime_error
 // for what the user must change (agl without terrain, a --color count that matches neither 1
 // nor the number of tracks). Notes (no value for the metric anywhere) go to `diagnostics`.
 std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
@@ -45,7 +46,7 @@ std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, te
 void set_ground_heights(Track& track, terrain::HeightSource& heights);
 
 // Replaces the colour values in the track's geometry by `metric`'s (none for solid) and bumps its
-// revision. Throws std::invalid_argument for agl on a track without ground heights.
+// revision; a route keeps its values (metres along it) and revision. Throws std::invalid_argument for agl on a track without ground heights.
 void apply_color_metric(Track& track, track::ColorMetric metric);
 
 // Curtains (walls down to the ground) on or off: each line's heights above the ground from

@@ -60,6 +60,9 @@ struct Track {
   bool visible = true;
   glm::vec3 color_srgb{1.0f, 0.0f, 0.0f};
   bool by_value = true;  // coloured by the style's metric (when it is not solid), else color_srgb
+  // A planned route (GPX rte), not a recorded track: drawn thinner and dashed in the style's
+  // route colour, never by value; its geometry's values are metres along it (for the dashes).
+  bool is_route = false;
 
   std::size_t point_count() const { return distance_m.size(); }
   // Where flat point `point` is drawn (ECEF).
