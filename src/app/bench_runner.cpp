@@ -161,7 +161,7 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     progress("capsule");
     const render::TrackBuffer buffer(dataset.geometry);
     row.capsule_bytes = buffer.gpu_bytes();
-    const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false}};
+    const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false, {}, false}};
     render::TrackSceneSettings settings;
     settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
     const render::SceneLighting lighting;

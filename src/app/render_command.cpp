@@ -30,11 +30,12 @@ int run_render(const RenderArgs& a) {
   scene::TerrainView terrain(sources.heights.get(), sources.imagery.get());
   terrain.set_policy(
       {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
-  const SceneTracks tracks =
-      load_scene_tracks(a.tracks, a.read, style.tracks, {sources.heights.get(), 0.0, a.analysis}, diagnostics);
+  const SceneTracks tracks = load_scene_tracks(a.tracks, a.read, style.tracks, {sources.heights.get(), 0.0, a.analysis},
+                                               diagnostics, a.waypoints);
   scene::Scene scene;
   scene.terrain = &terrain;
   scene.tracks = &tracks.tracks;
+  scene.waypoints = &tracks.waypoints;
   scene.style = style;
   scene.color_range = scene::color_range(tracks.tracks, style);
   scene.sun_time_unix_s = sun_time(time, tracks.recorded);

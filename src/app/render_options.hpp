@@ -11,6 +11,7 @@
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
 #include "app/terrain_options.hpp"
+#include "app/waypoint_options.hpp"
 #include "track/io/load.hpp"
 #include "track/summary.hpp"
 
@@ -29,6 +30,7 @@ struct RenderArgs {
   track::ReadOptions read;
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
+  WaypointArgs waypoints;
 };
 
 void add_render_options(CLI::App& command, RenderArgs& args);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scene/waypoint_building.hpp"
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
 
@@ -10,13 +11,18 @@ namespace trailray::app {
 
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
-                              scene::Diagnostics& diagnostics) {
+                              scene::Diagnostics& diagnostics, const WaypointArgs& waypoints) {
   const std::vector<scene::LoadedTrackFile> files = scene::read_track_files(paths, read, diagnostics);
   SceneTracks out;
   out.recorded = scene::recorded_points(files);
   scene::TrackBuildOptions build = options;
   build.neutral_ground_m = out.recorded.lowest_or_sea_level();
   for (scene::Track& t : scene::build_tracks(files, style, build, diagnostics)) out.tracks.add(std::move(t));
+  const scene::WaypointBuildOptions placing{options.heights, build.neutral_ground_m};
+  out.waypoints.points = scene::file_waypoints(files, placing);
+  for (scene::Waypoint& w : scene::read_place_labels(waypoints.label_files, read, placing, diagnostics))
+    out.waypoints.points.push_back(std::move(w));
+  if (waypoints.no_waypoints) scene::set_waypoints_visible(out.waypoints, false);
   return out;
 }
 

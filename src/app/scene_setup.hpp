@@ -9,12 +9,14 @@
 
 #include "app/camera_options.hpp"
 #include "app/terrain_options.hpp"
+#include "app/waypoint_options.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/framing.hpp"
 #include "scene/style.hpp"
 #include "scene/track_building.hpp"
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
+#include "scene/waypoints.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::app {
@@ -30,17 +32,19 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagno
 // The terrain height at a place from the source (NaN where it has none, or without a source).
 double ground_height_at(terrain::HeightSource* source, double lat, double lon);
 
-// Tracks read from files and built for the scene.
+// Tracks read from files and built for the scene, with their waypoints and the place labels.
 struct SceneTracks {
   scene::TrackSet tracks;
   scene::RecordedPoints recorded;  // the files' points as recorded (the sun's day, the lowest height)
+  scene::WaypointSet waypoints;    // the files' waypoints, then the places of --labels
 };
 // Reads every file (the first that cannot be read throws, naming it) and builds its tracks
 // (build_tracks' errors), points without an elevation on the lowest recorded height where there
-// is no terrain (options.neutral_ground_m is not read).
+// is no terrain (options.neutral_ground_m is not read); the files' waypoints and the places of
+// `waypoints.label_files` (read_place_labels' errors), hidden with --no-waypoints.
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
-                              scene::Diagnostics& diagnostics);
+                              scene::Diagnostics& diagnostics, const WaypointArgs& waypoints = {});
 
 // The sun's time: --time when given, else the tracks' day at noon (scene::default_sun_time).
 double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded);

@@ -44,6 +44,10 @@ void add_track_style_options(CLI::App& command, StyleArgs& args) {
                   "Solid colour: one for every track, or one per track in order (default: a qualitative palette)")
       ->type_name("'#rrggbb'")
       ->allow_extra_args(false);  // one value per --color: the words after it are tracks
+  command
+      .add_option("--route-color", args.route_color,
+                  "Colour of routes (planned, GPX rte), drawn dashed at half the tracks' width (default '#ffe000')")
+      ->type_name("'#rrggbb'");
   command.add_option("--legend", args.legend, "Legend (colour bar, or key of track names) in the image (default on)")
       ->type_name("on|off");
   command
@@ -105,6 +109,13 @@ scene::Style parse_style(const StyleArgs& args) {
     if (!color)
       throw CLI::ValidationError("--color", fmt::format("'{}' is not a colour like '#e6194b' or '#f80'", text));
     style.colors.push_back(*color);
+  }
+  if (!args.route_color.empty()) {
+    const auto color = scene::parse_hex_color(args.route_color);
+    if (!color)
+      throw CLI::ValidationError("--route-color",
+                                 fmt::format("'{}' is not a colour like '#ffe000' or '#fe0'", args.route_color));
+    style.route_color = *color;
   }
   out.legend = parse_on_off(args.legend, "--legend");
   style.occlusion.enabled = parse_on_off(args.occlusion, "--occlusion");

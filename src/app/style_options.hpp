@@ -1,7 +1,7 @@
 #pragma once
 // How a scene is drawn, as options spelled the same in every command that draws (`render`,
 // `view`), parsed into the one scene::Style: the tracks (--width, --color-by, --colormap,
-// --range, --color, --legend, --occlusion, --occluded-alpha, --occlusion-fade, --curtain) and the
+// --range, --color, --route-color, --legend, --occlusion, --occluded-alpha, --occlusion-fade, --curtain) and the
 // shading (--time, --no-ssao, --no-atmosphere, --no-shadows, --snow, --snowline). Parsing checks
 // every value and names the option in its error.
 
@@ -22,6 +22,7 @@ struct StyleArgs {
   std::string colormap;  // empty: turbo, or diverging for signed metrics (vspeed)
   std::string range;     // empty: the robust automatic range
   std::vector<std::string> colors;
+  std::string route_color;  // empty: scene::TrackStyle's
   std::string legend = "on";
   std::string occlusion = "on";
   double occluded_alpha = 0.45;

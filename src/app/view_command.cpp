@@ -8,6 +8,7 @@
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
 #include "app/track_options.hpp"
+#include "app/waypoint_options.hpp"
 #include "app/view/viewer_app.hpp"
 
 namespace trailray::app {
@@ -23,6 +24,7 @@ struct ViewArgs {
   track::ReadOptions read;
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
+  WaypointArgs waypoints;
   bool verbose = false;
   int frames = 0;
   std::string script, screenshot;
@@ -48,6 +50,8 @@ int run_view(const ViewArgs& a) {
   o.script = a.script;
   o.screenshot = a.screenshot;
   o.timeout_s = a.timeout_s;
+  o.label_files = a.waypoints.label_files;
+  o.no_waypoints = a.waypoints.no_waypoints;
   return view::run_viewer(o);
 }
 
@@ -83,6 +87,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
   add_terrain_options(*cmd, args->terrain);
   add_imagery_option(*cmd, args->terrain);
   add_track_style_options(*cmd, args->style);
+  add_waypoint_options(*cmd, args->waypoints);
   add_read_options(*cmd, args->read);
   add_cleaning_options(*cmd, args->analysis);
   cmd->callback([args, &exit_code] { exit_code = run_view(*args); });

@@ -71,7 +71,10 @@ FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camer
   content.sun_direction_ecef = scene::sun_direction(scene);
   content.track_settings = track_settings_for(scene.style.tracks, scene.color_range);
   track_gpu_.begin_frame();
-  if (scene.tracks != nullptr) content.tracks = track_gpu_.draws(*scene.tracks, scene.color_range.has_value());
+  if (scene.tracks != nullptr)
+    content.tracks = track_gpu_.draws(*scene.tracks, scene.color_range.has_value(), scene.style.tracks);
+  // Pins after the tracks: they are drawn by the same pass.
+  for (const TrackDraw& pin : pin_gpu_.draws(scene.waypoints, scene.style.pins)) content.tracks.push_back(pin);
   FrameReport report = draw(content, camera, target);
   track_gpu_.evict(scene.tracks);
   report.gpu_tracks = track_gpu_.stats();
@@ -90,7 +93,7 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
     if (t.has_data) ++report.tiles_with_data;
     if (t.image) ++report.imagery_tiles_used;
   }
-  report.tracks_drawn = content.tracks.size();
+  for (const TrackDraw& draw : content.tracks) (draw.is_pin ? report.pin_draws : report.tracks_drawn) += 1;
 
   // The sun and sky light of the frame: what decides the shadows and what the passes shade with.
   const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);

@@ -30,6 +30,7 @@
 #include "render/passes/ssao_pass.hpp"
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_pass.hpp"
+#include "render/pin_gpu.hpp"
 #include "render/terrain_gpu.hpp"
 #include "render/track_gpu.hpp"
 #include "scene/camera.hpp"
@@ -53,6 +54,7 @@ struct FrameReport {
   std::size_t tiles_with_data = 0;     // of those: from the height source
   std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
   std::size_t tracks_drawn = 0;        // visible tracks
+  std::size_t pin_draws = 0;           // the waypoints' stems and balls (a draw per kind and part)
   bool shadows_drawn = false;          // false: switched off, or the sun below the horizon
   // The GPU caches after this frame's eviction: held, used by the frame, uploaded, evicted.
   GpuCacheStats gpu_meshes;
@@ -114,6 +116,7 @@ class Renderer {
   std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
   TerrainGpu terrain_gpu_;
   TrackGpu track_gpu_;
+  PinGpu pin_gpu_;
   scene::TerrainView neutral_terrain_{nullptr, nullptr};  // for scenes without terrain
 };
 

@@ -16,13 +16,17 @@
 
 namespace trailray::render {
 
+// A route next to the recorded tracks: half their width (never under a pixel), dashed.
+inline constexpr float kRouteDashPx = 7.0f;
+CapsuleShape route_shape(const scene::TrackStyle& style);
+
 class TrackGpu {
  public:
   void begin_frame() { buffers_.begin_frame(); }
-  // The visible tracks as the track pass draws them (by value when `by_value` and the track is),
-  // uploading the buffers of tracks not seen at their revision yet. The buffers stay valid
-  // until the next evict.
-  std::vector<TrackDraw> draws(const scene::TrackSet& tracks, bool by_value);
+  // The visible tracks as the track pass draws them (by value when `by_value` and the track is;
+  // routes in route_shape), uploading the buffers of tracks not seen at their revision yet. The
+  // buffers stay valid until the next evict.
+  std::vector<TrackDraw> draws(const scene::TrackSet& tracks, bool by_value, const scene::TrackStyle& style = {});
   // Between frames: frees the buffers of tracks no longer in `tracks` (nullptr: none is) and of
   // their old revisions. Hidden tracks keep theirs.
   void evict(const scene::TrackSet* tracks);

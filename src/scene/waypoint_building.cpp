@@ -40,7 +40,7 @@ std::vector<Waypoint> build_waypoints(const std::vector<track::Waypoint>& points
     w.ground_m = ground[i];
     w.time_unix_s = p.point.time;
     const double foot = std::isnan(w.ground_m) ? options.neutral_ground_m : w.ground_m;
-    const double marker = std::isnan(w.ele_m) ? foot : std::isnan(w.ground_m) ? w.ele_m : std::max(w.ele_m, foot);
+    const double marker = std::isnan(w.ele_m) ? foot : std::max(w.ele_m, foot);
     w.ground_ecef = ecef_from({w.lat_deg, w.lon_deg, foot});
     w.marker_ecef = ecef_from({w.lat_deg, w.lon_deg, marker});
     out.push_back(std::move(w));

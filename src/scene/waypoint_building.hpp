@@ -27,9 +27,9 @@ inline constexpr int kWaypointPriority = 2;
 inline constexpr int kPlacePriority = 1;
 
 // One scene waypoint per point with valid coordinates, in order: the ground below it sampled
-// from the terrain (NaN without), the marker at the recorded elevation, never below the
-// terrain (a GPS height under the ground would bury the pin), else on the ground, else on the
-// neutral ground; the stem's foot on the ground (or the neutral ground).
+// from the terrain (NaN without), the stem's foot on it (else on the neutral ground), the marker
+// at the recorded elevation but never below the foot (a GPS height under the ground would bury
+// the pin), else on the foot.
 std::vector<Waypoint> build_waypoints(const std::vector<track::Waypoint>& points, const std::string& source,
                                       WaypointKind kind, const WaypointBuildOptions& options);
 

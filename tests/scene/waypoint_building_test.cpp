@@ -63,15 +63,17 @@ TEST(WaypointBuilding, GroundSampledAndMarkerAtElevationOrOnTheGround) {
 }
 
 TEST(WaypointBuilding, WithoutTerrainOnTheNeutralGround) {
-  const std::vector<track::Waypoint> points{point(kLat, kLon, track::kMissing, "a"), point(kLat, kLon, 40.0, "b")};
+  const std::vector<track::Waypoint> points{point(kLat, kLon, track::kMissing, "a"), point(kLat, kLon, 40.0, "b"),
+                                            point(kLat, kLon, 400.0, "c")};
   const auto built = build_waypoints(points, "w.gpx", WaypointKind::Waypoint, {nullptr, 123.0});
-  ASSERT_EQ(built.size(), 2u);
+  ASSERT_EQ(built.size(), 3u);
   EXPECT_TRUE(std::isnan(built[0].ground_m));
   EXPECT_NEAR(height_of(built[0].ground_ecef), 123.0, 1e-3);
   EXPECT_NEAR(height_of(built[0].marker_ecef), 123.0, 1e-3);
-  // No terrain to be under: the recorded height stands.
-  EXPECT_NEAR(height_of(built[1].marker_ecef), 40.0, 1e-3);
+  // Under the neutral ground (drawn where there is no terrain) it would be buried too.
+  EXPECT_NEAR(height_of(built[1].marker_ecef), 123.0, 1e-3);
   EXPECT_NEAR(height_of(built[1].ground_ecef), 123.0, 1e-3);
+  EXPECT_NEAR(height_of(built[2].marker_ecef), 400.0, 1e-3);
 }
 
 TEST(WaypointBuilding, PlacesFromCsvAndGpx) {

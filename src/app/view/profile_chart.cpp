@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/view/waypoint_view.hpp"
 #include "scene/colormap.hpp"
 #include "scene/track_building.hpp"
 
@@ -237,6 +238,19 @@ void draw_profile_chart(ViewerModel& model) {
       }
       prev = i;
     }
+  }
+
+  // Waypoints near the track: a small pin at their nearest point, with the name.
+  for (const ChartWaypoint& c : chart_waypoints(t, model.waypoints)) {
+    const scene::Waypoint& w = model.waypoints.points[c.waypoint];
+    const float x = x_px(c.point);
+    const double a = !std::isnan(t.altitude_m[c.point]) ? t.altitude_m[c.point] : t.ground_m[c.point];
+    const float y = std::isnan(a) ? top + 12.0f : y_px(a);
+    const ImU32 colour = to_imgui(w.kind == scene::WaypointKind::Place ? settings.style.pins.place_color
+                                                                       : settings.style.pins.waypoint_color);
+    draw->AddLine(ImVec2(x, y), ImVec2(x, y - 10.0f), IM_COL32(230, 230, 230, 220), 1.0f);
+    draw->AddCircleFilled(ImVec2(x, y - 12.0f), 3.5f, colour);
+    if (!w.name.empty()) draw->AddText(ImVec2(x + 5.0f, y - 24.0f), IM_COL32(235, 235, 235, 255), w.name.c_str());
   }
 
   // Hover: the chart sets it; a hover from the 3D view is only drawn.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <exception>
 
+#include "scene/waypoint_building.hpp"
+
 namespace trailray::app::view {
 
 LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs) {
@@ -30,6 +32,7 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
     if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
     try {
       out.tracks = scene::build_tracks(files, style, options, diagnostics, inputs.tracks_open);
+      out.waypoints = scene::file_waypoints(files, {inputs.heights, options.neutral_ground_m});
     } catch (const std::exception& e) {
       out.errors.emplace_back(e.what());
     }

@@ -11,13 +11,15 @@
 #include "scene/track_building.hpp"
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
+#include "scene/waypoints.hpp"
 
 namespace trailray::app::view {
 
 struct LoadedViewerTracks {
   std::vector<scene::Track> tracks;
-  scene::RecordedPoints recorded;   // the readable files' points (framing, the sun's time)
-  std::vector<std::string> errors;  // one per file that failed, naming it
+  std::vector<scene::Waypoint> waypoints;  // the files' waypoints (scene::file_waypoints)
+  scene::RecordedPoints recorded;          // the readable files' points (framing, the sun's time)
+  std::vector<std::string> errors;         // one per file that failed, naming it
   std::vector<std::string> warnings;
 };
 

@@ -25,6 +25,8 @@ constexpr Syntax kSyntax[] = {
     {"pan", Kind::pan, 2, false, "pan DX DY"},
     {"zoom", Kind::zoom, 1, false, "zoom STEPS"},
     {"select", Kind::select, 1, true, "select TRACK_INDEX"},
+    {"select-waypoint", Kind::select_waypoint, 1, true, "select-waypoint WAYPOINT_INDEX"},
+    {"print-waypoints", Kind::print_waypoints, 0, false, "print-waypoints"},
     {"hover", Kind::hover, 2, false, "hover X Y"},
     {"print-hover", Kind::print_hover, 0, false, "print-hover"},
     {"print-marker", Kind::print_marker, 0, false, "print-marker"},
@@ -72,7 +74,8 @@ ViewScript parse_view_script(std::string_view text, const std::string& file) {
       if (s.name == w[0]) syntax = &s;
     if (syntax == nullptr)
       fail(
-          fmt::format("unknown command '{}' (orbit, pan, zoom, select, hover, print-hover, print-marker, "
+          fmt::format("unknown command '{}' (orbit, pan, zoom, select, select-waypoint, print-waypoints, hover, "
+                      "print-hover, print-marker, "
                       "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels)",
                       w[0]));
     ScriptCommand c;

@@ -6,6 +6,8 @@
 //   pan DX DY         a right drag of DX, DY pixels from the image centre
 //   zoom STEPS        wheel steps toward the image centre (negative: out)
 //   select TRACK      the statistics panel's track (0-based), and the camera flies to it
+//   select-waypoint N the camera flies to waypoint N (0-based: the files' waypoints, then places)
+//   print-waypoints   prints each waypoint's pin position (pixels) and where it is on the chart's track
 //   hover X Y         the cursor at pixel (X, Y): picks the track point there
 //   print-hover       prints the hovered point's tooltip to standard output
 //   print-marker      prints each track's replay marker position (pixels) to standard output
@@ -37,6 +39,8 @@ struct ScriptCommand {
     pan,
     zoom,
     select,
+    select_waypoint,
+    print_waypoints,
     hover,
     print_hover,
     print_marker,

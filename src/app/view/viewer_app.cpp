@@ -16,6 +16,7 @@
 #include "app/view/viewer_panels.hpp"
 #include "app/view/viewer_shell.hpp"
 #include "scene/legend_content.hpp"
+#include "scene/waypoint_building.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -62,8 +63,14 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.settings.style = o.style;
   model_.settings.sun_time_unix = sun_time(o.sun_time_unix, recorded_);
   model_.analysis = o.analysis;
+  model_.settings.show_waypoints = !o.no_waypoints;
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
+  // Place labels: a file that cannot be read stops the start, as in `render`.
+  for (scene::Waypoint& w :
+       scene::read_place_labels(o.label_files, o.read, {sources_.heights.get(), neutral_}, diagnostics_))
+    model_.waypoints.points.push_back(std::move(w));
+  scene::set_waypoints_visible(model_.waypoints, model_.settings.show_waypoints);
   controller_ = first_view(o, model_.tracks, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
@@ -83,6 +90,13 @@ void ViewerApp::adopt(LoadedViewerTracks loaded) {
     model_.errors.push_back(std::move(e));
   }
   for (scene::Track& t : loaded.tracks) model_.tracks.add(std::move(t));
+  if (!loaded.waypoints.empty()) {
+    for (scene::Waypoint& w : loaded.waypoints) {
+      w.visible = model_.settings.show_waypoints;
+      model_.waypoints.points.push_back(std::move(w));
+    }
+    ++model_.waypoints.revision;
+  }
   if (model_.selected_track < 0 && !model_.tracks.empty()) model_.selected_track = 0;
 }
 
@@ -91,6 +105,7 @@ scene::Scene ViewerApp::scene() {
   scene::Scene s;
   s.terrain = &terrain_;
   s.tracks = &model_.tracks;
+  s.waypoints = &model_.waypoints;
   s.style = model_.settings.style;
   s.color_range = model_.color_range();
   s.sun_time_unix_s = sun_unix_time();
@@ -120,6 +135,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   follow_replay();
   const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
+  if (actions.fly_to_waypoint >= 0) fly_to_waypoint(actions.fly_to_waypoint);
   const scene::Camera camera = controller_.camera();
   if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
 

@@ -32,10 +32,12 @@ struct ViewerOptions {
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
   bool verbose = false;
-  int frames = 0;            // > 0: render this many frames, then (screenshot and) exit
-  std::string script;        // commands to run, then exit
-  std::string screenshot;    // written at the end of a scripted run
-  double timeout_s = 120.0;  // for a scripted picture's tiles
+  int frames = 0;                        // > 0: render this many frames, then (screenshot and) exit
+  std::string script;                    // commands to run, then exit
+  std::string screenshot;                // written at the end of a scripted run
+  double timeout_s = 120.0;              // for a scripted picture's tiles
+  std::vector<std::string> label_files;  // --labels: place labels
+  bool no_waypoints = false;             // --no-waypoints: pins and labels hidden (the panel shows them again)
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when

@@ -7,6 +7,7 @@
 #include "app/view/legend_overlay.hpp"
 #include "app/view/panel_layout.hpp"
 #include "app/view/viewer_shell.hpp"
+#include "app/view/waypoint_view.hpp"
 #include "scene/legend_content.hpp"
 
 namespace trailray::app::view {
@@ -42,6 +43,13 @@ void ViewerApp::fly_to_track(int index) {
   double ground = terrain_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
   if (std::isnan(ground)) ground = framed.value->ground_height_m;
   controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
+}
+
+void ViewerApp::fly_to_waypoint(int index) {
+  if (index < 0 || index >= static_cast<int>(model_.waypoints.points.size())) return;
+  const scene::LookAt& now = controller_.view();
+  controller_.fly_to(
+      look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(index)], now.heading_deg, now.pitch_deg));
 }
 
 void ViewerApp::follow_replay() {

@@ -8,6 +8,7 @@
 
 #include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
+#include "app/view/waypoint_view.hpp"
 
 namespace trailray::app::view {
 
@@ -40,6 +41,13 @@ void ViewerApp::update_hover(double x_px, double y_px, const scene::Camera& came
   std::optional<double> ground_depth_m;
   if (const auto ground = controller_.ground_point_at(x_px, y_px))
     if (const auto seen = camera.project(scene::ecef_from(*ground))) ground_depth_m = seen->depth_m;
+  // A pin's ball under the cursor wins over the track points around it.
+  const int pin = pick_waypoint(model_.waypoints, camera, model_.settings.style.pins, x_px, y_px, kPickRadiusPx);
+  if (pin >= 0) {
+    model_.hover = HoverState{};
+    model_.hover.waypoint = pin;
+    return;
+  }
   const HoverState picked = pick_track_point(model_.tracks, camera, x_px, y_px, kPickRadiusPx, ground_depth_m);
   if (picked.track >= 0 || !model_.hover.from_chart) model_.hover = picked;
 }

@@ -14,6 +14,7 @@
 #include "app/view/replay.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
+#include "scene/waypoints.hpp"
 #include "track/color_values.hpp"
 #include "track/statistics.hpp"
 #include "track/summary.hpp"
@@ -21,9 +22,10 @@
 namespace trailray::app::view {
 
 struct HoverState {
-  int track = -1;           // -1: nothing hovered
+  int track = -1;           // -1: no track point hovered
   std::size_t point = 0;    // flat point index
   bool from_chart = false;  // true: the chart set it (the 3D view marks the point); false: the 3D view
+  int waypoint = -1;        // a pin hovered in the 3D view (index into ViewerModel::waypoints), -1: none
 };
 
 // A drag-selected range on the profile chart (flat point indices, inclusive).
@@ -45,6 +47,7 @@ struct ViewerSettings {
   bool show_menu = true;  // the main menu bar that reopens closed windows
   bool show_tracks = true, show_statistics = true, show_shading = false, show_occlusion = false, show_profiler = false,
        show_chart = true, show_replay = true;
+  bool show_waypoints = true;  // the pins and labels of waypoints and places (--no-waypoints: false)
 };
 
 // The frame profiler's rows as the profiler panel shows them (a plain table, so the panel does not
@@ -81,6 +84,7 @@ class ColorRangeCache {
 
 struct ViewerModel {
   scene::TrackSet tracks;
+  scene::WaypointSet waypoints;  // the files' waypoints (as they load), then the places of --labels
   ViewerSettings settings;
   HoverState hover;
   ChartSelection selection;

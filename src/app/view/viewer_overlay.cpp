@@ -7,6 +7,7 @@
 
 #include "app/view/tooltip.hpp"
 #include "app/view/track_picking.hpp"
+#include "app/view/waypoint_view.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -36,8 +37,22 @@ void replay_markers(const OverlayState& s, ImDrawList* list) {
   }
 }
 
+void waypoint_hover(const OverlayState& s, const scene::Waypoint& w) {
+  if (s.cursor) {
+    const ImVec2 at = to_screen(*s.cursor);
+    ImGui::SetNextWindowPos({at.x + 16.0f, at.y + 8.0f});
+  }
+  ImGui::BeginTooltip();
+  ImGui::TextUnformatted(w.name.empty() ? "(waypoint without a name)" : w.name.c_str());
+  ImGui::Separator();
+  for (const std::string& line : waypoint_tooltip_lines(w)) ImGui::TextUnformatted(line.c_str());
+  ImGui::EndTooltip();
+}
+
 void hover(const OverlayState& s, ImDrawList* list) {
   const HoverState& h = s.model.hover;
+  if (h.waypoint >= 0 && h.waypoint < static_cast<int>(s.model.waypoints.points.size()))
+    return waypoint_hover(s, s.model.waypoints.points[static_cast<std::size_t>(h.waypoint)]);
   if (h.track < 0 || h.track >= static_cast<int>(s.model.tracks.size())) return;
   const scene::Track& t = s.model.tracks[static_cast<std::size_t>(h.track)];
   if (h.point >= t.point_count()) return;

@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include "app/view/panel_layout.hpp"
 #include "app/view/profile_chart.hpp"
 #include "app/view/viewer_panels.hpp"
+#include "scene/waypoint_building.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -115,6 +117,36 @@ void place(const PanelRect& r) {
   ImGui::SetNextWindowSize(ImVec2(r.width, r.height), ImGuiCond_FirstUseEver);
 }
 
+// The waypoints of one file (or the places of one --labels file), folded under a line naming
+// how many there are; a click flies to one.
+void waypoint_list(const ViewerModel& model, const std::string& source, scene::WaypointKind kind,
+                   PanelActions& actions) {
+  std::vector<std::size_t> of_source;
+  for (std::size_t w = 0; w < model.waypoints.points.size(); ++w)
+    if (model.waypoints.points[w].source == source && model.waypoints.points[w].kind == kind) of_source.push_back(w);
+  if (of_source.empty()) return;
+  const bool place = kind == scene::WaypointKind::Place;
+  const std::string title =
+      place ? fmt::format("{} places: {}", of_source.size(), std::filesystem::path(source).filename().string())
+            : fmt::format("{} waypoint{}", of_source.size(), of_source.size() == 1 ? "" : "s");
+  ImGui::PushID(source.c_str());
+  ImGui::PushID(place ? 1 : 0);
+  if (ImGui::TreeNode("##waypoints", "%s", title.c_str())) {
+    for (const std::size_t w : of_source) {
+      const scene::Waypoint& p = model.waypoints.points[w];
+      ImGui::PushID(static_cast<int>(w));
+      const std::string label = p.name.empty() ? std::string("(no name)") : p.name;
+      if (ImGui::Selectable(label.c_str(), model.hover.waypoint == static_cast<int>(w)))
+        actions.fly_to_waypoint = static_cast<int>(w);
+      if (ImGui::IsItemHovered() && !p.description.empty()) ImGui::SetTooltip("%s", p.description.c_str());
+      ImGui::PopID();
+    }
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+  ImGui::PopID();
+}
+
 void track_list_window(ViewerModel& model, PanelActions& actions) {
   place(layout_now(model).tracks);
   if (!ImGui::Begin("Tracks", &model.settings.show_tracks)) {
@@ -122,7 +154,8 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     return;
   }
   if (model.loading) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading terrain...");
-  if (model.tracks.empty()) ImGui::TextDisabled("No track: drop a track file (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) onto the window.");
+  if (model.tracks.empty())
+    ImGui::TextDisabled("No track: drop a track file (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) onto the window.");
   for (std::size_t i = 0; i < model.tracks.size(); ++i) {
     scene::Track& t = model.tracks[i];
     ImGui::PushID(static_cast<int>(i));
@@ -135,18 +168,35 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
       model.selected_track = static_cast<int>(i);
     ImGui::SameLine();
     if (ImGui::SmallButton("fly to")) actions.fly_to_track = static_cast<int>(i);
-    if (model.settings.style.tracks.color_by != track::ColorMetric::solid) {
+    if (model.settings.style.tracks.color_by != track::ColorMetric::solid && !t.is_route) {
       ImGui::Indent();
       ImGui::Checkbox("by value", &t.by_value);
       ImGui::Unindent();
     }
     ImGui::PopID();
+    // After a file's last track: its waypoints.
+    if (i + 1 == model.tracks.size() || model.tracks[i + 1].source != t.source) {
+      ImGui::Indent();
+      waypoint_list(model, t.source, scene::WaypointKind::Waypoint, actions);
+      ImGui::Unindent();
+    }
   }
+  std::vector<std::string> place_files;
+  for (const scene::Waypoint& w : model.waypoints.points)
+    if (w.kind == scene::WaypointKind::Place &&
+        std::find(place_files.begin(), place_files.end(), w.source) == place_files.end())
+      place_files.push_back(w.source);
+  for (const std::string& file : place_files) waypoint_list(model, file, scene::WaypointKind::Place, actions);
   ImGui::Separator();
   scene::TrackStyle& s = model.settings.style.tracks;
   width_controls(s);
   colour_scale_controls(model);
   ImGui::Checkbox("legend", &model.settings.style.legend);
+  if (!model.waypoints.points.empty()) {
+    ImGui::SameLine();
+    if (ImGui::Checkbox("waypoints", &model.settings.show_waypoints))
+      scene::set_waypoints_visible(model.waypoints, model.settings.show_waypoints);
+  }
   ImGui::SameLine();
   if (ImGui::Checkbox("curtain", &s.curtain)) apply_curtain(model.tracks, s.curtain);
   ImGui::End();

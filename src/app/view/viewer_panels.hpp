@@ -8,7 +8,8 @@ namespace trailray::app::view {
 
 // What the user asked for in the panels this frame, for the shell to carry out.
 struct PanelActions {
-  int fly_to_track = -1;  // "fly to" pressed on a track (-1: none)
+  int fly_to_track = -1;     // "fly to" pressed on a track (-1: none)
+  int fly_to_waypoint = -1;  // a waypoint clicked in the track list (index into the model's waypoints)
 };
 
 // Draws every open window and applies their edits to the model. Call each frame between

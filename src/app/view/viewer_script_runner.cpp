@@ -7,6 +7,7 @@
 #include "app/view/tooltip.hpp"
 #include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
+#include "app/view/waypoint_view.hpp"
 
 namespace trailray::app::view {
 
@@ -45,12 +46,41 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
         fly_to_track(model_.selected_track);
         controller_.update(1e9);  // scripted flights arrive at once
         break;
+      case Kind::select_waypoint:
+        if (c.x >= static_cast<double>(model_.waypoints.points.size()) || c.x != std::floor(c.x))
+          fail(fmt::format("select-waypoint {}: there are {} waypoints", c.x, model_.waypoints.points.size()));
+        fly_to_waypoint(static_cast<int>(c.x));
+        controller_.update(1e9);  // scripted flights arrive at once
+        break;
+      case Kind::print_waypoints: {
+        const scene::Camera camera = controller_.camera();
+        const int chart = model_.tracks.empty() ? -1 : std::max(0, model_.selected_track);
+        std::vector<ChartWaypoint> on_chart;
+        if (chart >= 0) on_chart = chart_waypoints(model_.tracks[static_cast<std::size_t>(chart)], model_.waypoints);
+        for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
+          const scene::Waypoint& w = model_.waypoints.points[i];
+          std::string where = "behind the camera";
+          if (const auto s = pin_screen_position(camera, w, model_.settings.style.pins))
+            where = fmt::format("pin at {:.1f} {:.1f}", s->x, s->y);
+          std::string chart_text = "not on the chart";
+          for (const ChartWaypoint& cw : on_chart)
+            if (cw.waypoint == i) chart_text = fmt::format("chart point {}", cw.point);
+          fmt::print("waypoint {} '{}' {} {}{}, {}\n", i, w.name,
+                     w.kind == scene::WaypointKind::Place ? "place" : "waypoint", where, w.visible ? "" : " (hidden)",
+                     chart_text);
+        }
+        break;
+      }
       case Kind::hover:
         script_cursor_ = glm::dvec2(c.x, c.y);
         break;
       case Kind::print_hover: {
         const HoverState& h = model_.hover;
-        if (h.track < 0) {
+        if (h.waypoint >= 0 && h.waypoint < static_cast<int>(model_.waypoints.points.size())) {
+          const scene::Waypoint& w = model_.waypoints.points[static_cast<std::size_t>(h.waypoint)];
+          fmt::print("hover: waypoint {} '{}'\n", h.waypoint, w.name);
+          for (const std::string& line : waypoint_tooltip_lines(w)) fmt::print("  {}\n", line);
+        } else if (h.track < 0) {
           fmt::print("hover: none\n");
         } else {
           const scene::Track& t = model_.tracks[static_cast<std::size_t>(h.track)];

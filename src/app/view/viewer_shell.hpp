@@ -51,6 +51,7 @@ class ViewerApp {
   FramingRoom framing_room(const scene::Lens& lens);
   void update_hover(double x_px, double y_px, const scene::Camera& camera);
   void fly_to_track(int index);
+  void fly_to_waypoint(int index);  // index into model_.waypoints
   void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
   // `status`: say so in the window too (the P key; not scripted pictures).
   void screenshot(const std::string& path, bool status = false);

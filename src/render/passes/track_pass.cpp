@@ -1,8 +1,8 @@
 #include "render/passes/track_pass.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -48,16 +48,26 @@ float pixel_angle(const scene::Camera& camera) {
   return static_cast<float>(2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px);
 }
 
-// Uniforms every capsule program shares: width and the camera's pixel size.
-void set_width_uniforms(const ShaderProgram& program, const scene::Camera& camera, const TrackSceneSettings& settings) {
+// Uniforms every capsule program shares: the camera's pixel size and vertical.
+void set_width_uniforms(const ShaderProgram& program, const scene::Camera& camera) {
   program.set_int("u_points", static_cast<int>(kPointsUnit));
   program.set_int("u_blocks", static_cast<int>(kBlocksUnit));
-  program.set_float("u_width_value", static_cast<float>(settings.width.value));
-  program.set_int("u_width_in_pixels", settings.width.unit == scene::TrackWidth::Unit::pixels ? 1 : 0);
-  program.set_float("u_min_width_px", static_cast<float>(settings.min_width_px));
   program.set_float("u_pixel_angle", pixel_angle(camera));
   const glm::vec3 forward(camera.axes().forward);
   set_vec3(program, "u_camera_forward", forward);
+  const scene::GeoPosition& at = camera.geodetic();
+  const glm::vec3 up(scene::enu_axes_at(at.lat_deg, at.lon_deg).up);
+  set_vec3(program, "u_up", up);
+}
+
+// A draw's own shape (track_pass.hpp CapsuleShape): width, dashes, the raised last points.
+void set_shape_uniforms(const ShaderProgram& program, const TrackDraw& draw, const TrackSceneSettings& settings) {
+  const scene::TrackWidth width = draw.shape.width.value_or(settings.width);
+  program.set_float("u_width_value", static_cast<float>(width.value));
+  program.set_int("u_width_in_pixels", width.unit == scene::TrackWidth::Unit::pixels ? 1 : 0);
+  program.set_float("u_min_width_px", static_cast<float>(draw.shape.min_width_px.value_or(settings.min_width_px)));
+  program.set_float("u_dash_px", draw.shape.dash_px);
+  program.set_vec2("u_lift", draw.shape.lift_px, draw.shape.lift_m);
 }
 
 // A 24-bit depth buffer resolves about d^2 / (near * 2^24) metres at distance d (camera.hpp): k
@@ -93,8 +103,8 @@ Buffer make_quad_indices() {
   }
   Buffer buffer = Buffer::create();
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint16_t)),
-               indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint16_t)), indices.data(),
+               GL_STATIC_DRAW);
   return buffer;
 }
 
@@ -250,12 +260,13 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const scene::Camera& camera
   visible_.set_int("u_orthographic", 0);
   visible_.set_float("u_margin_px", 0.0f);
   visible_.set_int("u_colormap", static_cast<int>(kColormapUnit));
-  set_width_uniforms(visible_, camera, settings);
+  set_width_uniforms(visible_, camera);
   bind_colormap(settings.colormap, kColormapUnit);
   glBindVertexArray(quads_.id());
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
     set_color_uniforms(visible_, draw, settings);
+    set_shape_uniforms(visible_, draw, settings);
     draw_segments(visible_, *draw.buffer);
   }
   glBindVertexArray(0);
@@ -330,10 +341,11 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   set_vec3(overlay_, "u_up", up);
   set_vec3(overlay_, "u_sun_radiance", lighting.sun_radiance);
   set_vec3(overlay_, "u_sky_radiance", lighting.sky_radiance);
-  set_width_uniforms(overlay_, camera, settings);
+  set_width_uniforms(overlay_, camera);
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
     set_color_uniforms(overlay_, draw, settings);
+    set_shape_uniforms(overlay_, draw, settings);
     draw_segments(overlay_, *draw.buffer);
   }
   glBindVertexArray(0);
@@ -366,10 +378,13 @@ void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_proj
   set_vec3(shadow_, "u_towards_light", towards);
   shadow_.set_float("u_margin_px", kShadowMarginTexels);
   shadow_.set_float("u_texel_m", static_cast<float>(texel_m));
-  set_width_uniforms(shadow_, camera, settings);
+  set_width_uniforms(shadow_, camera);
   glBindVertexArray(quads_.id());
   for (const TrackDraw& draw : tracks)
-    if (drawable(draw)) draw_segments(shadow_, *draw.buffer);
+    if (drawable(draw)) {
+      set_shape_uniforms(shadow_, draw, settings);
+      draw_segments(shadow_, *draw.buffer);
+    }
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);
   check_gl("drawing the tracks into the shadow maps");

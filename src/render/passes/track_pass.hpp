@@ -28,23 +28,39 @@
 #include <optional>
 #include <span>
 
+#include "render/gl/gl_objects.hpp"
+#include "render/gl/shader_program.hpp"
+#include "render/passes/compose_pass.hpp"
+#include "render/passes/gbuffer.hpp"
+#include "render/passes/terrain_pass.hpp"
+#include "render/passes/track_buffer.hpp"
 #include "scene/camera.hpp"
 #include "scene/colormap.hpp"
 #include "scene/style.hpp"
-#include "render/passes/compose_pass.hpp"
-#include "render/passes/gbuffer.hpp"
-#include "render/gl/gl_objects.hpp"
-#include "render/gl/shader_program.hpp"
-#include "render/passes/terrain_pass.hpp"
-#include "render/passes/track_buffer.hpp"
 #include "track/color_values.hpp"
 
 namespace trailray::render {
 
+// How a draw's capsules differ from a recorded track's (the pass settings'): a route is thinner
+// and dashed, a pin's stem and ball have widths of their own and stand raised above the ground.
+struct CapsuleShape {
+  std::optional<scene::TrackWidth> width;  // else the settings' width
+  std::optional<double> min_width_px;      // else the settings' minimum
+  // > 0: dashed along the line, dashes and gaps of about this many pixels (a power of two of
+  // metres, so the pattern holds still while the camera moves); the buffer's values are the
+  // metres along the line.
+  float dash_px = 0.0f;
+  // Each segment's last point is raised along the local vertical by max(lift_px pixels, lift_m):
+  // a pin's stem reaches up to its ball (a segment of one point), which rests on it.
+  float lift_px = 0.0f, lift_m = 0.0f;
+};
+
 struct TrackDraw {
   const TrackBuffer* buffer = nullptr;
   glm::vec3 color_srgb{0.9f, 0.1f, 0.1f};  // the solid colour (when not by value)
-  bool by_value = false;                    // colour by the buffer's values through the scale
+  bool by_value = false;                   // colour by the buffer's values through the scale
+  CapsuleShape shape;
+  bool is_pin = false;  // a waypoint's stem or ball (not counted as a track)
 };
 
 // The pass's settings: a scene's track style with its colour scale (track_settings_for).
@@ -52,7 +68,7 @@ struct TrackSceneSettings {
   scene::TrackWidth width;
   double min_width_px = 1.5;  // a distant tube never gets thinner than this (no dotted tracks)
   scene::TrackOcclusion occlusion;
-  bool curtain = false;       // `--curtain`: a translucent wall down to the ground
+  bool curtain = false;  // `--curtain`: a translucent wall down to the ground
   float curtain_alpha = 0.3f;
   scene::Colormap colormap = scene::Colormap::turbo;
   float value_min = 0.0f, value_max = 1.0f;  // the colour scale's range
@@ -107,8 +123,8 @@ class TrackPass {
 
  private:
   ShaderProgram visible_, overlay_, shadow_, curtain_, blend_;
-  VertexArray empty_;   // no attributes: everything comes from gl_VertexID
-  VertexArray quads_;   // no attributes either, but the shared quad index buffer
+  VertexArray empty_;  // no attributes: everything comes from gl_VertexID
+  VertexArray quads_;  // no attributes either, but the shared quad index buffer
   Buffer quad_indices_;
   mutable Texture colormap_;  // 256x1 SRGB8_ALPHA8, remade when the map changes
   mutable std::optional<scene::Colormap> colormap_loaded_;

@@ -22,10 +22,6 @@ vec4 fetch_texel(highp sampler2D texture_2d, int index) {
   return texelFetch(texture_2d, ivec2(index % width, index / width), 0);
 }
 
-vec3 track_point(int index) {
-  return fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, u_first_block + ((index - u_first) >> u_block_shift)).xyz;
-}
-
 float track_value(int index) { return fetch_texel(u_points, index).w; }
 
 // The point of segment a-b closest to p.
@@ -40,6 +36,15 @@ vec3 closest_on_segment(vec3 p, vec3 a, vec3 b) {
 // not its distance, so a tube off the image centre is as many pixels wide as one in the middle
 // (the projection divides by depth).
 float pixel_size_at(vec3 p) { return u_pixel_angle * max(dot(p, u_camera_forward), 1.0e-3 * length(p)); }
+
+uniform vec3 u_up;    // unit, ECEF: the local vertical at the camera
+uniform vec2 u_lift;  // each segment's last point raised by max(x pixels, y metres) (pins)
+
+vec3 track_point(int index) {
+  vec3 p = fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, u_first_block + ((index - u_first) >> u_block_shift)).xyz;
+  if (index == u_last && (u_lift.x > 0.0 || u_lift.y > 0.0)) p += u_up * max(u_lift.x * pixel_size_at(p), u_lift.y);
+  return p;
+}
 
 // The radius of the capsule a-b: from the width, never under the minimum on-screen width at the
 // segment's depth (so a distant track never breaks into dots).

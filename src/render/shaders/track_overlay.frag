@@ -26,7 +26,6 @@ uniform bool u_show_occluded;
 uniform float u_occluded_alpha;
 uniform vec2 u_fade;           // metres behind the terrain: constant alpha until x, 0 at y
 uniform vec3 u_sun;            // unit, towards the sun, ECEF
-uniform vec3 u_up;             // unit, local vertical at the camera, ECEF
 uniform vec3 u_sun_radiance;
 uniform vec3 u_sky_radiance;
 
@@ -100,7 +99,7 @@ void main() {
   if (coverage <= 0.0 || miss <= 0.0) discard;
   vec3 normal = outward / miss;
   vec3 edge = on_axis + normal * radius;
-  if (clipped_by_joints(edge)) discard;
+  if (clipped_by_joints(edge) || in_dash_gap(edge)) discard;
   float alpha = coverage * visibility;
   if (alpha <= 0.0) discard;
   gl_FragDepth = window_depth(edge + direction * radius);

@@ -90,6 +90,21 @@ bool clipped_by_joints(vec3 p) {
   return false;
 }
 
+// Dashes (routes): where a point of this capsule lies along the line (the values are metres along
+// it), dashes and gaps of about u_dash_px pixels, as a power of two of metres so that the
+// pattern stays put while the camera moves (it doubles where the distance does).
+uniform float u_dash_px;  // 0: not dashed
+
+bool in_dash_gap(vec3 p) {
+  if (u_dash_px <= 0.0) return false;
+  vec3 ab = v_x2 - v_x1;
+  float length2 = dot(ab, ab);
+  float s = length2 > 0.0 ? clamp(dot(p - v_x1, ab) / length2, 0.0, 1.0) : 0.0;
+  float along = mix(v_values.x, v_values.y, s);
+  float period = exp2(ceil(log2(2.0 * u_dash_px * pixel_size_at(p))));
+  return fract(along / period) >= 0.5;
+}
+
 struct CapsuleHit {
   bool hit;
   bool clipped;    // the ray hits this capsule where its neighbour draws the surface
@@ -120,6 +135,7 @@ CapsuleHit trace_capsule(vec3 origin, vec3 direction, bool in_front_only) {
     result.clipped = true;
     return result;
   }
+  if (in_dash_gap(p)) return result;
   result.hit = true;
   result.t = shift + t;
   result.position = p;

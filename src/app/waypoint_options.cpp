@@ -1,0 +1,18 @@
+#include "app/waypoint_options.hpp"
+
+namespace trailray::app {
+
+void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
+  command
+      .add_option("--labels", args.label_files,
+                  "Place labels (peaks, huts) from a points file, drawn as small pins with their names: a CSV "
+                  "with a header naming name, lat, lon and ele columns (any order; comma, semicolon or tab), "
+                  "or the waypoints of a GPX or GeoJSON file. Repeatable")
+      ->type_name("FILE")
+      ->allow_extra_args(false)  // one file per --labels: the words after it are tracks
+      ->check(CLI::ExistingFile);
+  command.add_flag("--no-waypoints", args.no_waypoints,
+                   "No pins or labels for the files' waypoints (GPX wpt, KML points, FIT course points) or places");
+}
+
+}  // namespace trailray::app

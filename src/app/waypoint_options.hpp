@@ -1,0 +1,20 @@
+#pragma once
+// Waypoints and place labels, spelled the same in `render` and `view`: --labels FILE (place
+// labels from a CSV, GPX or GeoJSON points file, repeatable) and --no-waypoints (no pins and no
+// labels for the files' waypoints or the places).
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace trailray::app {
+
+struct WaypointArgs {
+  std::vector<std::string> label_files;  // --labels
+  bool no_waypoints = false;
+};
+
+void add_waypoint_options(CLI::App& command, WaypointArgs& args);
+
+}  // namespace trailray::app

@@ -1,0 +1,56 @@
+#include "render/pin_gpu.hpp"
+
+namespace trailray::render {
+namespace {
+
+std::optional<TrackBuffer> buffer_of(const scene::TrackGeometry& geometry) {
+  if (geometry.segments.empty()) return std::nullopt;
+  return std::optional<TrackBuffer>(std::in_place, geometry);
+}
+
+// A pin's look: the stem and the ball, widths bounded in pixels below and metres near the camera.
+CapsuleShape stem_shape(const scene::PinStyle& s, double lift_px, double lift_m) {
+  return {scene::TrackWidth{s.stem_m, scene::TrackWidth::Unit::metres}, s.stem_px, 0.0f, static_cast<float>(lift_px),
+          static_cast<float>(lift_m)};
+}
+CapsuleShape ball_shape(double px, double m, double lift_px, double lift_m) {
+  return {scene::TrackWidth{m, scene::TrackWidth::Unit::metres}, px, 0.0f, static_cast<float>(lift_px),
+          static_cast<float>(lift_m)};
+}
+
+}  // namespace
+
+PinGeometry pin_geometry(const scene::WaypointSet& set) {
+  PinGeometry out;
+  for (const scene::Waypoint& w : set.points) {
+    if (!w.visible) continue;
+    const bool place = w.kind == scene::WaypointKind::Place;
+    (place ? out.place_stems : out.waypoint_stems).segments.push_back({{w.ground_ecef, w.marker_ecef}, {}, {}});
+    (place ? out.place_balls : out.waypoint_balls).segments.push_back({{w.marker_ecef}, {}, {}});
+  }
+  return out;
+}
+
+std::vector<TrackDraw> PinGpu::draws(const scene::WaypointSet* set, const scene::PinStyle& style) {
+  if (set != set_ || (set != nullptr && set->revision != revision_)) {
+    set_ = set;
+    revision_ = set != nullptr ? set->revision : 0;
+    const PinGeometry geometry = set != nullptr ? pin_geometry(*set) : PinGeometry{};
+    waypoint_stems_ = buffer_of(geometry.waypoint_stems);
+    waypoint_balls_ = buffer_of(geometry.waypoint_balls);
+    place_stems_ = buffer_of(geometry.place_stems);
+    place_balls_ = buffer_of(geometry.place_balls);
+  }
+  std::vector<TrackDraw> out;
+  const auto add = [&](const std::optional<TrackBuffer>& buffer, const glm::vec3& color, const CapsuleShape& shape) {
+    if (buffer) out.push_back({&*buffer, color, false, shape, true});
+  };
+  add(place_stems_, style.stem_color, stem_shape(style, style.place_lift_px, style.place_lift_m));
+  add(place_balls_, style.place_color,
+      ball_shape(style.place_marker_px, style.place_marker_m, style.place_lift_px, style.place_lift_m));
+  add(waypoint_stems_, style.stem_color, stem_shape(style, style.lift_px, style.lift_m));
+  add(waypoint_balls_, style.waypoint_color, ball_shape(style.marker_px, style.marker_m, style.lift_px, style.lift_m));
+  return out;
+}
+
+}  // namespace trailray::render
