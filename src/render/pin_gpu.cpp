@@ -4,29 +4,41 @@ namespace trailray::render {
 namespace {
 
 std::optional<TrackBuffer> buffer_of(const scene::TrackGeometry& geometry) {
-  if (geometry.segments.empty()) return std::nullopt;
+  if (geometry.segments.empty() || geometry.segments.front().points_ecef.empty()) return std::nullopt;
   return std::optional<TrackBuffer>(std::in_place, geometry);
 }
 
 // A pin's look: the stem and the ball, widths bounded in pixels below and metres near the camera.
 CapsuleShape stem_shape(const scene::PinStyle& s, double lift_px, double lift_m) {
-  return {scene::TrackWidth{s.stem_m, scene::TrackWidth::Unit::metres}, s.stem_px, 0.0f, static_cast<float>(lift_px),
-          static_cast<float>(lift_m)};
+  return {scene::TrackWidth{s.stem_m, scene::TrackWidth::Unit::metres},
+          s.stem_px,
+          0.0f,
+          static_cast<float>(lift_px),
+          static_cast<float>(lift_m),
+          CapsuleShape::Capsules::pairs};
 }
 CapsuleShape ball_shape(double px, double m, double lift_px, double lift_m) {
-  return {scene::TrackWidth{m, scene::TrackWidth::Unit::metres}, px, 0.0f, static_cast<float>(lift_px),
-          static_cast<float>(lift_m)};
+  return {scene::TrackWidth{m, scene::TrackWidth::Unit::metres},
+          px,
+          0.0f,
+          static_cast<float>(lift_px),
+          static_cast<float>(lift_m),
+          CapsuleShape::Capsules::singles};
 }
 
 }  // namespace
 
 PinGeometry pin_geometry(const scene::WaypointSet& set) {
   PinGeometry out;
+  for (scene::TrackGeometry* g : {&out.waypoint_stems, &out.waypoint_balls, &out.place_stems, &out.place_balls})
+    g->segments.resize(1);
   for (const scene::Waypoint& w : set.points) {
     if (!w.visible) continue;
     const bool place = w.kind == scene::WaypointKind::Place;
-    (place ? out.place_stems : out.waypoint_stems).segments.push_back({{w.ground_ecef, w.marker_ecef}, {}, {}});
-    (place ? out.place_balls : out.waypoint_balls).segments.push_back({{w.marker_ecef}, {}, {}});
+    auto& stems = (place ? out.place_stems : out.waypoint_stems).segments.front().points_ecef;
+    stems.push_back(w.ground_ecef);
+    stems.push_back(w.marker_ecef);
+    (place ? out.place_balls : out.waypoint_balls).segments.front().points_ecef.push_back(w.marker_ecef);
   }
   return out;
 }

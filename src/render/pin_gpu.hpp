@@ -1,7 +1,7 @@
 #pragma once
 // The pins of a scene's waypoints on the GPU: each pin a thin stem from the ground up to its
-// marker and a ball resting on top, drawn by the track pass as capsules (a stem is a segment of
-// two points whose top is raised by the style's lift, a ball a segment of one point raised the
+// marker and a ball resting on top, drawn by the track pass as capsules standing alone (a stem
+// from the ground to its marker raised by the style's lift, a ball at the marker raised the
 // same), so they are ray traced, lit, shadowed and depth-tested with the terrain like tracks.
 // One buffer of stems and one of balls per kind (waypoints, and the smaller place labels), made
 // again only when the set's revision (or the set) changes.
@@ -18,7 +18,9 @@
 namespace trailray::render {
 
 // The stems and balls of the visible points, as the geometry the buffers are made from (GL-free;
-// tests read it): for each kind, stems (ground, marker) and balls (marker).
+// tests read it): for each kind one segment of stems (ground, marker, ground, marker, ...: drawn
+// as pairs) and one of balls (each marker: drawn as singles), so that all the pins of a kind are
+// one draw however many there are.
 struct PinGeometry {
   scene::TrackGeometry waypoint_stems, waypoint_balls, place_stems, place_balls;
 };

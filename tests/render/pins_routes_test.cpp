@@ -91,6 +91,22 @@ TEST_F(PinsAndRoutesTest, APinIsDrawnWhereItsWaypointProjectsAndNowhereElse) {
   EXPECT_LE(across, 18);
 }
 
+TEST_F(PinsAndRoutesTest, ManyPinsOfAKindAreEachDrawnAtTheirPlace) {
+  // One buffer and one draw per kind and part: every pin still stands on its own.
+  scene::WaypointSet set;
+  for (int i = 0; i < 5; ++i) set.points.push_back(waypoint_at(frame_, -120.0 + 60.0 * i, 30.0 * (i % 2), 5.0 * i));
+  const test::WithAndWithout images = draw_pins(red_pin_scene(), set);
+  for (const scene::Waypoint& w : set.points) {
+    std::uint32_t x = 0, y = 0;
+    ASSERT_TRUE(test::pixel_of(camera_, w.marker_ecef, x, y));
+    EXPECT_GT(test::track_alpha(images.with, images.without, x, y), 0.9) << "at (" << x << ", " << y << ")";
+  }
+  // Between two neighbours nothing: the pins are not joined into a line.
+  std::uint32_t x = 0, y = 0;
+  ASSERT_TRUE(test::pixel_of(camera_, frame_.point(-90.0, 15.0, 2.5), x, y));
+  EXPECT_LT(test::track_alpha(images.with, images.without, x, y), 0.05);
+}
+
 TEST_F(PinsAndRoutesTest, AHiddenWaypointHasNoPinAndAPlaceIsSmaller) {
   scene::WaypointSet set;
   set.points = {waypoint_at(frame_, -60.0, 0.0, 10.0),

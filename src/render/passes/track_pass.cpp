@@ -68,6 +68,7 @@ void set_shape_uniforms(const ShaderProgram& program, const TrackDraw& draw, con
   program.set_float("u_min_width_px", static_cast<float>(draw.shape.min_width_px.value_or(settings.min_width_px)));
   program.set_float("u_dash_px", draw.shape.dash_px);
   program.set_vec2("u_lift", draw.shape.lift_px, draw.shape.lift_m);
+  program.set_int("u_capsule_mode", static_cast<int>(draw.shape.capsules));
 }
 
 // A 24-bit depth buffer resolves about d^2 / (near * 2^24) metres at distance d (camera.hpp): k
@@ -109,9 +110,10 @@ Buffer make_quad_indices() {
 }
 
 // Draws every segment of the track, a capsule per pair of consecutive points (a segment of one
-// point is a sphere: a zero-length capsule), in chunks of kCapsulesPerDraw. The quads' vertex
-// array (with the index buffer) must be bound.
-void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
+// point is a sphere: a zero-length capsule), or per pair or point standing alone (`capsules`),
+// in chunks of kCapsulesPerDraw. The quads' vertex array (with the index buffer) must be bound.
+void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer,
+                   CapsuleShape::Capsules capsules = CapsuleShape::Capsules::polyline) {
   bind_texture(kPointsUnit, buffer.points());
   bind_texture(kBlocksUnit, buffer.blocks());
   program.set_int("u_block_shift", buffer.block_shift());
@@ -120,10 +122,13 @@ void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer) {
     program.set_int("u_first", range.first);
     program.set_int("u_first_block", range.first_block);
     program.set_int("u_last", range.first + range.count - 1);
-    const std::int32_t capsules = std::max(range.count - 1, 1);
-    for (std::int32_t done = 0; done < capsules; done += kCapsulesPerDraw) {
-      program.set_int("u_chunk_first", range.first + done);
-      const std::int32_t count = std::min(kCapsulesPerDraw, capsules - done);
+    const std::int32_t points_per_capsule = capsules == CapsuleShape::Capsules::pairs ? 2 : 1;
+    const std::int32_t total = capsules == CapsuleShape::Capsules::polyline ? std::max(range.count - 1, 1)
+                               : capsules == CapsuleShape::Capsules::pairs  ? range.count / 2
+                                                                            : range.count;
+    for (std::int32_t done = 0; done < total; done += kCapsulesPerDraw) {
+      program.set_int("u_chunk_first", range.first + done * points_per_capsule);
+      const std::int32_t count = std::min(kCapsulesPerDraw, total - done);
       glDrawElements(GL_TRIANGLES, count * 6, GL_UNSIGNED_SHORT, nullptr);
     }
   }
@@ -267,7 +272,7 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const scene::Camera& camera
     if (!drawable(draw)) continue;
     set_color_uniforms(visible_, draw, settings);
     set_shape_uniforms(visible_, draw, settings);
-    draw_segments(visible_, *draw.buffer);
+    draw_segments(visible_, *draw.buffer, draw.shape.capsules);
   }
   glBindVertexArray(0);
   glDisable(GL_DEPTH_TEST);
@@ -346,7 +351,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
     if (!drawable(draw)) continue;
     set_color_uniforms(overlay_, draw, settings);
     set_shape_uniforms(overlay_, draw, settings);
-    draw_segments(overlay_, *draw.buffer);
+    draw_segments(overlay_, *draw.buffer, draw.shape.capsules);
   }
   glBindVertexArray(0);
   glDisable(GL_DEPTH_TEST);
@@ -383,7 +388,7 @@ void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_proj
   for (const TrackDraw& draw : tracks)
     if (drawable(draw)) {
       set_shape_uniforms(shadow_, draw, settings);
-      draw_segments(shadow_, *draw.buffer);
+      draw_segments(shadow_, *draw.buffer, draw.shape.capsules);
     }
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);

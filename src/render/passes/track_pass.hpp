@@ -53,6 +53,10 @@ struct CapsuleShape {
   // Each segment's last point is raised along the local vertical by max(lift_px pixels, lift_m):
   // a pin's stem reaches up to its ball (a segment of one point), which rests on it.
   float lift_px = 0.0f, lift_m = 0.0f;
+  // How a segment's points make capsules: a polyline (a track), or standing alone, so that
+  // thousands of pins are one draw: pairs (points 2k, 2k+1: stems) or singles (each point: balls).
+  enum class Capsules { polyline = 0, pairs = 1, singles = 2 };
+  Capsules capsules = Capsules::polyline;
 };
 
 struct TrackDraw {

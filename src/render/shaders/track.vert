@@ -38,16 +38,18 @@ void main() {
   int corner = gl_VertexID & 3;
   int end = corner >> 1;
   float side = (corner & 1) == 1 ? 1.0 : -1.0;
-  int i1 = u_chunk_first + segment;
-  int i2 = min(i1 + 1, u_last);
+  // Pins' capsules stand alone (u_capsule_mode 1, 2: no neighbours, no joints).
+  bool alone = u_capsule_mode != 0;
+  int i1 = u_capsule_mode == 1 ? u_chunk_first + 2 * segment : u_chunk_first + segment;
+  int i2 = u_capsule_mode == 2 ? i1 : min(i1 + 1, u_last);
   vec3 x1 = track_point(i1);
   vec3 x2 = track_point(i2);
   float radius = tube_radius(x1, x2);
   v_x1 = x1;
   v_x2 = x2;
   if (end == 1) {
-    bool has_previous = i1 > u_first;
-    bool has_next = i2 + 1 <= u_last;
+    bool has_previous = !alone && i1 > u_first;
+    bool has_next = !alone && i2 + 1 <= u_last;
     vec3 x0 = has_previous ? track_point(i1 - 1) : x1;
     vec3 x3 = has_next ? track_point(i2 + 1) : x2;
     v_x0 = x0;

@@ -38,11 +38,21 @@ vec3 closest_on_segment(vec3 p, vec3 a, vec3 b) {
 float pixel_size_at(vec3 p) { return u_pixel_angle * max(dot(p, u_camera_forward), 1.0e-3 * length(p)); }
 
 uniform vec3 u_up;    // unit, ECEF: the local vertical at the camera
-uniform vec2 u_lift;  // each segment's last point raised by max(x pixels, y metres) (pins)
+uniform vec2 u_lift;  // the capsules' last points raised by max(x pixels, y metres) (pins)
+// How the segment's points make capsules (CapsuleShape::Capsules): 0 a polyline (a capsule per
+// consecutive pair, joined at the joints), 1 pairs (points 2k and 2k+1, each on its own: pins'
+// stems), 2 singles (each point a ball on its own: pins' balls).
+uniform int u_capsule_mode;
+
+// Whether a point is the last of its capsule, which u_lift raises.
+bool lifted(int index) {
+  if (u_capsule_mode == 1) return ((index - u_first) & 1) == 1;
+  return u_capsule_mode == 2 || index == u_last;
+}
 
 vec3 track_point(int index) {
   vec3 p = fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, u_first_block + ((index - u_first) >> u_block_shift)).xyz;
-  if (index == u_last && (u_lift.x > 0.0 || u_lift.y > 0.0)) p += u_up * max(u_lift.x * pixel_size_at(p), u_lift.y);
+  if ((u_lift.x > 0.0 || u_lift.y > 0.0) && lifted(index)) p += u_up * max(u_lift.x * pixel_size_at(p), u_lift.y);
   return p;
 }
 
