@@ -163,7 +163,8 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     ImGui::SameLine();
     ImGui::ColorEdit3("##colour", glm::value_ptr(t.color_srgb), ImGuiColorEditFlags_NoInputs);
     ImGui::SameLine();
-    if (ImGui::Selectable(t.name.c_str(), model.selected_track == static_cast<int>(i), 0,
+    const std::string label = t.is_route ? t.name + " (route)" : t.name;
+    if (ImGui::Selectable(label.c_str(), model.selected_track == static_cast<int>(i), 0,
                           ImVec2(std::max(40.0f, ImGui::GetContentRegionAvail().x - 60.0f), 0.0f)))
       model.selected_track = static_cast<int>(i);
     ImGui::SameLine();
