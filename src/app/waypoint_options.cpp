@@ -9,8 +9,7 @@ void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
                   "with a header naming name, lat, lon and ele columns (any order; comma, semicolon or tab), "
                   "or the waypoints of a GPX or GeoJSON file. Repeatable")
       ->type_name("FILE")
-      ->allow_extra_args(false)  // one file per --labels: the words after it are tracks
-      ->check(CLI::ExistingFile);
+      ->allow_extra_args(false);  // one file per --labels: the words after it are tracks
   command.add_flag("--no-waypoints", args.no_waypoints,
                    "No pins or labels for the files' waypoints (GPX wpt, KML points, FIT course points) or places");
 }
