@@ -53,7 +53,8 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon) {
 
 scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const scene::TrackSet& tracks,
                              double neutral_ground_m, terrain::HeightSource* heights,
-                             const scene::KeptClearCorner& keep_clear, const std::optional<scene::ImageArea>& area) {
+                             const scene::KeptClearCorner& keep_clear, const std::optional<scene::ImageArea>& area,
+                             const scene::WaypointSet* waypoints) {
   if (request.placement || request.look_at) {
     const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
     double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
@@ -67,6 +68,18 @@ scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& le
   framing.lens = lens;
   framing.keep_clear = keep_clear;
   framing.area = area;
+  bool any_track_point = false;
+  for (const scene::Track& t : tracks.tracks()) any_track_point = any_track_point || (t.visible && t.point_count() > 0);
+  if (!any_track_point && waypoints != nullptr && !waypoints->points.empty()) {
+    std::vector<scene::GeoPosition> points;
+    for (const scene::Waypoint& w : waypoints->points) {
+      const double height = std::isnan(w.ele_m) ? w.ground_m : w.ele_m;
+      points.push_back({w.lat_deg, w.lon_deg, std::isnan(height) ? neutral_ground_m : height});
+    }
+    auto framed = scene::frame_points(points, framing);
+    if (!framed.ok()) throw std::runtime_error("cannot frame the waypoints: " + framed.error);
+    return framed.value->camera;
+  }
   auto framed = scene::frame_tracks(tracks, framing);
   if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
   return framed.value->camera;

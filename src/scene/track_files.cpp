@@ -16,7 +16,9 @@ LoadedTrackFile read_track_file(const std::string& path, const track::ReadOption
   std::size_t points = 0;
   for (const auto& t : result.file.tracks) points += t.point_count();
   for (const auto& r : result.file.routes) points += r.points.size();
-  if (points == 0) throw std::runtime_error(path + ": has no track or route points to draw");
+  // A file of waypoints alone (a GPX of wpt, a KML of Point placemarks) is drawn as its pins.
+  if (points == 0 && result.file.waypoints.empty())
+    throw std::runtime_error(path + ": has no track, route or waypoint to draw");
   return {path, std::move(result.file)};
 }
 

@@ -21,7 +21,8 @@ struct LoadedTrackFile {
 };
 
 // Reads a file; its warnings go to `diagnostics`. Throws std::runtime_error naming the file and
-// the position for one that cannot be read, or naming the file when it has no point to draw.
+// the position for one that cannot be read, or naming the file when it has no point to draw (no
+// track or route point and no waypoint).
 LoadedTrackFile read_track_file(const std::string& path, const track::ReadOptions& read, Diagnostics& diagnostics);
 
 // Every file (the first that fails throws, as read_track_file).

@@ -142,6 +142,32 @@ TEST(WaypointCli, PlaceLabelsFromACsvAndItsErrors) {
   EXPECT_NE(r.out.find("bad.csv:3: "), std::string::npos) << r.out;
 }
 
+TEST(WaypointCli, AFileOfWaypointsAloneIsDrawnAsItsPinsFramed) {
+  RenderEnv env;
+  const GpxPoint w = waypoint_point();
+  const std::string gpx = env.file("only.gpx");
+  {
+    std::ofstream f(gpx);
+    f.precision(10);
+    f << "<?xml version=\"1.0\"?><gpx version=\"1.1\" creator=\"t\"><wpt lat=\"" << w.lat << "\" lon=\"" << w.lon
+      << "\"><ele>1000</ele><name>Hut</name></wpt></gpx>\n";
+  }
+  const std::string out = env.file("only.png");
+  const auto r = run_command(env.prefix() + shell_quote(gpx) + kPlain + " -o " + shell_quote(out) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Picture picture = read_picture(out);
+  // Framed on the waypoint: its pin near the middle of the picture, and all the red there is.
+  const std::size_t red = red_pixels(picture);
+  EXPECT_GT(red, 20u);
+  EXPECT_EQ(static_cast<std::size_t>(red_around(picture, kWidth / 2.0, kHeight / 2.0, 40)), red);
+
+  const std::string empty = env.file("empty.gpx");
+  std::ofstream(empty) << "<?xml version=\"1.0\"?><gpx version=\"1.1\" creator=\"t\"></gpx>\n";
+  const auto e = run_command(env.prefix() + shell_quote(empty) + kPlain + " -o " + shell_quote(out) + " 2>&1");
+  EXPECT_NE(e.status, 0);
+  EXPECT_NE(e.out.find("has no track, route or waypoint to draw"), std::string::npos) << e.out;
+}
+
 TEST(WaypointCli, ABadRouteColourIsAUsageError) {
   RenderEnv env;
   const std::string gpx = env.write_gpx("line.gpx", {GpxTrack{"Line", {line()}}});

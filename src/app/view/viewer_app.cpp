@@ -71,7 +71,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
        scene::read_place_labels(o.label_files, o.read, {sources_.heights.get(), neutral_}, diagnostics_))
     model_.waypoints.points.push_back(std::move(w));
   scene::set_waypoints_visible(model_.waypoints, model_.settings.show_waypoints);
-  controller_ = first_view(o, model_.tracks, sources_.heights.get(), neutral_, framing_room(o.lens));
+  controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
 

@@ -14,12 +14,13 @@ namespace trailray::app::view {
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks, terrain::HeightSource* heights,
-                            double neutral, const FramingRoom& room) {
+CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks, const scene::WaypointSet& waypoints,
+                            terrain::HeightSource* heights, double neutral, const FramingRoom& room) {
   if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
-  if (tracks.empty() && !o.camera.placement)
+  if (tracks.empty() && waypoints.points.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
-  const scene::Camera camera = initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area);
+  const scene::Camera camera =
+      initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area, &waypoints);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
   return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
 }

@@ -118,17 +118,17 @@ void place(const PanelRect& r) {
 }
 
 // The waypoints of one file (or the places of one --labels file), folded under a line naming
-// how many there are; a click flies to one.
-void waypoint_list(const ViewerModel& model, const std::string& source, scene::WaypointKind kind,
+// how many there are (and the file, where no track above names it); a click flies to one.
+void waypoint_list(const ViewerModel& model, const std::string& source, scene::WaypointKind kind, bool name_file,
                    PanelActions& actions) {
   std::vector<std::size_t> of_source;
   for (std::size_t w = 0; w < model.waypoints.points.size(); ++w)
     if (model.waypoints.points[w].source == source && model.waypoints.points[w].kind == kind) of_source.push_back(w);
   if (of_source.empty()) return;
   const bool place = kind == scene::WaypointKind::Place;
-  const std::string title =
-      place ? fmt::format("{} places: {}", of_source.size(), std::filesystem::path(source).filename().string())
-            : fmt::format("{} waypoint{}", of_source.size(), of_source.size() == 1 ? "" : "s");
+  std::string title =
+      fmt::format("{} {}{}", of_source.size(), place ? "place" : "waypoint", of_source.size() == 1 ? "" : "s");
+  if (name_file) title += ": " + std::filesystem::path(source).filename().string();
   ImGui::PushID(source.c_str());
   ImGui::PushID(place ? 1 : 0);
   if (ImGui::TreeNode("##waypoints", "%s", title.c_str())) {
@@ -178,16 +178,20 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     // After a file's last track: its waypoints.
     if (i + 1 == model.tracks.size() || model.tracks[i + 1].source != t.source) {
       ImGui::Indent();
-      waypoint_list(model, t.source, scene::WaypointKind::Waypoint, actions);
+      waypoint_list(model, t.source, scene::WaypointKind::Waypoint, false, actions);
       ImGui::Unindent();
     }
   }
-  std::vector<std::string> place_files;
-  for (const scene::Waypoint& w : model.waypoints.points)
-    if (w.kind == scene::WaypointKind::Place &&
-        std::find(place_files.begin(), place_files.end(), w.source) == place_files.end())
-      place_files.push_back(w.source);
-  for (const std::string& file : place_files) waypoint_list(model, file, scene::WaypointKind::Place, actions);
+  // Files of waypoints alone, then the places of --labels, each file once.
+  std::vector<std::pair<std::string, scene::WaypointKind>> files;
+  for (const scene::Waypoint& w : model.waypoints.points) {
+    const bool under_a_track = w.kind == scene::WaypointKind::Waypoint &&
+                               std::any_of(model.tracks.tracks().begin(), model.tracks.tracks().end(),
+                                           [&](const scene::Track& t) { return t.source == w.source; });
+    const std::pair<std::string, scene::WaypointKind> file{w.source, w.kind};
+    if (!under_a_track && std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+  }
+  for (const auto& [file, kind] : files) waypoint_list(model, file, kind, true, actions);
   ImGui::Separator();
   scene::TrackStyle& s = model.settings.style.tracks;
   width_controls(s);

@@ -52,7 +52,7 @@ class ViewerApp {
   void update_hover(double x_px, double y_px, const scene::Camera& camera);
   void fly_to_track(int index);
   void fly_to_waypoint(int index);  // index into model_.waypoints
-  void follow_replay();  // the replay's camera follow (chase, or orbit round the marker)
+  void follow_replay();             // the replay's camera follow (chase, or orbit round the marker)
   // `status`: say so in the window too (the P key; not scripted pictures).
   void screenshot(const std::string& path, bool status = false);
   void run_script(const ViewScript& script);
@@ -85,7 +85,8 @@ class ViewerApp {
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks, terrain::HeightSource* heights,
-                            double neutral, const FramingRoom& room);
+CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
+                            const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
+                            const FramingRoom& room);
 
 }  // namespace trailray::app::view
