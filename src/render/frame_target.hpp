@@ -23,6 +23,9 @@ class FrameTarget {
   // When set, the frame's passes are timed as one profiler frame (begun after the tiles are
   // loaded).
   FrameProfiler* profiler = nullptr;
+  // Device pixels per logical pixel where the frame is shown (a high-DPI window: 2; `render
+  // --pixel-ratio`): labels are drawn that much larger, so they read the same and stay crisp.
+  double pixel_ratio = 1.0;
 };
 
 // The frame read back into a picture (top-down, sRGB): `trailray render`, screenshots, tests.

@@ -6,6 +6,7 @@
 
 #include "render/gl/gl_capabilities.hpp"
 #include "render/passes/shadow_pass.hpp"
+#include "scene/legend_content.hpp"
 
 namespace trailray::render {
 namespace {
@@ -75,6 +76,8 @@ FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camer
     content.tracks = track_gpu_.draws(*scene.tracks, scene.color_range.has_value(), scene.style.tracks);
   // Pins after the tracks: they are drawn by the same pass.
   for (const TrackDraw& pin : pin_gpu_.draws(scene.waypoints, scene.style.pins)) content.tracks.push_back(pin);
+  content.labels = layout_labels(scene, camera, target.pixel_ratio);
+  content.label_style = scene.style.labels;
   FrameReport report = draw(content, camera, target);
   track_gpu_.evict(scene.tracks);
   report.gpu_tracks = track_gpu_.stats();
@@ -94,6 +97,7 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
     if (t.image) ++report.imagery_tiles_used;
   }
   for (const TrackDraw& draw : content.tracks) (draw.is_pin ? report.pin_draws : report.tracks_drawn) += 1;
+  report.labels_drawn = content.labels.size();
 
   // The sun and sky light of the frame: what decides the shadows and what the passes shade with.
   const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);
@@ -108,6 +112,21 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
   report.gpu_meshes = terrain_gpu_.mesh_stats();
   report.gpu_imagery = terrain_gpu_.imagery_stats();
   return report;
+}
+
+std::vector<scene::PlacedLabel> Renderer::layout_labels(const scene::Scene& scene, const scene::Camera& camera,
+                                                        double pixel_ratio) {
+  const std::vector<scene::LabelCandidate> candidates = scene::label_candidates(scene);
+  if (candidates.empty()) return {};
+  scene::LabelLayouter& layouter = label_pass_.layouter();
+  scene::LabelLayoutOptions options;
+  options.size_px = scene.style.labels.size_px;
+  options.pixel_ratio = pixel_ratio;
+  const scene::Lens& lens = camera.lens();
+  options.keep_out = scene.label_keep_out;
+  const scene::PixelRect legend = scene::scene_legend_panel(lens.width_px, lens.height_px, scene, layouter.text());
+  if (!legend.empty()) options.keep_out.push_back(legend);
+  return layouter.layout(candidates, camera, options);
 }
 
 std::optional<ShadowCascades> Renderer::shadow_cascades(const FrameContent& content, const scene::Camera& camera,
@@ -161,6 +180,11 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
     compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
   });
   if (overlay) passes.run("overlays", [&] { track_pass_.blend_overlay(*overlay); });
+  if (!content.labels.empty())
+    passes.run("labels", [&] {
+      frame.bind();
+      label_pass_.draw(gbuffer, content.labels, content.label_style);
+    });
   passes.run(
       "output",
       [&] {

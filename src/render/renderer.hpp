@@ -10,6 +10,7 @@
 //   ssao       ambient occlusion from the G-buffer
 //   compose    sun, sky light, shadows, AO, atmosphere: the lit frame
 //   overlays   the track overlay blended over it
+//   labels     the names of waypoints, places and tracks (laid out by scene/label_layout.hpp)
 //   output     the frame handed to its target (read back, copied into a window)
 //
 // Each pass runs in a KHR_debug group of its name and, with a profiler, is timed under it.
@@ -26,6 +27,7 @@
 #include "render/gl/gpu_resource_cache.hpp"
 #include "render/passes/compose_pass.hpp"
 #include "render/passes/gbuffer.hpp"
+#include "render/passes/label_pass.hpp"
 #include "render/passes/shadow_maps.hpp"
 #include "render/passes/ssao_pass.hpp"
 #include "render/passes/terrain_pass.hpp"
@@ -55,6 +57,7 @@ struct FrameReport {
   std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
   std::size_t tracks_drawn = 0;        // visible tracks
   std::size_t pin_draws = 0;           // the waypoints' stems and balls (a draw per kind and part)
+  std::size_t labels_drawn = 0;        // labels placed (those whose point is hidden included)
   bool shadows_drawn = false;          // false: switched off, or the sun below the horizon
   // The GPU caches after this frame's eviction: held, used by the frame, uploaded, evicted.
   GpuCacheStats gpu_meshes;
@@ -70,6 +73,8 @@ struct FrameContent {
   TrackSceneSettings track_settings;
   scene::Shading shading;
   glm::dvec3 sun_direction_ecef{0.0, 0.0, 1.0};  // unit, towards the sun
+  std::vector<scene::PlacedLabel> labels;        // laid out for the frame's camera and size
+  scene::LabelStyle label_style;
 };
 
 class Renderer {
@@ -89,6 +94,11 @@ class Renderer {
 
   // Draws resolved content: the tracks' buffers are the caller's (they must outlive the call).
   FrameReport draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target);
+
+  // The labels the scene calls for, laid out for a camera and a target's pixel ratio, clear of
+  // the legend the picture gets and of scene.label_keep_out.
+  std::vector<scene::PlacedLabel> layout_labels(const scene::Scene& scene, const scene::Camera& camera,
+                                                double pixel_ratio);
 
   const RendererOptions& options() const { return options_; }
   void set_options(const RendererOptions& options) { options_ = options; }
@@ -113,6 +123,7 @@ class Renderer {
   SsaoPass ssao_pass_;
   ComposePass compose_pass_;
   TrackPass track_pass_;
+  LabelPass label_pass_;
   std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
   TerrainGpu terrain_gpu_;
   TrackGpu track_gpu_;

@@ -53,11 +53,16 @@ void draw_scene_legend(RgbaImage& image, const Scene& scene) {
 
 PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene) {
   if (!scene.style.legend) return {};
+  TextRasterizer text;
+  return scene_legend_panel(width, height, scene, text);
+}
+
+PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene, TextRasterizer& text) {
+  if (!scene.style.legend) return {};
   const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
   const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
   // As draw_scene_legend: a colour bar or a key, never both (one is for a metric, the other for
   // solid colours).
-  TextRasterizer text;
   if (legend) return color_legend_panel(width, height, text, *legend);
   if (!key.empty()) return track_key_panel(width, height, text, key);
   return {};

@@ -27,6 +27,8 @@ void draw_scene_legend(RgbaImage& image, const Scene& scene);
 // The panel draw_scene_legend will draw into a `width` x `height` picture, measured by the
 // legend's own layout; empty when it draws nothing.
 PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene);
+// The same with a rasterizer of the caller's (none is started for the call).
+PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene, TextRasterizer& text);
 
 // What the framing keeps the tracks out of for a legend `panel` in the bottom-left corner of a
 // picture `height` pixels tall: the panel with, above and to its right, the gap it keeps from

@@ -8,7 +8,9 @@
 
 #include <limits>
 #include <optional>
+#include <vector>
 
+#include "scene/image_paint.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
 #include "scene/waypoints.hpp"
@@ -34,6 +36,9 @@ struct Scene {
   // Where no source has terrain the neutral ground is drawn at this height; NaN: at the lowest
   // terrain loaded for the view (0 where there is none).
   double neutral_ground_m = std::numeric_limits<double>::quiet_NaN();
+  // Parts of the picture no label may cover besides the legend the picture gets (which labels
+  // always avoid): the viewer's legend window. Picture pixels, y down.
+  std::vector<PixelRect> label_keep_out;
 };
 
 // The colour scale: style.tracks.range, else the robust range over the values of the visible

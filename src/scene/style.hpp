@@ -76,11 +76,24 @@ struct Shading {
   SnowCover snow;          // `--snow`, `--snowline M`
 };
 
+// The names drawn over the picture (scene/label_layout.hpp, the renderer's labels pass): of
+// waypoints, place labels and tracks (at their start).
+struct LabelStyle {
+  bool enabled = true;  // `--no-labels`
+  int size_px = 13;     // `--label-size`: the text's em size at pixel ratio 1 (scaled by the frame's)
+  // A label whose point the terrain hides: drawn faint (`--hidden-labels ghost`, with this
+  // opacity) or not at all (`hide`).
+  bool hide_occluded = false;
+  float ghost_alpha = 0.3f;
+};
+inline constexpr int kMinLabelSizePx = 6, kMaxLabelSizePx = 96;
+
 struct Style {
   TrackStyle tracks;
   Shading shading;
   bool legend = true;  // `--legend`: colour bar or key of track names
   PinStyle pins;
+  LabelStyle labels;
 };
 
 }  // namespace trailray::scene

@@ -1,0 +1,170 @@
+#include "scene/label_layout.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace trailray::scene {
+namespace {
+
+// Below this opacity a label is not worth the room it takes from others.
+constexpr float kMinAlpha = 0.02f;
+
+glm::u8vec3 to_bytes(const glm::vec3& srgb) {
+  return glm::u8vec3(glm::round(glm::clamp(srgb, glm::vec3(0.0f), glm::vec3(1.0f)) * 255.0f));
+}
+
+// A track's colour as a label's text: lifted towards white so that dark track colours still read
+// on the dark halo.
+glm::u8vec3 track_label_color(const glm::vec3& srgb) { return to_bytes(glm::mix(srgb, glm::vec3(1.0f), 0.35f)); }
+
+constexpr glm::u8vec3 kWaypointColor{255, 255, 255};
+constexpr glm::u8vec3 kPlaceColor{255, 240, 200};  // warm: a place is not one of the files' points
+
+struct Projected {
+  std::size_t index;
+  glm::dvec2 pixel;
+  double distance_m;
+};
+
+PixelRect inflated(const PixelRect& r, int by) { return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}; }
+
+// The boxes a label of size (w, h) tries around its anchor, in order of preference.
+std::array<PixelRect, 6> boxes_around(glm::dvec2 anchor, int w, int h, int lift) {
+  const int ax = static_cast<int>(std::floor(anchor.x)), ay = static_cast<int>(std::floor(anchor.y));
+  const int above = ay - lift - h, beside = ay - h / 2;
+  return {{
+      {ax - w / 2, above, w, h},     // above
+      {ax + lift / 2, above, w, h},  // above right
+      {ax - lift / 2 - w, above, w, h},
+      {ax + lift, beside, w, h},  // right
+      {ax - lift - w, beside, w, h},
+      {ax - w / 2, ay + lift, w, h},  // below
+  }};
+}
+
+bool rank_before(const LabelCandidate& a, double da, const LabelCandidate& b, double db) {
+  if (a.kind != b.kind) return static_cast<int>(a.kind) < static_cast<int>(b.kind);
+  if (a.priority != b.priority) return a.priority > b.priority;
+  return da < db;
+}
+
+LabelFade subject_fade(std::vector<double> distances) {
+  if (distances.empty()) return {};
+  const auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
+  std::nth_element(distances.begin(), middle, distances.end());
+  return {kFadeFullSubjects * *middle, kFadeZeroSubjects * *middle};
+}
+
+}  // namespace
+
+std::vector<LabelCandidate> label_candidates(const Scene& scene) {
+  std::vector<LabelCandidate> out;
+  if (!scene.style.labels.enabled) return out;
+  if (scene.tracks != nullptr)
+    for (const Track& t : scene.tracks->tracks()) {
+      if (!t.visible || t.name.empty()) continue;
+      const auto first = std::find_if(t.geometry.segments.begin(), t.geometry.segments.end(),
+                                      [](const TrackPolyline& s) { return !s.points_ecef.empty(); });
+      if (first == t.geometry.segments.end()) continue;
+      out.push_back({t.name, LabelKind::track, 0, first->points_ecef.front(), track_label_color(t.color_srgb)});
+    }
+  if (scene.waypoints != nullptr)
+    for (const Waypoint& w : scene.waypoints->points) {
+      if (!w.visible || w.name.empty()) continue;
+      const bool place = w.kind == WaypointKind::Place;
+      out.push_back({w.name, place ? LabelKind::place : LabelKind::waypoint, w.priority, w.marker_ecef,
+                     place ? kPlaceColor : kWaypointColor});
+    }
+  return out;
+}
+
+float label_fade_alpha(double distance_m, const LabelFade& fade) {
+  if (!(distance_m > fade.full_m)) return 1.0f;
+  if (!(distance_m < fade.zero_m)) return 0.0f;
+  return static_cast<float>((fade.zero_m - distance_m) / (fade.zero_m - fade.full_m));
+}
+
+int label_halo_px(int font_px) { return std::max(1, static_cast<int>(std::lround(font_px / 7.0))); }
+int label_margin_px(int font_px) { return std::max(1, static_cast<int>(std::lround(font_px / 5.0))); }
+int label_lift_px(int font_px) { return std::max(2, static_cast<int>(std::lround(font_px * 0.6))); }
+
+TextExtent LabelLayouter::measure(const std::string& text, int font_px, FontWeight weight) {
+  std::string key = std::to_string(font_px);
+  key += weight == FontWeight::bold ? 'b' : 'r';
+  key += text;
+  const auto found = extents_.find(key);
+  if (found != extents_.end()) return found->second;
+  // A viewer that meets endless new names (a long session) must not grow without bound.
+  if (extents_.size() > 20000) extents_.clear();
+  const TextExtent extent = text_.measure(text, font_px, weight);
+  extents_.emplace(std::move(key), extent);
+  return extent;
+}
+
+std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>& candidates, const Camera& camera,
+                                               const LabelLayoutOptions& options) {
+  std::vector<PlacedLabel> placed;
+  const double ratio = std::isfinite(options.pixel_ratio) && options.pixel_ratio > 0.0 ? options.pixel_ratio : 1.0;
+  const int font_px = std::clamp(static_cast<int>(std::lround(options.size_px * ratio)), 1, 512);
+  const auto width = static_cast<double>(camera.lens().width_px), height = static_cast<double>(camera.lens().height_px);
+  const PixelRect picture{0, 0, static_cast<int>(width), static_cast<int>(height)};
+
+  // 2. In view: in front of the camera, before the far plane, the anchor inside the picture.
+  std::vector<Projected> in_view;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto p = camera.project(candidates[i].anchor_ecef);
+    if (!p || p->depth_m > camera.depth_range().far_m) continue;
+    if (!(p->x_px >= 0.0 && p->x_px < width && p->y_px >= 0.0 && p->y_px < height)) continue;
+    in_view.push_back({i, {p->x_px, p->y_px}, glm::length(candidates[i].anchor_ecef - camera.position())});
+  }
+  // 3. Faded by distance.
+  std::vector<double> distances;
+  for (const Projected& p : in_view) distances.push_back(p.distance_m);
+  const LabelFade fade = options.fade ? *options.fade : subject_fade(distances);
+  std::vector<std::pair<Projected, float>> shown;
+  for (const Projected& p : in_view) {
+    const float alpha = label_fade_alpha(p.distance_m, fade);
+    if (alpha >= kMinAlpha) shown.emplace_back(p, alpha);
+  }
+  // 4. By priority.
+  std::stable_sort(shown.begin(), shown.end(), [&](const auto& a, const auto& b) {
+    return rank_before(candidates[a.first.index], a.first.distance_m, candidates[b.first.index], b.first.distance_m);
+  });
+  // 5. Greedy placement.
+  const int halo = label_halo_px(font_px), margin = label_margin_px(font_px), lift = label_lift_px(font_px);
+  std::vector<PixelRect> taken;  // placed boxes grown by the margin
+  for (const auto& [p, alpha] : shown) {
+    const LabelCandidate& c = candidates[p.index];
+    const FontWeight weight = c.kind == LabelKind::track ? FontWeight::bold : FontWeight::regular;
+    const TextExtent extent = measure(c.text, font_px, weight);
+    if (extent.width <= 0) continue;
+    const int w = extent.width + 2 * halo, h = extent.height() + 2 * halo;
+    for (const PixelRect& box : boxes_around(p.pixel, w, h, lift)) {
+      if (!picture.contains(box)) continue;
+      const auto overlaps = [&](const PixelRect& r) { return r.intersects(box); };
+      if (std::any_of(taken.begin(), taken.end(), overlaps)) continue;
+      if (std::any_of(options.keep_out.begin(), options.keep_out.end(), overlaps)) continue;
+      taken.push_back(inflated(box, margin));
+      PlacedLabel label;
+      label.candidate = p.index;
+      label.text = c.text;
+      label.kind = c.kind;
+      label.color = c.color;
+      label.weight = weight;
+      label.font_px = font_px;
+      label.halo_px = halo;
+      label.box = box;
+      label.pen_x = box.x + halo;
+      label.baseline_y = box.y + halo + extent.ascent;
+      label.anchor_px = p.pixel;
+      label.anchor_distance_m = p.distance_m;
+      label.alpha = alpha;
+      placed.push_back(std::move(label));
+      break;
+    }
+  }
+  return placed;
+}
+
+}  // namespace trailray::scene

@@ -1,0 +1,108 @@
+#pragma once
+// Where the names of a scene go on the picture: the labels of waypoints, of place labels and of
+// tracks (at their start), laid out in screen space each frame for a camera, GL-free; the
+// renderer's labels pass (render/passes/label_pass.hpp) draws what this places.
+//
+// The layout, in order:
+//   1. candidates from the scene (label_candidates): every visible waypoint and place with a
+//      name, anchored at its marker; every visible track with a name, at its first point;
+//   2. projected with the camera: a candidate behind the camera, beyond its far plane, or whose
+//      anchor falls outside the picture is dropped;
+//   3. faded with distance: full opacity up to `fade.full_m` from the camera, none from
+//      `fade.zero_m` (linear between); by default these are 2.5 and 5 times the subject
+//      distance, the median distance of the candidates in view (what the picture is about), so
+//      a close-up keeps its labels and a view to the horizon thins out the far ones. A label
+//      faded below 2 % is dropped;
+//   4. sorted by priority: the kind first (track names, then waypoints, then places), then the
+//      waypoint's own priority (higher first), then the nearer first;
+//   5. placed greedily: each label tries a few boxes around its anchor (above, above right,
+//      above left, right, left, below) and takes the first that lies inside the picture, keeps a
+//      margin from every label placed before it and stays out of the keep-out rectangles (the
+//      legend); a label that finds no room is dropped. So no two labels ever overlap, and where
+//      two compete the more important, then the nearer, wins.
+// Boxes are measured with the font the pass draws with (scene/text_raster.hpp) at the label
+// size times the pixel ratio, halo included: what is placed is what is drawn.
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "scene/image_paint.hpp"
+#include "scene/scene.hpp"
+#include "scene/text_raster.hpp"
+
+namespace trailray::scene {
+
+// In priority order: a track's name wins over a waypoint's, which wins over a place's.
+enum class LabelKind { track, waypoint, place };
+
+struct LabelCandidate {
+  std::string text;  // UTF-8, one line
+  LabelKind kind = LabelKind::waypoint;
+  int priority = 0;  // within a kind: higher first
+  glm::dvec3 anchor_ecef{0.0};
+  glm::u8vec3 color{255, 255, 255};  // the text's colour (sRGB); the halo is dark
+};
+
+// The scene's labels: visible named waypoints and places, visible named tracks at their first
+// point (in the track's colour). Empty with style.labels.enabled off.
+std::vector<LabelCandidate> label_candidates(const Scene& scene);
+
+// Opacity by distance from the camera: 1 up to full_m, 0 from zero_m.
+struct LabelFade {
+  double full_m = 0.0, zero_m = 0.0;
+};
+float label_fade_alpha(double distance_m, const LabelFade& fade);
+inline constexpr double kFadeFullSubjects = 2.5, kFadeZeroSubjects = 5.0;
+
+struct LabelLayoutOptions {
+  int size_px = 13;           // the em size at pixel ratio 1
+  double pixel_ratio = 1.0;   // device pixels per size pixel (a high-DPI window: 2)
+  std::vector<PixelRect> keep_out;  // picture areas no label may touch (the legend)
+  std::optional<LabelFade> fade;    // nullopt: from the subject distance (see above)
+};
+
+struct PlacedLabel {
+  std::size_t candidate = 0;  // its index in the candidates
+  std::string text;
+  LabelKind kind = LabelKind::waypoint;
+  glm::u8vec3 color{255, 255, 255};
+  FontWeight weight = FontWeight::regular;
+  int font_px = 0;    // the size drawn, in picture pixels (size_px * pixel_ratio)
+  int halo_px = 0;    // the dark outline's width around the glyphs
+  PixelRect box;      // the text with its halo, picture pixels (y down): nothing is drawn outside it
+  int pen_x = 0, baseline_y = 0;  // where the text starts, in picture pixels
+  glm::dvec2 anchor_px{0.0};      // the anchor's pixel (continuous, y down)
+  double anchor_distance_m = 0.0;  // from the camera to the anchor
+  float alpha = 1.0f;              // from the distance fade (the pass adds the terrain's occlusion)
+};
+
+// The halo around glyphs and the gaps around labels at a font size in picture pixels.
+int label_halo_px(int font_px);
+int label_margin_px(int font_px);  // kept free between two labels' boxes
+int label_lift_px(int font_px);    // between the anchor and the nearest edge of its box
+
+// Lays labels out; keeps the font (FreeType) and the measured text between calls, so a viewer
+// lays out its frames without measuring the same names again.
+class LabelLayouter {
+ public:
+  LabelLayouter() = default;
+
+  std::vector<PlacedLabel> layout(const std::vector<LabelCandidate>& candidates, const Camera& camera,
+                                  const LabelLayoutOptions& options);
+
+  TextRasterizer& text() { return text_; }
+
+ private:
+  TextExtent measure(const std::string& text, int font_px, FontWeight weight);
+
+  TextRasterizer text_;
+  std::unordered_map<std::string, TextExtent> extents_;  // by size, weight and text
+};
+
+}  // namespace trailray::scene
