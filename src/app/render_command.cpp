@@ -52,6 +52,7 @@ int run_render(const RenderArgs& a) {
   for (const std::string& line : gl.describe()) diagnostics.note(line);
   render::Renderer renderer;
   render::ImageTarget picture;
+  picture.pixel_ratio = a.pixel_ratio;
   const render::FrameReport report = renderer.draw(scene, camera, picture);
   diagnostics.progress_done();
   if (a.profile) profile_frames(renderer, scene, camera, a.frames, picture);

@@ -21,6 +21,7 @@ struct RenderArgs {
   std::vector<std::string> tracks;
   std::string output;
   std::string size = "1920x1080";
+  double pixel_ratio = 1.0;  // device pixels per label pixel (high-DPI output)
   CameraArgs camera;
   StyleArgs style;
   double timeout_s = 120.0;

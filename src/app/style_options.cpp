@@ -78,6 +78,17 @@ void add_shading_options(CLI::App& cmd, StyleArgs& args) {
       ->type_name("M");
 }
 
+void add_label_options(CLI::App& cmd, StyleArgs& args) {
+  cmd.add_flag("--no-labels", args.no_labels, "No names over the picture (of waypoints, places and tracks)");
+  cmd.add_option("--label-size", args.label_size_px,
+                 fmt::format("Label text size in pixels, scaled by the pixel ratio (default 13, {}..{})",
+                             scene::kMinLabelSizePx, scene::kMaxLabelSizePx))
+      ->type_name("PX");
+  cmd.add_option("--hidden-labels", args.hidden_labels,
+                 "Labels whose point the terrain hides: drawn faint (ghost, default) or not at all (hide)")
+      ->type_name("ghost|hide");
+}
+
 scene::Style parse_style(const StyleArgs& args) {
   scene::Style out;
   scene::TrackStyle& style = out.tracks;
@@ -134,6 +145,14 @@ scene::Style parse_style(const StyleArgs& args) {
   out.shading.atmosphere = !args.no_atmosphere;
   out.shading.shadows = !args.no_shadows;
   out.shading.snow = {args.snow, args.snowline_m};
+  out.labels.enabled = !args.no_labels;
+  if (args.label_size_px < scene::kMinLabelSizePx || args.label_size_px > scene::kMaxLabelSizePx)
+    throw CLI::ValidationError("--label-size", fmt::format("'{}' is not a size in {}..{} pixels", args.label_size_px,
+                                                           scene::kMinLabelSizePx, scene::kMaxLabelSizePx));
+  out.labels.size_px = args.label_size_px;
+  if (args.hidden_labels != "ghost" && args.hidden_labels != "hide")
+    throw CLI::ValidationError("--hidden-labels", fmt::format("'{}' is neither ghost nor hide", args.hidden_labels));
+  out.labels.hide_occluded = args.hidden_labels == "hide";
   return out;
 }
 

@@ -2,7 +2,8 @@
 // How a scene is drawn, as options spelled the same in every command that draws (`render`,
 // `view`), parsed into the one scene::Style: the tracks (--width, --color-by, --colormap,
 // --range, --color, --route-color, --legend, --occlusion, --occluded-alpha, --occlusion-fade, --curtain) and the
-// shading (--time, --no-ssao, --no-atmosphere, --no-shadows, --snow, --snowline). Parsing checks
+// shading (--time, --no-ssao, --no-atmosphere, --no-shadows, --snow, --snowline) and the labels
+// (--no-labels, --label-size, --hidden-labels). Parsing checks
 // every value and names the option in its error.
 
 #include <CLI/CLI.hpp>
@@ -32,10 +33,16 @@ struct StyleArgs {
   std::string time;  // the sun's, ISO 8601; empty: the tracks' day at noon
   bool no_ssao = false, no_atmosphere = false, no_shadows = false, snow = false;
   double snowline_m = 2500.0;
+  // Labels.
+  bool no_labels = false;
+  int label_size_px = 13;
+  std::string hidden_labels = "ghost";
 };
 
 void add_track_style_options(CLI::App& command, StyleArgs& args);
 void add_shading_options(CLI::App& command, StyleArgs& args);
+// --no-labels, --label-size, --hidden-labels: the names of waypoints, places and tracks.
+void add_label_options(CLI::App& command, StyleArgs& args);
 
 // Throws CLI::ValidationError naming the option.
 scene::Style parse_style(const StyleArgs& args);

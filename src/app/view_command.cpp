@@ -88,6 +88,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
   add_imagery_option(*cmd, args->terrain);
   add_track_style_options(*cmd, args->style);
   add_waypoint_options(*cmd, args->waypoints);
+  add_label_options(*cmd, args->style);
   add_read_options(*cmd, args->read);
   add_cleaning_options(*cmd, args->analysis);
   cmd->callback([args, &exit_code] { exit_code = run_view(*args); });

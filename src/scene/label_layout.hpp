@@ -61,8 +61,8 @@ float label_fade_alpha(double distance_m, const LabelFade& fade);
 inline constexpr double kFadeFullSubjects = 2.5, kFadeZeroSubjects = 5.0;
 
 struct LabelLayoutOptions {
-  int size_px = 13;           // the em size at pixel ratio 1
-  double pixel_ratio = 1.0;   // device pixels per size pixel (a high-DPI window: 2)
+  int size_px = 13;                 // the em size at pixel ratio 1
+  double pixel_ratio = 1.0;         // device pixels per size pixel (a high-DPI window: 2)
   std::vector<PixelRect> keep_out;  // picture areas no label may touch (the legend)
   std::optional<LabelFade> fade;    // nullopt: from the subject distance (see above)
 };
@@ -73,11 +73,11 @@ struct PlacedLabel {
   LabelKind kind = LabelKind::waypoint;
   glm::u8vec3 color{255, 255, 255};
   FontWeight weight = FontWeight::regular;
-  int font_px = 0;    // the size drawn, in picture pixels (size_px * pixel_ratio)
-  int halo_px = 0;    // the dark outline's width around the glyphs
-  PixelRect box;      // the text with its halo, picture pixels (y down): nothing is drawn outside it
-  int pen_x = 0, baseline_y = 0;  // where the text starts, in picture pixels
-  glm::dvec2 anchor_px{0.0};      // the anchor's pixel (continuous, y down)
+  int font_px = 0;                 // the size drawn, in picture pixels (size_px * pixel_ratio)
+  int halo_px = 0;                 // the dark outline's width around the glyphs
+  PixelRect box;                   // the text with its halo, picture pixels (y down): nothing is drawn outside it
+  int pen_x = 0, baseline_y = 0;   // where the text starts, in picture pixels
+  glm::dvec2 anchor_px{0.0};       // the anchor's pixel (continuous, y down)
   double anchor_distance_m = 0.0;  // from the camera to the anchor
   float alpha = 1.0f;              // from the distance fade (the pass adds the terrain's occlusion)
 };

@@ -108,6 +108,9 @@ TEST(RenderCli, WrongOptionValuesGetMessages) {
       {"--camera 46.7,7.85,1500,0,-5 --time yesterday", "ISO 8601"},
       {"--camera 46.7,7.85,1500,0,-5 --fov 200", "--fov"},
       {"--camera 46.7,7.85,1500,0,-5 --timeout 0", "--timeout"},
+      {"--camera 46.7,7.85,1500,0,-5 --label-size 2", "--label-size"},
+      {"--camera 46.7,7.85,1500,0,-5 --hidden-labels fade", "neither ghost nor hide"},
+      {"--camera 46.7,7.85,1500,0,-5 --pixel-ratio 0", "--pixel-ratio"},
   };
   for (const Case& c : cases) {
     const auto r = run_command(env.prefix() + c.args + o + " 2>&1");

@@ -55,7 +55,7 @@ TEST(LabelLayout, NothingBehindTheCameraOrOutsideThePictureIsPlaced) {
   const std::vector<LabelCandidate> candidates{
       candidate("ground", LabelKind::waypoint, at(0, 0)),
       candidate("above the camera", LabelKind::waypoint, at(0, 0, 1500)),  // behind it
-      candidate("far east", LabelKind::waypoint, at(5000, 0)),            // outside the picture
+      candidate("far east", LabelKind::waypoint, at(5000, 0)),             // outside the picture
   };
   const std::vector<PlacedLabel> placed = layouter.layout(candidates, camera, {});
   ASSERT_EQ(placed.size(), 1u);
@@ -81,9 +81,9 @@ TEST(LabelLayout, NoTwoLabelsOverlapInRandomCrowdedScenes) {
     std::uniform_int_distribution<int> kind(0, 2), length(1, 24), priority(-2, 2);
     std::vector<LabelCandidate> candidates;
     for (int i = 0; i < 300; ++i)
-      candidates.push_back(candidate(std::string(static_cast<std::size_t>(length(random)), static_cast<char>('A' + i % 26)),
-                                     static_cast<LabelKind>(kind(random)), at(across(random), across(random), up(random)),
-                                     priority(random)));
+      candidates.push_back(candidate(
+          std::string(static_cast<std::size_t>(length(random)), static_cast<char>('A' + i % 26)),
+          static_cast<LabelKind>(kind(random)), at(across(random), across(random), up(random)), priority(random)));
     const std::vector<PlacedLabel> placed = layouter.layout(candidates, camera, options);
     ASSERT_GT(placed.size(), 10u) << "seed " << seed;
     ASSERT_LT(placed.size(), candidates.size()) << "seed " << seed;

@@ -110,6 +110,11 @@ scene::Scene ViewerApp::scene() {
   s.color_range = model_.color_range();
   s.sun_time_unix_s = sun_unix_time();
   s.neutral_ground_m = neutral_;
+  // Labels stay out from under the legend window where it first appears.
+  if (panels_ && s.style.legend)
+    s.label_keep_out.push_back(legend_overlay_rect(
+        scene::color_legend_for(s.style.tracks, s.color_range), scene::track_key_for(s.style.tracks, model_.tracks),
+        static_cast<float>(window_.framebuffer_width()), static_cast<float>(window_.framebuffer_height())));
   return s;
 }
 
@@ -165,6 +170,7 @@ void ViewerApp::draw_scene_into_window(double wall_s) {
   terrain_.set_policy(never_wait);
   render::DefaultFramebufferTarget window;
   window.profiler = &profiler_;
+  window.pixel_ratio = window_.content_scale();
   const render::FrameReport drawn = renderer_.draw(scene(), controller_.camera(), window);
   progress_ = drawn.terrain.progress;
   model_.loading = progress_.pending() > 0;
@@ -182,6 +188,7 @@ void ViewerApp::screenshot(const std::string& path, bool status) {
   wait.timeout = std::chrono::milliseconds(static_cast<long long>(options_.timeout_s * 1000.0));
   terrain_.set_policy(wait);
   render::ImageTarget picture;
+  picture.pixel_ratio = window_.content_scale();
   const render::FrameReport drawn = renderer_.draw(s, controller_.camera(), picture);
   if (drawn.terrain.timed_out)
     diagnostics_.warning(

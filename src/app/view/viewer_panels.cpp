@@ -203,6 +203,8 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
       scene::set_waypoints_visible(model.waypoints, model.settings.show_waypoints);
   }
   ImGui::SameLine();
+  ImGui::Checkbox("labels", &model.settings.style.labels.enabled);
+  ImGui::SameLine();
   if (ImGui::Checkbox("curtain", &s.curtain)) apply_curtain(model.tracks, s.curtain);
   ImGui::End();
 }

@@ -89,6 +89,12 @@ std::uint32_t Window::framebuffer_height() const {
   return static_cast<std::uint32_t>(h > 0 ? h : 0);
 }
 
+double Window::content_scale() const {
+  float x = 1.0f, y = 1.0f;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return y > 0.0f ? static_cast<double>(y) : 1.0;
+}
+
 std::vector<std::string> Window::take_dropped_files() {
   std::vector<std::string> out;
   out.swap(dropped_);

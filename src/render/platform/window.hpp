@@ -47,6 +47,9 @@ class Window {
   // coordinates on HiDPI displays).
   std::uint32_t framebuffer_width() const;
   std::uint32_t framebuffer_height() const;
+  // Device pixels per screen coordinate the system asks for (1 on an ordinary display, 2 on a
+  // typical HiDPI one): the frame's pixel ratio, so labels read the same size everywhere.
+  double content_scale() const;
   // Files dropped onto the window since the last call, oldest first.
   std::vector<std::string> take_dropped_files();
   // What the window shows now (its default framebuffer, interface included), top-down.
