@@ -53,6 +53,20 @@ std::pair<float, float> terrain_span(std::span<const scene::TerrainTile> tiles, 
   return {lowest, highest};
 }
 
+// What the legend's panel depends on (its text and the picture's size): measured again only when
+// this changes, not every frame.
+std::string legend_key(const scene::Scene& scene, const scene::Lens& lens) {
+  std::string key = std::to_string(lens.width_px) + 'x' + std::to_string(lens.height_px);
+  if (!scene.style.legend) return key;
+  if (const auto legend = scene::color_legend_for(scene.style.tracks, scene.color_range))
+    key += '\n' + legend->title + '\n' + legend->min_label + '\n' + legend->max_label + '\n' +
+           std::to_string(legend->ticks.size());
+  if (scene.tracks != nullptr)
+    for (const scene::TrackKeyEntry& entry : scene::track_key_for(scene.style.tracks, *scene.tracks))
+      key += '\n' + entry.name;
+  return key;
+}
+
 }  // namespace
 
 Renderer::Renderer(RendererOptions options) : options_(options) {
@@ -124,8 +138,11 @@ std::vector<scene::PlacedLabel> Renderer::layout_labels(const scene::Scene& scen
   options.pixel_ratio = pixel_ratio;
   const scene::Lens& lens = camera.lens();
   options.keep_out = scene.label_keep_out;
-  const scene::PixelRect legend = scene::scene_legend_panel(lens.width_px, lens.height_px, scene, layouter.text());
-  if (!legend.empty()) options.keep_out.push_back(legend);
+  std::string key = legend_key(scene, lens);
+  if (!legend_panel_ || legend_panel_->key != key)
+    legend_panel_ = LegendPanelCache{std::move(key),
+                                     scene::scene_legend_panel(lens.width_px, lens.height_px, scene, layouter.text())};
+  if (!legend_panel_->panel.empty()) options.keep_out.push_back(legend_panel_->panel);
   return layouter.layout(candidates, camera, options);
 }
 

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "render/frame_target.hpp"
@@ -124,7 +125,12 @@ class Renderer {
   ComposePass compose_pass_;
   TrackPass track_pass_;
   LabelPass label_pass_;
-  std::optional<ShadowMaps> shadow_maps_;  // made on first use, remade for another size
+  struct LegendPanelCache {
+    std::string key;
+    scene::PixelRect panel;
+  };
+  std::optional<LegendPanelCache> legend_panel_;  // the legend labels keep out of
+  std::optional<ShadowMaps> shadow_maps_;         // made on first use, remade for another size
   TerrainGpu terrain_gpu_;
   TrackGpu track_gpu_;
   PinGpu pin_gpu_;

@@ -14,9 +14,15 @@ glm::u8vec3 to_bytes(const glm::vec3& srgb) {
   return glm::u8vec3(glm::round(glm::clamp(srgb, glm::vec3(0.0f), glm::vec3(1.0f)) * 255.0f));
 }
 
-// A track's colour as a label's text: lifted towards white so that dark track colours still read
-// on the dark halo.
-glm::u8vec3 track_label_color(const glm::vec3& srgb) { return to_bytes(glm::mix(srgb, glm::vec3(1.0f), 0.35f)); }
+// A track's colour as a label's text: lifted towards white until it is light enough to read on
+// the dark halo (a navy track gets a pale blue name), hue kept.
+glm::u8vec3 track_label_color(const glm::vec3& srgb) {
+  glm::vec3 c = srgb;
+  // Luma of the sRGB values (Rec. 709 weights): cheap, and monotonic in the mix.
+  for (int step = 0; step < 10 && glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f)) < 0.6f; ++step)
+    c = glm::mix(c, glm::vec3(1.0f), 0.2f);
+  return to_bytes(c);
+}
 
 constexpr glm::u8vec3 kWaypointColor{255, 255, 255};
 constexpr glm::u8vec3 kPlaceColor{255, 240, 200};  // warm: a place is not one of the files' points

@@ -11,6 +11,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/renderer.hpp"
+#include "scene/label_raster.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 
@@ -183,6 +184,42 @@ TEST_F(LabelsTest, ALabelWhosePointIsBehindARidgeIsGhostedOrHidden) {
   EXPECT_LT(ghost_change, seen_change / 2) << "the ghost is fainter";
   EXPECT_EQ(white_pixels(ghost, layout[0].box), 0);
   EXPECT_EQ(hidden.rgba, plain.rgba) << "--hidden-labels hide draws nothing";
+}
+
+TEST_F(LabelsTest, EveryLabelOfACrowdIsDrawnAsItWasRasterized) {
+  // Enough labels to fill more than one row of the atlas (texels past 1024, where a 16-bit float
+  // could not address single texels any more).
+  test::SceneDrawer drawer(nullptr, nullptr);
+  const scene::Lens lens{45.0, 1024, 768};
+  const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, lens, 10.0);
+  scene::WaypointSet points;
+  for (int i = 0; i < 80; ++i)
+    points.points.push_back(waypoint("Waypoint number " + std::to_string(i),
+                                     frame_.point((i % 8) * 90.0 - 315.0, (i / 8) * 60.0 - 270.0, 0)));
+  scene::Scene scene = scene_with(points);
+  const std::vector<scene::PlacedLabel> layout = drawer.renderer().layout_labels(scene, camera, 1.0);
+  ASSERT_GT(layout.size(), 30u);
+  const scene::RgbaImage picture = drawer.draw(camera, scene).image;
+  test::keep_image(picture, "label_crowd.png");
+  scene::LabelLayouter raster;
+  for (const scene::PlacedLabel& label : layout) {
+    const scene::LabelBitmap bitmap = scene::rasterize_label(raster.text(), label);
+    int full = 0, full_white = 0;
+    for (int y = 0; y < bitmap.height; ++y)
+      for (int x = 0; x < bitmap.width; ++x) {
+        const auto p =
+            picture.pixel(static_cast<std::uint32_t>(label.box.x + x), static_cast<std::uint32_t>(label.box.y + y));
+        const bool white = p[0] > 200 && p[1] > 200 && p[2] > 200;
+        if (bitmap.text(x, y) == 255) {
+          ++full;
+          if (white) ++full_white;
+        } else if (bitmap.text(x, y) == 0) {
+          EXPECT_FALSE(white) << label.text << " has text where its raster has none, at " << x << "," << y;
+        }
+      }
+    EXPECT_GT(full, 20) << label.text;
+    EXPECT_EQ(full_white, full) << label.text;
+  }
 }
 
 TEST_F(LabelsTest, ThePixelRatioDrawsLargerText) {

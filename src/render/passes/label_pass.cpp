@@ -78,6 +78,7 @@ LabelPass::LabelPass()
 
 void LabelPass::reset_atlas() {
   slots_.clear();
+  std::fill(pixels_.begin(), pixels_.end(), std::uint8_t{0});
   shelf_x_ = shelf_y_ = shelf_height_ = 0;
 }
 
@@ -90,20 +91,31 @@ const LabelPass::Slot* LabelPass::insert(const std::string& key, const scene::Pl
     shelf_x_ = shelf_height_ = 0;
   }
   if (shelf_y_ + h > kAtlasSize) return nullptr;
-  if (!atlas_) {
-    atlas_ = make_texture_2d(GL_RG8, kAtlasSize, kAtlasSize);
-    glBindTexture(GL_TEXTURE_2D, 0);
-  }
   const Slot slot{shelf_x_, shelf_y_, w, h};
   shelf_x_ += w + kAtlasGap;
   shelf_height_ = std::max(shelf_height_, h);
-  glBindTexture(GL_TEXTURE_2D, atlas_.id());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, slot.x, slot.y, w, h, GL_RG, GL_UNSIGNED_BYTE, bitmap.text_and_halo.data());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glBindTexture(GL_TEXTURE_2D, 0);
+  // Into the CPU copy; the rows that changed go to the GPU once per frame (upload_changes): one
+  // upload instead of one per label, which a software driver makes expensive.
+  if (pixels_.empty()) pixels_.assign(static_cast<std::size_t>(kAtlasSize) * kAtlasSize * 2, 0);
+  for (int row = 0; row < h; ++row)
+    std::copy_n(bitmap.text_and_halo.begin() + static_cast<std::ptrdiff_t>(row) * w * 2, w * 2,
+                pixels_.begin() + (static_cast<std::ptrdiff_t>(slot.y + row) * kAtlasSize + slot.x) * 2);
+  changed_rows_ = {std::min(changed_rows_.first, slot.y), std::max(changed_rows_.second, slot.y + h)};
   ++rasterized_;
   return &slots_.emplace(key, slot).first->second;
+}
+
+void LabelPass::upload_changes() {
+  if (changed_rows_.first >= changed_rows_.second) return;
+  if (!atlas_) atlas_ = make_texture_2d(GL_RG8, kAtlasSize, kAtlasSize);
+  glBindTexture(GL_TEXTURE_2D, atlas_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const int first = changed_rows_.first, count = changed_rows_.second - changed_rows_.first;
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first, kAtlasSize, count, GL_RG, GL_UNSIGNED_BYTE,
+                  pixels_.data() + static_cast<std::size_t>(first) * kAtlasSize * 2);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  changed_rows_ = {1 << 30, 0};
 }
 
 void LabelPass::draw(const GBuffer& gbuffer, std::span<const scene::PlacedLabel> labels,
@@ -130,6 +142,7 @@ void LabelPass::draw(const GBuffer& gbuffer, std::span<const scene::PlacedLabel>
     ++resets_;
   }
   if (quads.empty()) return;
+  upload_changes();
 
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);

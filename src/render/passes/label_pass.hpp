@@ -9,9 +9,12 @@
 // hides is drawn ghosted (LabelStyle::ghost_alpha) or not at all (hide_occluded).
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
@@ -42,16 +45,17 @@ class LabelPass {
   struct Slot {
     int x = 0, y = 0, width = 0, height = 0;
   };
-  // The label's place in the atlas, rasterized and uploaded on first use; nullptr when it cannot
-  // fit even into an empty atlas.
-  const Slot* slot_for(const scene::PlacedLabel& label, std::span<const scene::PlacedLabel> frame);
+  // Rasterizes a label into the atlas's CPU copy; nullptr when it cannot fit even into an empty atlas.
   const Slot* insert(const std::string& key, const scene::PlacedLabel& label);
+  void upload_changes();
   void reset_atlas();
 
   ShaderProgram program_;
   VertexArray vertex_array_;
   Buffer vertices_;
-  Texture atlas_;  // RG8: text and halo coverage
+  Texture atlas_;                                 // RG8: text and halo coverage
+  std::vector<std::uint8_t> pixels_;              // its CPU copy
+  std::pair<int, int> changed_rows_{1 << 30, 0};  // rows [first, second) not uploaded yet
   // Shelf packing: rows of labels from the top, each as tall as its tallest label.
   int shelf_y_ = 0, shelf_height_ = 0, shelf_x_ = 0;
   std::unordered_map<std::string, Slot> slots_;

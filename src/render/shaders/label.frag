@@ -3,9 +3,10 @@
 // (green), rasterized at the picture's pixel size, so each fragment reads exactly one texel:
 // crisp at any pixel ratio. The text's colour over a dark halo, premultiplied, blended over the
 // frame's sRGB values (ONE, ONE_MINUS_SRC_ALPHA) as the legend is painted.
-precision mediump float;
+// Atlas coordinates reach 2048: highp, since a 16-bit float cannot address single texels there.
+precision highp float;
 
-uniform mediump sampler2D u_atlas;
+uniform mediump sampler2D u_atlas;  // coverage bytes: mediump is plenty
 
 in vec2 v_atlas_px;
 in float v_alpha;
