@@ -36,9 +36,12 @@ struct Projected {
 PixelRect inflated(const PixelRect& r, int by) { return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}; }
 
 // The boxes a label of size (w, h) tries around its anchor, in order of preference.
-std::array<PixelRect, 6> boxes_around(glm::dvec2 anchor, int w, int h, int lift) {
+// The boxes a label of size (w, h) tries around its anchor, in order of preference; `clear` pixels
+// above the anchor belong to its pin (the boxes above and beside go around them).
+std::array<PixelRect, 6> boxes_around(glm::dvec2 anchor, int w, int h, int lift, int clear) {
   const int ax = static_cast<int>(std::floor(anchor.x)), ay = static_cast<int>(std::floor(anchor.y));
-  const int above = ay - lift - h, beside = ay - h / 2;
+  const int top = ay - clear;  // the top of the pin (the anchor itself without one)
+  const int above = top - lift - h, beside = top - h / 2;
   return {{
       {ax - w / 2, above, w, h},     // above
       {ax + lift / 2, above, w, h},  // above right
@@ -64,6 +67,12 @@ LabelFade subject_fade(std::vector<double> distances) {
 
 }  // namespace
 
+PinClearance pin_clearance(WaypointKind kind) {
+  // The pins' ball lift plus its diameter (18 + 13 px, at least 8 + 6 m; places 10 + 8 px, at
+  // least 5 + 4 m), and two pixels of air.
+  return kind == WaypointKind::Place ? PinClearance{20.0, 9.0} : PinClearance{33.0, 14.0};
+}
+
 std::vector<LabelCandidate> label_candidates(const Scene& scene) {
   std::vector<LabelCandidate> out;
   if (!scene.style.labels.enabled) return out;
@@ -79,8 +88,9 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
     for (const Waypoint& w : scene.waypoints->points) {
       if (!w.visible || w.name.empty()) continue;
       const bool place = w.kind == WaypointKind::Place;
+      const PinClearance pin = pin_clearance(w.kind);
       out.push_back({w.name, place ? LabelKind::place : LabelKind::waypoint, w.priority, w.marker_ecef,
-                     place ? kPlaceColor : kWaypointColor});
+                     place ? kPlaceColor : kWaypointColor, pin.px, pin.m});
     }
   return out;
 }
@@ -138,6 +148,8 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
     return rank_before(candidates[a.first.index], a.first.distance_m, candidates[b.first.index], b.first.distance_m);
   });
   // 5. Greedy placement.
+  const double tan_half_fov = std::tan(0.5 * camera.lens().vertical_fov_deg * M_PI / 180.0);
+  const auto metres_per_px = [&](double distance_m) { return 2.0 * distance_m * tan_half_fov / height; };
   const int halo = label_halo_px(font_px), margin = label_margin_px(font_px), lift = label_lift_px(font_px);
   std::vector<PixelRect> taken;  // placed boxes grown by the margin
   for (const auto& [p, alpha] : shown) {
@@ -146,7 +158,8 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
     const TextExtent extent = measure(c.text, font_px, weight);
     if (extent.width <= 0) continue;
     const int w = extent.width + 2 * halo, h = extent.height() + 2 * halo;
-    for (const PixelRect& box : boxes_around(p.pixel, w, h, lift)) {
+    const int clear = static_cast<int>(std::lround(std::max(c.clear_px, c.clear_m / metres_per_px(p.distance_m))));
+    for (const PixelRect& box : boxes_around(p.pixel, w, h, lift, clear)) {
       if (!picture.contains(box)) continue;
       const auto overlaps = [&](const PixelRect& r) { return r.intersects(box); };
       if (std::any_of(taken.begin(), taken.end(), overlaps)) continue;

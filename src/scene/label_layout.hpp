@@ -5,7 +5,8 @@
 //
 // The layout, in order:
 //   1. candidates from the scene (label_candidates): every visible waypoint and place with a
-//      name, anchored at its marker; every visible track with a name, at its first point;
+//      name, anchored at its marker and kept clear of its pin's ball above it; every visible
+//      track with a name, at its first point;
 //   2. projected with the camera: a candidate behind the camera, beyond its far plane, or whose
 //      anchor falls outside the picture is dropped;
 //   3. faded with distance: full opacity up to `fade.full_m` from the camera, none from
@@ -47,7 +48,17 @@ struct LabelCandidate {
   int priority = 0;  // within a kind: higher first
   glm::dvec3 anchor_ecef{0.0};
   glm::u8vec3 color{255, 255, 255};  // the text's colour (sRGB); the halo is dark
+  // What stands above the anchor on the picture and must stay readable (a pin's ball): the label
+  // keeps max(clear_px, clear_m seen from the camera) pixels above the anchor clear.
+  double clear_px = 0.0, clear_m = 0.0;
 };
+
+// How far above a waypoint's (or place's) marker its pin reaches on the picture: the ball's lift
+// plus its diameter, in pixels and at least metres (the pins' sizes).
+struct PinClearance {
+  double px = 0.0, m = 0.0;
+};
+PinClearance pin_clearance(WaypointKind kind);
 
 // The scene's labels: visible named waypoints and places, visible named tracks at their first
 // point (in the track's colour). Empty with style.labels.enabled off.

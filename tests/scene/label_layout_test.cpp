@@ -193,6 +193,25 @@ TEST(LabelLayout, TheKeepOutAreasAndThePictureEdgesAreRespected) {
   EXPECT_GT(placed[0].box.y, top->y_px);
 }
 
+TEST(LabelLayout, AWaypointsLabelKeepsItsPinClear) {
+  LabelLayouter layouter;
+  LabelCandidate bare = candidate("Hut", LabelKind::waypoint, at(0, 0));
+  LabelCandidate pinned = bare;
+  pinned.clear_px = 30.0;
+  pinned.clear_m = 5.0;  // 1.73 m a pixel at 1000 m: the pixels decide
+  const auto a = layouter.layout({bare}, camera_above(), {});
+  const auto b = layouter.layout({pinned}, camera_above(), {});
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].box.bottom(), a[0].box.bottom() - 30);
+  // Near the camera the metres decide: 100 m at 1000 m are about 58 pixels.
+  pinned.clear_px = 0.0;
+  pinned.clear_m = 100.0;
+  const auto c = layouter.layout({pinned}, camera_above(), {});
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].box.bottom(), a[0].box.bottom() - 58, 1.0);
+}
+
 TEST(LabelLayout, ThePixelRatioScalesTheBoxes) {
   LabelLayouter layouter;
   const std::vector<LabelCandidate> one{candidate("Rifugio", LabelKind::waypoint, at(0, 0))};
