@@ -160,32 +160,37 @@ TEST_F(LabelsTest, ALabelWhosePointIsBehindARidgeIsGhostedOrHidden) {
   const glm::dvec3 from = camera.value->position();
   const glm::dvec3 behind = scene::ecef_from({kPlace.lat_deg, kPlace.lon_deg + 4000.0 * deg_per_m, 1000.0});
   const glm::dvec3 in_front = from + 0.15 * (behind - from);
-  scene::WaypointSet points;
-  scene::Scene scene = scene_with(points);
-  scene.neutral_ground_m = 1000.0;
-  scene.style.labels.enabled = false;
-  const scene::RgbaImage plain = drawer.draw(*camera.value, scene).image;
-  scene.style.labels.enabled = true;
+  // Either distance encoding of the G-buffer.
+  for (const DistanceEncoding encoding : {DistanceEncoding::float32, DistanceEncoding::packed_rgba8}) {
+    SCOPED_TRACE(encoding == DistanceEncoding::float32 ? "float distances" : "packed distances");
+    drawer.renderer().set_distance_encoding(encoding);
+    scene::WaypointSet points;
+    scene::Scene scene = scene_with(points);
+    scene.neutral_ground_m = 1000.0;
+    scene.style.labels.enabled = false;
+    const scene::RgbaImage plain = drawer.draw(*camera.value, scene).image;
+    scene.style.labels.enabled = true;
 
-  points.points = {waypoint("Malga", in_front)};
-  const std::vector<scene::PlacedLabel> layout = drawer.renderer().layout_labels(scene, *camera.value, 1.0);
-  ASSERT_EQ(layout.size(), 1u);
-  const scene::RgbaImage seen = drawer.draw(*camera.value, scene).image;
-  points.points = {waypoint("Malga", behind)};
-  ASSERT_EQ(drawer.renderer().layout_labels(scene, *camera.value, 1.0).at(0).box.x, layout[0].box.x);
-  const scene::RgbaImage ghost = drawer.draw(*camera.value, scene).image;
-  scene.style.labels.hide_occluded = true;
-  const scene::RgbaImage hidden = drawer.draw(*camera.value, scene).image;
-  test::keep_image(seen, "label_seen.png");
-  test::keep_image(ghost, "label_ghost.png");
+    points.points = {waypoint("Malga", in_front)};
+    const std::vector<scene::PlacedLabel> layout = drawer.renderer().layout_labels(scene, *camera.value, 1.0);
+    ASSERT_EQ(layout.size(), 1u);
+    const scene::RgbaImage seen = drawer.draw(*camera.value, scene).image;
+    points.points = {waypoint("Malga", behind)};
+    ASSERT_EQ(drawer.renderer().layout_labels(scene, *camera.value, 1.0).at(0).box.x, layout[0].box.x);
+    const scene::RgbaImage ghost = drawer.draw(*camera.value, scene).image;
+    scene.style.labels.hide_occluded = true;
+    const scene::RgbaImage hidden = drawer.draw(*camera.value, scene).image;
+    test::keep_image(seen, "label_seen.png");
+    test::keep_image(ghost, "label_ghost.png");
 
-  const long seen_change = total_change(seen, plain, layout[0].box);
-  const long ghost_change = total_change(ghost, plain, layout[0].box);
-  EXPECT_GT(seen_change, 0);
-  EXPECT_GT(ghost_change, 0) << "a ghost is still drawn";
-  EXPECT_LT(ghost_change, seen_change / 2) << "the ghost is fainter";
-  EXPECT_EQ(white_pixels(ghost, layout[0].box), 0);
-  EXPECT_EQ(hidden.rgba, plain.rgba) << "--hidden-labels hide draws nothing";
+    const long seen_change = total_change(seen, plain, layout[0].box);
+    const long ghost_change = total_change(ghost, plain, layout[0].box);
+    EXPECT_GT(seen_change, 0);
+    EXPECT_GT(ghost_change, 0) << "a ghost is still drawn";
+    EXPECT_LT(ghost_change, seen_change / 2) << "the ghost is fainter";
+    EXPECT_EQ(white_pixels(ghost, layout[0].box), 0);
+    EXPECT_EQ(hidden.rgba, plain.rgba) << "--hidden-labels hide draws nothing";
+  }
 }
 
 TEST_F(LabelsTest, EveryLabelOfACrowdIsDrawnAsItWasRasterized) {
