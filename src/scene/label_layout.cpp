@@ -70,7 +70,7 @@ LabelFade subject_fade(std::vector<double> distances) {
 PinClearance pin_clearance(WaypointKind kind) {
   // The pins' ball lift plus its diameter (18 + 13 px, at least 8 + 6 m; places 10 + 8 px, at
   // least 5 + 4 m), and two pixels of air.
-  return kind == WaypointKind::Place ? PinClearance{20.0, 9.0} : PinClearance{33.0, 14.0};
+  return kind == WaypointKind::Place ? PinClearance{20.0, 9.0, 9.0, 4.5} : PinClearance{33.0, 14.0, 14.0, 6.5};
 }
 
 std::vector<LabelCandidate> label_candidates(const Scene& scene) {
@@ -90,7 +90,7 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
       const bool place = w.kind == WaypointKind::Place;
       const PinClearance pin = pin_clearance(w.kind);
       out.push_back({w.name, place ? LabelKind::place : LabelKind::waypoint, w.priority, w.marker_ecef,
-                     place ? kPlaceColor : kWaypointColor, pin.px, pin.m});
+                     place ? kPlaceColor : kWaypointColor, pin.px, pin.m, pin.width_px, pin.width_m});
     }
   return out;
 }
@@ -127,12 +127,14 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
   const PixelRect picture{0, 0, static_cast<int>(width), static_cast<int>(height)};
 
   // 2. In view: in front of the camera, before the far plane, the anchor inside the picture.
-  std::vector<Projected> in_view;
+  // A pin can reach into the picture from an anchor just outside it: those are kept for 5.
+  std::vector<Projected> in_view, in_front;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const auto p = camera.project(candidates[i].anchor_ecef);
     if (!p || p->depth_m > camera.depth_range().far_m) continue;
-    if (!(p->x_px >= 0.0 && p->x_px < width && p->y_px >= 0.0 && p->y_px < height)) continue;
-    in_view.push_back({i, {p->x_px, p->y_px}, glm::length(candidates[i].anchor_ecef - camera.position())});
+    const Projected projected{i, {p->x_px, p->y_px}, glm::length(candidates[i].anchor_ecef - camera.position())};
+    in_front.push_back(projected);
+    if (p->x_px >= 0.0 && p->x_px < width && p->y_px >= 0.0 && p->y_px < height) in_view.push_back(projected);
   }
   // 3. Faded by distance.
   std::vector<double> distances;
@@ -147,9 +149,22 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
   std::stable_sort(shown.begin(), shown.end(), [&](const auto& a, const auto& b) {
     return rank_before(candidates[a.first.index], a.first.distance_m, candidates[b.first.index], b.first.distance_m);
   });
-  // 5. Greedy placement.
+  // 5. Greedy placement, off the pins in view.
   const double tan_half_fov = std::tan(0.5 * camera.lens().vertical_fov_deg * M_PI / 180.0);
   const auto metres_per_px = [&](double distance_m) { return 2.0 * distance_m * tan_half_fov / height; };
+  const auto pin_height = [&](const LabelCandidate& c, double distance_m) {
+    return static_cast<int>(std::lround(std::max(c.clear_px, c.clear_m / metres_per_px(distance_m))));
+  };
+  std::vector<std::pair<std::size_t, PixelRect>> pins;  // candidate index, the pin's rectangle
+  for (const Projected& p : in_front) {
+    const LabelCandidate& c = candidates[p.index];
+    if (c.clear_px <= 0.0 && c.clear_m <= 0.0) continue;
+    const int h = pin_height(c, p.distance_m);
+    const int w =
+        static_cast<int>(std::lround(std::max(c.clear_width_px, c.clear_width_m / metres_per_px(p.distance_m))));
+    pins.emplace_back(p.index, PixelRect{static_cast<int>(std::floor(p.pixel.x)) - w / 2,
+                                         static_cast<int>(std::floor(p.pixel.y)) - h, w, h + 1});
+  }
   const int halo = label_halo_px(font_px), margin = label_margin_px(font_px), lift = label_lift_px(font_px);
   std::vector<PixelRect> taken;  // placed boxes grown by the margin
   for (const auto& [p, alpha] : shown) {
@@ -158,12 +173,12 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
     const TextExtent extent = measure(c.text, font_px, weight);
     if (extent.width <= 0) continue;
     const int w = extent.width + 2 * halo, h = extent.height() + 2 * halo;
-    const int clear = static_cast<int>(std::lround(std::max(c.clear_px, c.clear_m / metres_per_px(p.distance_m))));
-    for (const PixelRect& box : boxes_around(p.pixel, w, h, lift, clear)) {
+    for (const PixelRect& box : boxes_around(p.pixel, w, h, lift, pin_height(c, p.distance_m))) {
       if (!picture.contains(box)) continue;
       const auto overlaps = [&](const PixelRect& r) { return r.intersects(box); };
       if (std::any_of(taken.begin(), taken.end(), overlaps)) continue;
       if (std::any_of(options.keep_out.begin(), options.keep_out.end(), overlaps)) continue;
+      if (std::any_of(pins.begin(), pins.end(), [&](const auto& pin) { return overlaps(pin.second); })) continue;
       taken.push_back(inflated(box, margin));
       PlacedLabel label;
       label.candidate = p.index;

@@ -19,8 +19,8 @@
 //   5. placed greedily: each label tries a few boxes around its anchor (above, above right,
 //      above left, right, left, below) and takes the first that lies inside the picture, keeps a
 //      margin from every label placed before it and stays out of the keep-out rectangles (the
-//      legend); a label that finds no room is dropped. So no two labels ever overlap, and where
-//      two compete the more important, then the nearer, wins.
+//      legend) and off every pin in view; a label that finds no room is dropped. So no two labels ever overlap, and
+//      where two compete the more important, then the nearer, wins.
 // Boxes are measured with the font the pass draws with (scene/text_raster.hpp) at the label
 // size times the pixel ratio, halo included: what is placed is what is drawn.
 
@@ -48,15 +48,17 @@ struct LabelCandidate {
   int priority = 0;  // within a kind: higher first
   glm::dvec3 anchor_ecef{0.0};
   glm::u8vec3 color{255, 255, 255};  // the text's colour (sRGB); the halo is dark
-  // What stands above the anchor on the picture and must stay readable (a pin's ball): the label
-  // keeps max(clear_px, clear_m seen from the camera) pixels above the anchor clear.
+  // What stands above the anchor on the picture and must stay visible (a pin): max(clear_px,
+  // clear_m seen from the camera) pixels above the anchor, max(clear_width_px, clear_width_m)
+  // wide. No label covers it, this one's or another's.
   double clear_px = 0.0, clear_m = 0.0;
+  double clear_width_px = 0.0, clear_width_m = 0.0;
 };
 
-// How far above a waypoint's (or place's) marker its pin reaches on the picture: the ball's lift
-// plus its diameter, in pixels and at least metres (the pins' sizes).
+// How far above a waypoint's (or place's) marker its pin reaches on the picture (the ball's lift
+// plus its diameter) and how wide it is (the ball), in pixels and at least metres (the pins' sizes).
 struct PinClearance {
-  double px = 0.0, m = 0.0;
+  double px = 0.0, m = 0.0, width_px = 0.0, width_m = 0.0;
 };
 PinClearance pin_clearance(WaypointKind kind);
 

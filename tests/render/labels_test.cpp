@@ -205,7 +205,9 @@ TEST_F(LabelsTest, EveryLabelOfACrowdIsDrawnAsItWasRasterized) {
                                      frame_.point((i % 8) * 90.0 - 315.0, (i / 8) * 60.0 - 270.0, 0)));
   scene::Scene scene = scene_with(points);
   const std::vector<scene::PlacedLabel> layout = drawer.renderer().layout_labels(scene, camera, 1.0);
-  ASSERT_GT(layout.size(), 30u);
+  int widths = 0;
+  for (const scene::PlacedLabel& label : layout) widths += label.box.width;
+  ASSERT_GT(widths, 2048) << "the atlas' first row is not full";
   const scene::RgbaImage picture = drawer.draw(camera, scene).image;
   test::keep_image(picture, "label_crowd.png");
   scene::LabelLayouter raster;

@@ -69,7 +69,7 @@ TEST(LabelLayout, NothingBehindTheCameraOrOutsideThePictureIsPlaced) {
   EXPECT_NEAR(placed[0].box.x + placed[0].box.width / 2.0, 320.0, 1.0);
 }
 
-TEST(LabelLayout, NoTwoLabelsOverlapInRandomCrowdedScenes) {
+TEST(LabelLayout, NoTwoLabelsOverlapNorCoverAPinInRandomCrowdedScenes) {
   LabelLayouter layouter;
   const Camera camera = camera_above();
   const PixelRect legend{8, 400, 200, 72};
@@ -84,8 +84,19 @@ TEST(LabelLayout, NoTwoLabelsOverlapInRandomCrowdedScenes) {
       candidates.push_back(candidate(
           std::string(static_cast<std::size_t>(length(random)), static_cast<char>('A' + i % 26)),
           static_cast<LabelKind>(kind(random)), at(across(random), across(random), up(random)), priority(random)));
+    // Every waypoint has a pin (the pins' clearance) that no label may cover.
+    std::vector<PixelRect> pins;
+    for (LabelCandidate& c : candidates) {
+      if (c.kind != LabelKind::waypoint) continue;
+      c.clear_px = c.clear_width_px = 12.0;
+      const auto p = camera.project(c.anchor_ecef);
+      if (p)
+        pins.push_back({static_cast<int>(std::floor(p->x_px)) - 6, static_cast<int>(std::floor(p->y_px)) - 12, 12, 12});
+    }
     const std::vector<PlacedLabel> placed = layouter.layout(candidates, camera, options);
     ASSERT_GT(placed.size(), 10u) << "seed " << seed;
+    for (const PlacedLabel& label : placed)
+      for (const PixelRect& pin : pins) EXPECT_FALSE(label.box.intersects(pin)) << label.text << ", seed " << seed;
     ASSERT_LT(placed.size(), candidates.size()) << "seed " << seed;
     const PixelRect picture{0, 0, 640, 480};
     for (std::size_t i = 0; i < placed.size(); ++i) {
