@@ -68,9 +68,9 @@ LabelFade subject_fade(std::vector<double> distances) {
 }  // namespace
 
 PinClearance pin_clearance(WaypointKind kind) {
-  // The pins' ball lift plus its diameter (18 + 13 px, at least 8 + 6 m; places 10 + 8 px, at
-  // least 5 + 4 m), and two pixels of air.
-  return kind == WaypointKind::Place ? PinClearance{20.0, 9.0, 9.0, 4.5} : PinClearance{33.0, 14.0, 14.0, 6.5};
+  // The pins' ball is centred its lift above the marker (18 px, at least 8 m; places 10 px, at
+  // least 5 m) and 13 px across (at least 6 m; places 8 px, 4 m): its top, and two pixels of air.
+  return kind == WaypointKind::Place ? PinClearance{16.0, 7.0, 9.0, 4.5} : PinClearance{27.0, 11.0, 14.0, 6.5};
 }
 
 std::vector<LabelCandidate> label_candidates(const Scene& scene) {

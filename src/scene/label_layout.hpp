@@ -56,7 +56,7 @@ struct LabelCandidate {
 };
 
 // How far above a waypoint's (or place's) marker its pin reaches on the picture (the ball's lift
-// plus its diameter) and how wide it is (the ball), in pixels and at least metres (the pins' sizes).
+// plus its radius) and how wide it is (the ball), in pixels and at least metres (the pins' sizes).
 struct PinClearance {
   double px = 0.0, m = 0.0, width_px = 0.0, width_m = 0.0;
 };
