@@ -67,10 +67,15 @@ LabelFade subject_fade(std::vector<double> distances) {
 
 }  // namespace
 
-PinClearance pin_clearance(WaypointKind kind) {
-  // The pins' ball is centred its lift above the marker (18 px, at least 8 m; places 10 px, at
-  // least 5 m) and 13 px across (at least 6 m; places 8 px, 4 m): its top, and two pixels of air.
-  return kind == WaypointKind::Place ? PinClearance{16.0, 7.0, 9.0, 4.5} : PinClearance{27.0, 11.0, 14.0, 6.5};
+PinClearance pin_clearance(WaypointKind kind, const PinStyle& pins) {
+  // The pins' ball is centred its lift above the marker and a diameter across: its top, and two
+  // pixels of air (a metre near the camera).
+  const bool place = kind == WaypointKind::Place;
+  const double ball_px = place ? pins.place_marker_px : pins.marker_px;
+  const double ball_m = place ? pins.place_marker_m : pins.marker_m;
+  const double lift_px = place ? pins.place_lift_px : pins.lift_px;
+  const double lift_m = place ? pins.place_lift_m : pins.lift_m;
+  return {lift_px + 0.5 * ball_px + 2.0, lift_m + 0.5 * ball_m + 0.0, ball_px + 1.0, ball_m + 0.5};
 }
 
 std::vector<LabelCandidate> label_candidates(const Scene& scene) {
@@ -88,7 +93,7 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
     for (const Waypoint& w : scene.waypoints->points) {
       if (!w.visible || w.name.empty()) continue;
       const bool place = w.kind == WaypointKind::Place;
-      const PinClearance pin = pin_clearance(w.kind);
+      const PinClearance pin = pin_clearance(w.kind, scene.style.pins);
       out.push_back({w.name, place ? LabelKind::place : LabelKind::waypoint, w.priority, w.marker_ecef,
                      place ? kPlaceColor : kWaypointColor, pin.px, pin.m, pin.width_px, pin.width_m});
     }
@@ -193,6 +198,8 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
       label.baseline_y = box.y + halo + extent.ascent;
       label.anchor_px = p.pixel;
       label.anchor_distance_m = p.distance_m;
+      if (c.clear_px > 0.0 || c.clear_m > 0.0)
+        label.pin_reach_m = pin_height(c, p.distance_m) * metres_per_px(p.distance_m);
       label.alpha = alpha;
       placed.push_back(std::move(label));
       break;

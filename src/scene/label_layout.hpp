@@ -56,11 +56,11 @@ struct LabelCandidate {
 };
 
 // How far above a waypoint's (or place's) marker its pin reaches on the picture (the ball's lift
-// plus its radius) and how wide it is (the ball), in pixels and at least metres (the pins' sizes).
+// plus its radius) and how wide it is (the ball), in pixels and at least metres, from the pins' style.
 struct PinClearance {
   double px = 0.0, m = 0.0, width_px = 0.0, width_m = 0.0;
 };
-PinClearance pin_clearance(WaypointKind kind);
+PinClearance pin_clearance(WaypointKind kind, const PinStyle& pins);
 
 // The scene's labels: visible named waypoints and places, visible named tracks at their first
 // point (in the track's colour). Empty with style.labels.enabled off.
@@ -92,7 +92,10 @@ struct PlacedLabel {
   int pen_x = 0, baseline_y = 0;   // where the text starts, in picture pixels
   glm::dvec2 anchor_px{0.0};       // the anchor's pixel (continuous, y down)
   double anchor_distance_m = 0.0;  // from the camera to the anchor
-  float alpha = 1.0f;              // from the distance fade (the pass adds the terrain's occlusion)
+  // How far the label's own pin reaches up from the anchor (metres): a surface that much nearer
+  // than the anchor may be that pin, seen from above, and must not hide its label.
+  double pin_reach_m = 0.0;
+  float alpha = 1.0f;  // from the distance fade (the pass adds the terrain's occlusion)
 };
 
 // The halo around glyphs and the gaps around labels at a font size in picture pixels.

@@ -105,7 +105,7 @@ TEST_F(LabelsTest, AWaypointsNameAppearsJustAboveItsProjectedPoint) {
   ASSERT_FALSE(drawn.empty()) << "no label drawn";
   // Centred over the point, its bottom just above the pin's ball there (at 1000 m the pin's
   // pixel clearance decides), about a line of text tall.
-  const double pin_top = anchor->y_px - scene::pin_clearance(scene::WaypointKind::Waypoint).px;
+  const double pin_top = anchor->y_px - scene::pin_clearance(scene::WaypointKind::Waypoint, scene::PinStyle{}).px;
   EXPECT_NEAR(drawn.x + drawn.width / 2.0, anchor->x_px, 3.0);
   EXPECT_LE(drawn.bottom(), pin_top);
   EXPECT_GE(drawn.bottom(), pin_top - 2 * scene::label_lift_px(13) - 2);

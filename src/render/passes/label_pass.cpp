@@ -22,6 +22,7 @@ struct LabelVertex {
   float distance_m;
   float alpha;
   float color[3];
+  float pin_reach_m;
 };
 
 void check_gl(const char* what) {
@@ -46,7 +47,8 @@ void append_quad(std::vector<LabelVertex>& out, const scene::PlacedLabel& label,
                        {static_cast<float>(label.anchor_px.x), static_cast<float>(label.anchor_px.y)},
                        static_cast<float>(label.anchor_distance_m),
                        label.alpha,
-                       {label.color.r / 255.0f, label.color.g / 255.0f, label.color.b / 255.0f}};
+                       {label.color.r / 255.0f, label.color.g / 255.0f, label.color.b / 255.0f},
+                       static_cast<float>(label.pin_reach_m)};
   };
   for (const auto& [u, v] : std::array<std::pair<float, float>, 6>{{{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}}})
     out.push_back(corner(u, v));
@@ -71,6 +73,7 @@ LabelPass::LabelPass()
   attribute(3, 1, offsetof(LabelVertex, distance_m));
   attribute(4, 1, offsetof(LabelVertex, alpha));
   attribute(5, 3, offsetof(LabelVertex, color));
+  attribute(6, 1, offsetof(LabelVertex, pin_reach_m));
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   check_gl("setting up the labels pass");

@@ -17,6 +17,7 @@ layout(location = 2) in vec2 a_anchor_px;    // the labelled point's pixel (y do
 layout(location = 3) in float a_distance_m;  // and its distance from the camera
 layout(location = 4) in float a_alpha;       // from the distance fade
 layout(location = 5) in vec3 a_color;        // the text's colour, sRGB
+layout(location = 6) in float a_pin_reach_m; // how far its own pin rises above the anchor
 
 uniform vec2 u_viewport_px;
 uniform sampler2D u_distance;  // the G-buffer's
@@ -30,13 +31,14 @@ out vec3 v_color;
 // Whether the scene at a pixel (GL's, y up) lies behind the anchor or is sky: the anchor is seen
 // there. A surface counts as in front when it is nearer by more than 20 m plus 2 % of the
 // distance: the terrain model and the recorded heights disagree by that much, and a pin's
-// marker or the track's own tube at the anchor must not hide its label.
+// marker or the track's own tube at the anchor must not hide its label; nor may the label's own
+// pin, which rises a_pin_reach_m above the anchor (seen from above it covers the anchor).
 float sees_anchor(ivec2 pixel) {
   ivec2 size = textureSize(u_distance, 0);
   if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size))) return 1.0;
   float scene_m = read_distance(u_distance, pixel, u_packed_distance);
   if (scene_m <= 0.0) return 1.0;  // the sky
-  return scene_m + 20.0 + 0.02 * a_distance_m >= a_distance_m ? 1.0 : 0.0;
+  return scene_m + 20.0 + 0.02 * a_distance_m + a_pin_reach_m >= a_distance_m ? 1.0 : 0.0;
 }
 
 void main() {
