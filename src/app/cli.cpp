@@ -14,7 +14,7 @@
 namespace trailray::app {
 
 int run_cli(int argc, char** argv) {
-  CLI::App app{"trailray: GPS tracks (GPX, IGC, TCX) in 3D on real terrain", "trailray"};
+  CLI::App app{"trailray: GPS tracks (GPX, IGC, TCX, FIT, KML, GeoJSON) in 3D on real terrain", "trailray"};
   app.set_version_flag("--version", std::string("trailray ") + TRAILRAY_VERSION);
   app.require_subcommand(1);
   app.footer("Run `trailray COMMAND --help` for the options of a command.");
