@@ -11,14 +11,6 @@ namespace {
 
 constexpr const char* kMissingText = "\u2014";  // em dash
 
-std::string utc_text(double unix_s) {
-  const auto whole = static_cast<std::time_t>(std::floor(unix_s));
-  std::tm tm{};
-  if (gmtime_r(&whole, &tm) == nullptr) return kMissingText;
-  return fmt::format("{:04}-{:02}-{:02} {:02}:{:02}:{:02} UTC", tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday,
-                     tm.tm_hour, tm.tm_min, tm.tm_sec);
-}
-
 std::string line(const char* label, double value, const char* format_with_unit) {
   if (!std::isfinite(value)) return fmt::format("{}: {}", label, kMissingText);
   std::string text = fmt::format(fmt::runtime(format_with_unit), value);
@@ -29,12 +21,20 @@ std::string line(const char* label, double value, const char* format_with_unit) 
 
 }  // namespace
 
+std::string tooltip_time_text(double unix_s) {
+  const auto whole = static_cast<std::time_t>(std::floor(unix_s));
+  std::tm tm{};
+  if (gmtime_r(&whole, &tm) == nullptr) return kMissingText;
+  return fmt::format("{:04}-{:02}-{:02} {:02}:{:02}:{:02} UTC", tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday,
+                     tm.tm_hour, tm.tm_min, tm.tm_sec);
+}
+
 std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
   if (i >= t.point_count()) return {};
   const double time = t.time_unix_s[i];
   const double agl = t.altitude_m[i] - t.ground_m[i];  // NaN when either is missing
   return {
-      std::isfinite(time) ? fmt::format("time: {}", utc_text(time)) : fmt::format("time: {}", kMissingText),
+      std::isfinite(time) ? fmt::format("time: {}", tooltip_time_text(time)) : fmt::format("time: {}", kMissingText),
       line("altitude", t.altitude_m[i], "{:.0f} m"),
       line("height above ground", agl, "{:.0f} m"),
       line("speed", t.speed_kmh[i], "{:.1f} km/h"),

@@ -14,4 +14,7 @@ namespace trailray::app::view {
 // missing value reads "—". Empty for an index out of range.
 std::vector<std::string> tooltip_lines(const scene::Track& track, std::size_t point);
 
+// A time as the tooltips show it: "YYYY-MM-DD hh:mm:ss UTC" ("—" when it cannot be shown).
+std::string tooltip_time_text(double unix_s);
+
 }  // namespace trailray::app::view

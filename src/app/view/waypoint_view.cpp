@@ -6,6 +6,7 @@
 #include <ctime>
 #include <limits>
 
+#include "app/view/tooltip.hpp"
 #include "geo/wgs84.hpp"
 
 namespace trailray::app::view {
@@ -14,14 +15,6 @@ namespace {
 constexpr const char* kMissingText = "\u2014";  // em dash
 
 std::string metres(double v) { return std::isfinite(v) ? fmt::format("{:.0f} m", v) : kMissingText; }
-
-std::string utc_text(double unix_s) {
-  const auto whole = static_cast<std::time_t>(std::floor(unix_s));
-  std::tm tm{};
-  if (gmtime_r(&whole, &tm) == nullptr) return kMissingText;
-  return fmt::format("{:04}-{:02}-{:02} {:02}:{:02}:{:02} UTC", tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday,
-                     tm.tm_hour, tm.tm_min, tm.tm_sec);
-}
 
 }  // namespace
 
@@ -86,7 +79,7 @@ std::vector<std::string> waypoint_tooltip_lines(const scene::Waypoint& w) {
   out.push_back(fmt::format("elevation: {}", metres(w.ele_m)));
   if (std::isfinite(w.ground_m)) out.push_back(fmt::format("ground: {}", metres(w.ground_m)));
   if (!w.description.empty()) out.push_back(w.description);
-  if (std::isfinite(w.time_unix_s)) out.push_back(fmt::format("time: {}", utc_text(w.time_unix_s)));
+  if (std::isfinite(w.time_unix_s)) out.push_back(fmt::format("time: {}", tooltip_time_text(w.time_unix_s)));
   out.push_back(fmt::format("{}: {}", w.kind == scene::WaypointKind::Place ? "place from" : "file", w.source));
   return out;
 }
