@@ -44,6 +44,10 @@ void RecordedPoints::add(const track::TrackFile& file) {
       for (const auto& p : s.points) add_point(p);
   for (const auto& r : file.routes)
     for (const auto& p : r.points) add_point(p);
+  // A file of waypoints alone (a list of stops, a KML of places) still says where on Earth it is,
+  // so its sun stands at that place's noon rather than at "now", which may be night there.
+  for (const auto& w : file.waypoints)
+    if (!any_lon_deg) any_lon_deg = w.point.lon;
 }
 
 RecordedPoints recorded_points(const std::vector<LoadedTrackFile>& files) {

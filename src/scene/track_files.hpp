@@ -34,7 +34,7 @@ struct RecordedPoints {
   double lowest_m = std::numeric_limits<double>::quiet_NaN();  // NaN: no point has a height
   std::optional<double> first_time_s;                          // of the first timed point
   double first_time_lon_deg = 0.0;                             // where that point was
-  std::optional<double> any_lon_deg;                           // of the first point at all
+  std::optional<double> any_lon_deg;                           // of the first point at all (a waypoint's without one)
 
   void add(const track::TrackFile& file);
   // Where points without an elevation are placed when there is no terrain under them: the
