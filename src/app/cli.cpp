@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_command.hpp"
+#include "app/check_command.hpp"
 #include "app/convert_command.hpp"
 #include "app/elevation_command.hpp"
 #include "app/render_command.hpp"
@@ -23,6 +24,7 @@ int run_cli(int argc, char** argv) {
   add_stats_command(app, exit_code);
   add_elevation_command(app, exit_code);
   add_convert_command(app, exit_code);
+  add_check_command(app, exit_code);
   add_render_command(app, exit_code);
   add_view_command(app, exit_code);
   add_bench_command(app, exit_code);

@@ -1,0 +1,283 @@
+#include "track/airspace/openair_reader.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "geo/utf8.hpp"
+#include "track/airspace/arc_geometry.hpp"
+#include "track/airspace/openair_values.hpp"
+#include "track/io/byte_source.hpp"
+#include "track/io/parse_util.hpp"
+
+namespace trailray::track::airspace {
+namespace {
+
+// Radii beyond this (about 1080 NM) are not airspace but a broken file; refusing them keeps the
+// arc step finite.
+constexpr double kMaxRadiusM = 2'000'000.0;
+
+bool is_valid_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t length = c < 0x80             ? 1
+                               : (c & 0xE0) == 0xC0 ? 2
+                               : (c & 0xF0) == 0xE0 ? 3
+                               : (c & 0xF8) == 0xF0 ? 4
+                                                    : 0;
+    if (length == 0 || length > s.size() - i) return false;
+    for (std::size_t k = 1; k < length; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+    i += length;
+  }
+  return true;
+}
+
+// The file as UTF-8: the BOM dropped; Latin-1 bytes converted when the file is not UTF-8.
+std::string as_utf8(std::string_view bytes, bool& converted) {
+  if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
+  converted = !is_valid_utf8(bytes);
+  if (!converted) return std::string(bytes);
+  std::string out;
+  out.reserve(bytes.size() + bytes.size() / 8);
+  for (char c : bytes) geo::append_utf8(out, static_cast<unsigned char>(c));
+  return out;
+}
+
+class Parser {
+ public:
+  Parser(std::string name, const ReadOptions& options) : name_(std::move(name)), warnings_(name_), options_(options) {}
+
+  void line(std::string_view text, std::int64_t number) {
+    line_ = number;
+    text = trim(text);
+    if (text.empty() || text.front() == '*' || text.front() == '#') return;
+    std::size_t split = 0;
+    while (split < text.size() && text[split] != ' ' && text[split] != '\t') ++split;
+    std::string keyword(text.substr(0, split));
+    for (char& c : keyword) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::string_view value = trim(text.substr(split));
+    if (keyword == "AC") {
+      finish_airspace();
+      current_ = std::make_unique<Airspace>();
+      current_->airspace_class = std::string(value);
+      current_->line = number;
+      centre_.reset();
+      clockwise_ = true;
+      return;
+    }
+    if (keyword == "AR" || keyword == "AF" || keyword == "AY" || keyword == "AG" || keyword == "AT" ||
+        keyword == "AI" || keyword == "SP" || keyword == "SB" || keyword == "AX" || keyword == "AA")
+      return;  // radio, type, ground station, label positions, pens: nothing a check or a drawing uses
+    if (keyword == "V") return variable(value);
+    if (!current_) {
+      if (keyword == "AN" || keyword == "AL" || keyword == "AH" || keyword == "DP" || keyword == "DA" ||
+          keyword == "DB" || keyword == "DC")
+        warnings_.add("outside", here(), keyword + " record before any AC record: ignored");
+      else
+        unknown(keyword);
+      return;
+    }
+    if (keyword == "AN") {
+      current_->name = std::string(value);
+    } else if (keyword == "AL" || keyword == "AH") {
+      auto limit = parse_openair_altitude(value);
+      if (!limit) return fail(keyword + ": cannot read the height '" + std::string(value) + "'");
+      (keyword == "AL" ? floor_ : ceiling_) = *limit;
+    } else if (keyword == "DP") {
+      auto p = parse_openair_coordinate(value);
+      if (!p) return fail("DP: cannot read the coordinate '" + std::string(value) + "'");
+      current_->boundary.push_back(*p);
+    } else if (keyword == "DC") {
+      const auto r = parse_double(value);
+      if (!r || !(*r > 0.0) || *r * kMetresPerNauticalMile > kMaxRadiusM)
+        return fail("DC: the radius must be a positive number of nautical miles, not '" + std::string(value) + "'");
+      if (!need_centre("DC")) return;
+      auto circle = circle_points(*centre_, *r * kMetresPerNauticalMile);
+      current_->boundary.insert(current_->boundary.end(), circle.begin(), circle.end());
+    } else if (keyword == "DA") {
+      arc_by_angles(value);
+    } else if (keyword == "DB") {
+      arc_between(value);
+    } else {
+      unknown(keyword);
+    }
+  }
+
+  AirspaceReadResult finish() {
+    if (!result_.error) finish_airspace();
+    result_.warnings = warnings_.diagnostics();
+    if (options_.strict && !result_.error && !result_.warnings.empty()) {
+      result_.error = result_.warnings.front();
+      result_.warnings.erase(result_.warnings.begin());
+    }
+    return std::move(result_);
+  }
+
+  bool failed() const { return result_.error.has_value(); }
+  void note(const std::string& message) { warnings_.add_single({}, message); }
+
+ private:
+  SourcePosition here() const { return {line_, 1, -1}; }
+  void fail(const std::string& message) { result_.error = Diagnostic{name_, here(), message}; }
+  void unknown(const std::string& keyword) {
+    warnings_.add("unknown:" + keyword, here(), "unknown OpenAir record '" + keyword + "': ignored");
+  }
+
+  bool need_centre(const char* keyword) {
+    if (centre_) return true;
+    fail(std::string(keyword) + ": no centre given (a 'V X=' record must come first)");
+    return false;
+  }
+
+  void variable(std::string_view value) {
+    if (value.size() < 2 || value[1] != '=') {
+      warnings_.add("variable", here(), "V record without NAME=VALUE: ignored");
+      return;
+    }
+    const char var = static_cast<char>(std::toupper(static_cast<unsigned char>(value[0])));
+    const std::string_view v = trim(value.substr(2));
+    if (var == 'X') {
+      auto p = parse_openair_coordinate(v);
+      if (!p) return fail("V X=: cannot read the centre '" + std::string(v) + "'");
+      centre_ = *p;
+    } else if (var == 'D') {
+      if (v == "+")
+        clockwise_ = true;
+      else if (v == "-")
+        clockwise_ = false;
+      else
+        fail("V D=: the direction must be + or -, not '" + std::string(v) + "'");
+    } else if (var != 'W' && var != 'Z' && var != 'T') {  // airway width, zoom, thickness: unused
+      warnings_.add("variable", here(), std::string("unknown variable V ") + var + "=: ignored");
+    }
+  }
+
+  // DA radius, start, end: radius in NM, angles in degrees clockwise from true north.
+  void arc_by_angles(std::string_view value) {
+    double numbers[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t comma = i < 2 ? value.find(',') : value.size();
+      if (comma == std::string_view::npos) return fail("DA: expected 'radius, start angle, end angle'");
+      const auto v = parse_double(value.substr(0, comma));
+      if (!v) return fail("DA: cannot read the number '" + std::string(trim(value.substr(0, comma))) + "'");
+      numbers[i] = *v;
+      value = value.substr(std::min(comma + 1, value.size()));
+    }
+    const double r = numbers[0] * kMetresPerNauticalMile;
+    if (!(r > 0.0) || r > kMaxRadiusM || std::abs(numbers[1]) > 3600 || std::abs(numbers[2]) > 3600)
+      return fail("DA: the radius must be positive and the angles in degrees");
+    if (!need_centre("DA")) return;
+    append_arc(current_->boundary, *centre_, r, r, numbers[1], numbers[2], clockwise_);
+  }
+
+  // DB from, to: an arc around the centre between two points.
+  void arc_between(std::string_view value) {
+    std::string_view rest;
+    auto from = parse_openair_coordinate(value, &rest);
+    if (!from || rest.empty() || rest.front() != ',')
+      return fail("DB: expected 'coordinate, coordinate', got '" + std::string(value) + "'");
+    auto to = parse_openair_coordinate(rest.substr(1), &rest);
+    if (!to || !rest.empty()) return fail("DB: cannot read the second coordinate in '" + std::string(value) + "'");
+    if (!need_centre("DB")) return;
+    double r1 = 0, a1 = 0, r2 = 0, a2 = 0;
+    geodesic_inverse(*centre_, *from, r1, a1);
+    geodesic_inverse(*centre_, *to, r2, a2);
+    if (!(r1 > 0.0) || !(r2 > 0.0) || r1 > kMaxRadiusM || r2 > kMaxRadiusM)
+      return fail("DB: the points must lie away from the centre, within 2000 km");
+    if (std::abs(r1 - r2) > 0.05 * std::max(r1, r2))
+      warnings_.add("db-radius", here(),
+                    "DB: the two points are at different distances from the centre (" + std::to_string(int(r1)) +
+                        " m and " + std::to_string(int(r2)) + " m); the radius goes linearly from one to the other");
+    append_arc(current_->boundary, *centre_, r1, r2, a1, a2, clockwise_);
+    // The given points themselves, not their geodesic reconstruction.
+    current_->boundary[current_->boundary.size() - 1] = *to;
+  }
+
+  void finish_airspace() {
+    if (!current_) return;
+    Airspace& a = *current_;
+    auto& ring = a.boundary;
+    if (ring.size() > 1 && ring.front().lat == ring.back().lat && ring.front().lon == ring.back().lon) ring.pop_back();
+    const SourcePosition at{a.line, 1, -1};
+    const std::string label = a.name.empty() ? "(no name)" : a.name;
+    if (!floor_ || !ceiling_)
+      warnings_.add(
+          "limits", at,
+          "airspace " + label + " has no " + (!floor_ ? "AL floor (taken as GND)" : "AH ceiling (taken as UNL)"));
+    a.floor = floor_.value_or(AltitudeLimit{AltitudeReference::Agl, 0.0, "GND"});
+    a.ceiling = ceiling_.value_or(AltitudeLimit{AltitudeReference::Unlimited, 0.0, "UNL"});
+    // Two points are a line: Skytraxx files mark cables that way (floor = ceiling). Kept for
+    // drawing; a line has no inside, so no check ever finds a track in it.
+    if (ring.size() < 2)
+      warnings_.add("shape", at, "airspace " + label + " has fewer than 2 boundary points: skipped");
+    else
+      result_.file.airspaces.push_back(std::move(a));
+    current_.reset();
+    floor_.reset();
+    ceiling_.reset();
+  }
+
+  std::string name_;
+  WarningCollector warnings_;
+  ReadOptions options_;
+  AirspaceReadResult result_;
+  std::unique_ptr<Airspace> current_;
+  std::optional<AltitudeLimit> floor_, ceiling_;
+  std::optional<geo::LatLon> centre_;
+  bool clockwise_ = true;
+  std::int64_t line_ = 0;
+};
+
+}  // namespace
+
+AirspaceReadResult read_openair(std::string_view bytes, const std::string& display_name, const ReadOptions& options) {
+  bool latin1 = false;
+  const std::string text = as_utf8(bytes, latin1);
+  Parser parser(display_name, options);
+  std::size_t begin = 0;
+  std::int64_t number = 0;
+  while (begin < text.size() && !parser.failed()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + begin, end - begin);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    parser.line(line, ++number);
+    begin = end + 1;
+  }
+  if (latin1) parser.note("not valid UTF-8: read as Latin-1 (ISO-8859-1), names converted to UTF-8");
+  return parser.finish();
+}
+
+AirspaceReadResult load_openair_file(const std::string& path, const ReadOptions& options) {
+  std::string error;
+  auto source = ByteSource::open(path, error);
+  const std::string name = path == "-" ? "<stdin>" : path;
+  if (!source) {
+    AirspaceReadResult r;
+    r.error = Diagnostic{name, {}, error};
+    return r;
+  }
+  std::string bytes;
+  char buffer[1 << 16];
+  for (;;) {
+    const std::ptrdiff_t n = source->next(buffer, sizeof buffer);
+    if (n < 0) {
+      AirspaceReadResult r;
+      r.error = Diagnostic{name, {}, "cannot read: " + source->error()};
+      return r;
+    }
+    if (n == 0) break;
+    bytes.append(buffer, static_cast<std::size_t>(n));
+    if (bytes.size() > (std::size_t{256} << 20)) {
+      AirspaceReadResult r;
+      r.error = Diagnostic{name, {}, "more than 256 MiB: not an airspace file"};
+      return r;
+    }
+  }
+  return read_openair(bytes, name, options);
+}
+
+}  // namespace trailray::track::airspace
