@@ -17,6 +17,9 @@ namespace {
 // Radii beyond this (about 1080 NM) are not airspace but a broken file; refusing them keeps the
 // arc step finite.
 constexpr double kMaxRadiusM = 2'000'000.0;
+// Boundary points in one file: a whole continent's file has well under a million; beyond this a
+// file of nothing but huge circles would fill memory.
+constexpr std::size_t kMaxPointsPerFile = 5'000'000;
 
 bool is_valid_utf8(std::string_view s) {
   std::size_t i = 0;
@@ -52,6 +55,8 @@ class Parser {
 
   void line(std::string_view text, std::int64_t number) {
     line_ = number;
+    if (points_ + (current_ ? current_->boundary.size() : 0) > kMaxPointsPerFile)
+      return fail("more than 5 million boundary points: not an airspace file");
     text = trim(text);
     if (text.empty() || text.front() == '*' || text.front() == '#') return;
     std::size_t split = 0;
@@ -213,8 +218,10 @@ class Parser {
     // drawing; a line has no inside, so no check ever finds a track in it.
     if (ring.size() < 2)
       warnings_.add("shape", at, "airspace " + label + " has fewer than 2 boundary points: skipped");
-    else
+    else {
+      points_ += ring.size();
       result_.file.airspaces.push_back(std::move(a));
+    }
     current_.reset();
     floor_.reset();
     ceiling_.reset();
@@ -229,6 +236,7 @@ class Parser {
   std::optional<geo::LatLon> centre_;
   bool clockwise_ = true;
   std::int64_t line_ = 0;
+  std::size_t points_ = 0;  // in the airspaces kept so far
 };
 
 }  // namespace
