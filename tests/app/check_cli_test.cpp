@@ -130,3 +130,30 @@ TEST(CheckCli, UsageAndUnreadableFilesExitTwo) {
   r = run_command(cli("--airspace " + air.str() + " /nonexistent/track.gpx"));
   EXPECT_EQ(r.status, 2) << r.out;
 }
+
+TEST(CheckCli, AglFloorWithTerrainUsesTheGround) {
+  TRAILRAY_REQUIRE_DATA(dem, "dem/interlaken_dhm25_wgs84.tif");
+  TRAILRAY_REQUIRE_DATA(flight, "igc/goigc_0100_interlaken.igc");
+  TempFile air("air.txt",
+               "AC R\nAN Box\nAL 300 ft AGL\nAH 3000 m\nDP 46:40:00 N 007:48:00 E\nDP 46:40:00 N 007:56:00 E\n"
+               "DP 46:45:00 N 007:56:00 E\nDP 46:45:00 N 007:48:00 E\n");
+  const std::string base = shell_quote(TRAILRAY_BINARY) + " check -q --json --airspace " + air.str() + " ";
+  auto with = run_command(base + "--terrain " + shell_quote(dem.string()) + " " + shell_quote(flight.string()));
+  auto without = run_command(base + shell_quote(flight.string()));
+  ASSERT_EQ(with.status, 1) << with.out;
+  ASSERT_EQ(without.status, 1) << without.out;
+  const json w = json::parse(with.out), wo = json::parse(without.out);
+  EXPECT_EQ(w["terrain"], true);
+  // Without the ground the floor sits at 91 m above sea level: the whole flight (launch at about
+  // 1900 m, landing near Interlaken at about 570 m) is inside, in one piece.
+  ASSERT_EQ(wo["tracks"][0]["infringements"].size(), 1u);
+  EXPECT_EQ(wo["tracks"][0]["infringements"][0]["ground_assumed"], true);
+  // With it, the parts within 300 ft of the ground are not: several shorter stretches.
+  const json& list = w["tracks"][0]["infringements"];
+  ASSERT_GE(list.size(), 2u);
+  for (const auto& f : list) {
+    EXPECT_EQ(f["floor_altitude"], "gnss-ground");
+    EXPECT_EQ(f["ground_assumed"], false);
+    EXPECT_GE(f["max_above_floor_m"].get<double>(), 0.0);
+  }
+}
