@@ -120,6 +120,8 @@ int run_check(const CheckArgs& a) {
           "one elevation per point: compared with every limit (FL too, as if it were pressure altitude)";
     else if (a.read.igc_altitude == IgcAltitude::Auto && path != "-")
       checked.altitudes = add_pressure_altitude(path, a.read, segments);
+    else if (a.read.igc_altitude == IgcAltitude::Auto)
+      checked.altitudes = "IGC from standard input, read once: its elevation (GNSS, else pressure) for every limit";
     else if (a.read.igc_altitude == IgcAltitude::Pressure)
       checked.altitudes = "IGC pressure altitude (--igc-altitude pressure) for every limit";
     else

@@ -144,7 +144,16 @@ TEST(OpenAirReader, SwissAndGermanFilesReadWithoutErrors) {
   ASSERT_TRUE(ch.ok()) << ch.error->to_string();
   EXPECT_TRUE(ch.warnings.empty()) << ch.warnings.front().to_string();
   EXPECT_EQ(ch.file.airspaces.size(), 334u);
-  EXPECT_EQ(ch.file.airspaces.front().name.substr(0, 3), ch.file.airspaces.front().name.substr(0, 3));
+  EXPECT_EQ(ch.file.airspaces.front().name, "ALPNACH CTR 128.475");
+  EXPECT_EQ(ch.file.airspaces.front().airspace_class, "D");
+  int ground_floors = 0, agl = 0;
+  for (const auto& a : ch.file.airspaces) {
+    ground_floors += a.floor.is_ground();
+    agl += (a.floor.reference == AltitudeReference::Agl && !a.floor.is_ground()) +
+           (a.ceiling.reference == AltitudeReference::Agl && !a.ceiling.is_ground());
+  }
+  EXPECT_EQ(ground_floors, 190);  // "AL GND" lines in the file
+  EXPECT_EQ(agl, 9);              // "ft AGL" limits
   const auto de = load_openair_file(german.string());
   ASSERT_TRUE(de.ok()) << de.error->to_string();
   EXPECT_EQ(de.file.airspaces.size(), 677u);
