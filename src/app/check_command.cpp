@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -114,7 +115,14 @@ int run_check(const CheckArgs& a) {
     }
     Segments segments = segments_of(read.file);
     CheckedTrack checked{path == "-" ? "<stdin>" : path, 0, "", {}};
-    for (const auto& s : segments) checked.points += s.size();
+    std::size_t without_altitude = 0;
+    for (const auto& s : segments) {
+      checked.points += s.size();
+      for (const auto& p : s) without_altitude += std::isnan(p.msl_m);
+    }
+    if (without_altitude > 0)
+      diagnostics.warning(fmt::format("{}: {} of {} points have no altitude: they are never found inside an airspace",
+                                      checked.path, without_altitude, checked.points));
     if (read.file.format != track::Format::Igc)
       checked.altitudes =
           "one elevation per point: compared with every limit (FL too, as if it were pressure altitude)";

@@ -127,6 +127,12 @@ TEST(CheckCli, UsageAndUnreadableFilesExitTwo) {
   auto r = run_command(cli("--airspace " + broken.str() + " " + low.str()));  // FILE:LINE
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find(broken.str() + ":5:"), std::string::npos) << r.out;
+  TempFile flat("flat.gpx",
+                "<?xml version=\"1.0\"?><gpx version=\"1.1\" creator=\"t\"><trk><trkseg><trkpt lat=\"47\" "
+                "lon=\"8\"/><trkpt lat=\"47.001\" lon=\"8\"/></trkseg></trk></gpx>");
+  r = run_command(cli("--airspace " + air.str() + " " + flat.str()));  // no altitude: said, not guessed
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("2 of 2 points have no altitude"), std::string::npos) << r.out;
   r = run_command(cli("--airspace " + air.str() + " /nonexistent/track.gpx"));
   EXPECT_EQ(r.status, 2) << r.out;
 }
