@@ -4,13 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace trailray::track::airspace {
 
 double arc_step_deg(double radius_m) {
   if (!(radius_m > kMaxChordErrorM)) return kMaxArcStepDeg;
   // sagitta r (1 - cos(step/2)) <= e  <=>  step <= 2 acos(1 - e/r)
-  const double step = 2.0 * std::acos(1.0 - kMaxChordErrorM / radius_m) * 180.0 / M_PI;
+  const double step = 2.0 * std::acos(1.0 - kMaxChordErrorM / radius_m) * 180.0 / std::numbers::pi;
   return std::clamp(step, 0.01, kMaxArcStepDeg);  // the floor keeps absurd radii finite
 }
 

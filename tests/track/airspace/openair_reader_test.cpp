@@ -4,6 +4,7 @@
 
 #include <GeographicLib/Geodesic.hpp>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "test_support.hpp"
@@ -62,7 +63,7 @@ TEST(OpenAirGeometry, CircleVerticesAtTheRadiusChordsWithinOneMetre) {
 TEST(OpenAirGeometry, ArcStepFollowsTheChordError) {
   EXPECT_DOUBLE_EQ(arc_step_deg(100.0), kMaxArcStepDeg);
   const double step = arc_step_deg(100000.0);
-  EXPECT_NEAR(100000.0 * (1 - std::cos(step * M_PI / 360.0)), kMaxChordErrorM, 1e-6);
+  EXPECT_NEAR(100000.0 * (1 - std::cos(step * std::numbers::pi / 360.0)), kMaxChordErrorM, 1e-6);
 }
 
 TEST(OpenAirGeometry, DirectionOfDaArcs) {
