@@ -48,7 +48,7 @@ struct PointState {
   Level floor, ceiling;
 };
 
-PointState evaluate(const AirspaceIndex& index, std::size_t a, const CheckPoint& p, bool horizontal_known_inside) {
+PointState evaluate(const AirspaceIndex& index, std::size_t a, const CheckPoint& p) {
   const Airspace& air = index.file().airspaces[a];
   PointState s;
   s.floor = floor_level(air.floor, p);
@@ -56,7 +56,7 @@ PointState evaluate(const AirspaceIndex& index, std::size_t a, const CheckPoint&
   // NaN altitudes (a fix without any) compare false: such a fix is never inside.
   const bool vertical = s.floor.above_m >= 0.0 && s.ceiling.above_m <= 0.0;
   if (!vertical) return s;
-  s.inside = horizontal_known_inside || (index.box(a).contains(p.lat, p.lon) && index.contains(a, p.lat, p.lon));
+  s.inside = index.box(a).contains(p.lat, p.lon) && index.contains(a, p.lat, p.lon);
   if (s.floor.known) s.above_floor = s.floor.above_m;
   if (s.ceiling.known) s.below_ceiling = -s.ceiling.above_m;
   return s;
@@ -73,7 +73,7 @@ double crossing_time(const AirspaceIndex& index, std::size_t a, const CheckPoint
   double lo = 0.0, hi = 1.0;  // evaluate(lo) outside, evaluate(hi) inside
   for (int i = 0; i < 20; ++i) {
     const double mid = 0.5 * (lo + hi);
-    if (evaluate(index, a, lerp(out, in, mid), false).inside)
+    if (evaluate(index, a, lerp(out, in, mid)).inside)
       hi = mid;
     else
       lo = mid;
@@ -110,7 +110,7 @@ std::vector<Infringement> find_infringements(const AirspaceIndex& index,
       const CheckPoint& p = points[i];
       inside_now.clear();
       for (std::uint32_t a : index.candidates(p.lat, p.lon)) {
-        const PointState s = evaluate(index, a, p, false);
+        const PointState s = evaluate(index, a, p);
         if (!s.inside) continue;
         inside_now.push_back(a);
         auto it = open.find(a);
