@@ -8,6 +8,7 @@
 #include "app/convert_command.hpp"
 #include "app/elevation_command.hpp"
 #include "app/render_command.hpp"
+#include "app/score_command.hpp"
 #include "app/stats_command.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/view_command.hpp"
@@ -27,6 +28,7 @@ int run_cli(int argc, char** argv) {
   add_check_command(app, exit_code);
   add_render_command(app, exit_code);
   add_view_command(app, exit_code);
+  add_score_command(app, exit_code);
   add_bench_command(app, exit_code);
 
   try {

@@ -1,0 +1,76 @@
+#include "track/scoring/score.hpp"
+
+#include "track/scoring/cylinders.hpp"
+
+namespace trailray::track::scoring {
+namespace {
+
+ScoreResult score_window(const std::vector<Fix>& fixes, const RuleSet& rules, const ScoreOptions& options,
+                         const FlightWindow& w) {
+  ScoreResult r;
+  r.rules = rules.name;
+  r.model = options.model;
+  r.flight = w;
+  const Metric metric(fixes, options.model);
+  const RangeTree tree(metric, w.launch, w.landing);
+  ClosingFinder closing(metric, tree);
+  for (const FlightType& t : rules.types) {
+    TypeResult tr;
+    switch (t.shape) {
+      case Shape::FreeDistance:
+        tr = optimise_free_distance(metric, tree, t);
+        break;
+      case Shape::Triangle:
+      case Shape::OutAndReturn2:
+        tr = optimise_closed(metric, tree, closing, t);
+        break;
+      case Shape::OutAndReturn1:
+        tr = optimise_out_and_return1(metric, tree, t);
+        break;
+    }
+    if (tr.positions.empty())
+      for (int f : tr.points)
+        tr.positions.emplace_back(fixes[static_cast<std::size_t>(f)].lat, fixes[static_cast<std::size_t>(f)].lon);
+    if (t.cylinders > 0) apply_fai_cylinders(metric, tr);
+    r.by_type.push_back(std::move(tr));
+  }
+  for (std::size_t i = 0; i < r.by_type.size(); ++i) {
+    const TypeResult& tr = r.by_type[i];
+    if (!tr.valid) continue;
+    if (r.best < 0 || tr.score > r.by_type[static_cast<std::size_t>(r.best)].score) r.best = static_cast<int>(i);
+  }
+  return r;
+}
+
+double best_score(const ScoreResult& r) {
+  return r.best < 0 ? -1.0 : r.by_type[static_cast<std::size_t>(r.best)].score;
+}
+
+}  // namespace
+
+ScoreResult score_flight(const std::vector<Fix>& fixes, const RuleSet& rules, const ScoreOptions& options) {
+  if (fixes.size() < 5) {
+    ScoreResult r;
+    r.rules = rules.name;
+    r.model = options.model;
+    return r;
+  }
+  std::vector<FlightWindow> windows;
+  if (options.trim)
+    windows = detect_flights(fixes);
+  else
+    windows.push_back({0, static_cast<int>(fixes.size()) - 1});
+  // Several flights in one log: the best-scoring one counts, as with the reference scorer.
+  ScoreResult best;
+  bool have = false;
+  for (const FlightWindow& w : windows) {
+    ScoreResult r = score_window(fixes, rules, options, w);
+    if (!have || best_score(r) > best_score(best)) {
+      best = std::move(r);
+      have = true;
+    }
+  }
+  return best;
+}
+
+}  // namespace trailray::track::scoring
