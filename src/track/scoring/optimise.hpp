@@ -13,7 +13,10 @@ namespace trailray::track::scoring {
 
 struct TypeResult {
   FlightType type;
-  bool valid = false;        // false: no route of this type exists (e.g. never closes)
+  bool valid = false;  // false: no route of this type found (e.g. it never closes)
+  // true: `score` is this type's optimum. false: the search stopped at a floor (a better score of
+  // another type), so this type's optimum is known only to be at most that floor.
+  bool exact = true;
   double score = 0;          // points
   double distance = 0;       // km, the sum of the rounded legs (final-rounded)
   double closing = -1;       // km, -1 for a free distance
@@ -43,7 +46,10 @@ class ClosingFinder {
 
 TypeResult optimise_free_distance(const Metric& metric, const RangeTree& tree, const FlightType& type);
 // FAI out-and-return around one turnpoint: the return point is the middle of the closing pair.
-TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree, const FlightType& type);
-TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingFinder& closing, const FlightType& type);
+// `floor`: only routes scoring above it are searched for (< 0: all).
+TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree, const FlightType& type, double floor);
+// `floor`: only routes scoring above it are searched for (< 0: all).
+TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingFinder& closing, const FlightType& type,
+                           double floor);
 
 }  // namespace trailray::track::scoring

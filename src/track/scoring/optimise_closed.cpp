@@ -78,12 +78,14 @@ double ClosingFinder::closest(int a, int c, int* in, int* out) {
   return it->second.d;
 }
 
-TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingFinder& closing,
-                           const FlightType& type) {
+TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingFinder& closing, const FlightType& type,
+                           double floor) {
   const bool oar = type.shape == Shape::OutAndReturn2;
   TypeResult best;
   best.type = type;
   double best_score = 0.0;
+  // Routes must beat this to matter: the best of this type so far, or the caller's floor.
+  auto threshold = [&] { return best.valid ? std::max(best_score, floor) : floor; };
 
   auto evaluate = [&](int a, int b, int c) {
     std::vector<double> legs;
@@ -153,7 +155,7 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
       if (type.max_side > 0 && std::max({l[0], l[1], l[2]}) > type.max_side * P) return -1;
     }
     const double open_bound = final_round(type, P * type.multiplier);
-    if (open_bound <= best_score && best.valid) return open_bound;
+    if (open_bound <= threshold()) return open_bound;
     double cd = 0;
     if (A.hi < C.lo) cd = round2(closing.closest(A.hi, C.lo));
     if (cd > closing_limit(type, P)) return -1;
@@ -163,11 +165,11 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
   std::priority_queue<Triple> queue;
   const int root = tree.root();
   const double b0 = bound(root, root, root);
-  if (b0 >= 0) queue.push({b0, root, root, root});
+  if (b0 >= 0 && b0 > floor) queue.push({b0, root, root, root});
   while (!queue.empty()) {
     const Triple t = queue.top();
     queue.pop();
-    if (best.valid && t.bound <= best_score) break;
+    if (t.bound <= threshold()) break;
     const RangeNode& A = tree.node(t.a);
     const RangeNode& B = tree.node(t.b);
     const RangeNode& C = tree.node(t.c);
@@ -180,7 +182,7 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
     }
     auto push = [&](int a, int b, int c) {
       const double v = bound(a, b, c);
-      if (v >= 0 && (!best.valid || v > best_score)) queue.push({v, a, b, c});
+      if (v >= 0 && v > threshold()) queue.push({v, a, b, c});
     };
     if (sa >= sb && sa >= sc) {
       push(A.left, oar ? A.left : t.b, t.c);
@@ -193,6 +195,7 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
       push(t.a, oar ? t.a : t.b, C.right);
     }
   }
+  best.exact = !best.valid ? floor < 0 : best_score >= floor;
   return best;
 }
 

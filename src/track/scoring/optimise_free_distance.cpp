@@ -1,11 +1,18 @@
 // Free distance over three turnpoints: start -> TP1 -> TP2 -> TP3 -> finish, with start <= TP1
 // <= TP2 <= TP3 <= finish in time. The score is a sum of rounded legs, so it is solved exactly by
-// dynamic programming in four max-plus passes
-//   out[j] = max over i <= j of in[i] + round(d(i, j)),
-// starting from in = 0 (the best start for each TP1). Each pass prunes with the range tree: for
-// a node N, in[i] + round(d(i, j)) <= max(in over N) + round(upper(j, N)) for every i in N, because
-// rounding is nondecreasing and upper() bounds the distance (metric.cpp). A node whose bound
-// cannot beat the best found for j is skipped; the result is the same as the full O(n^2) scan.
+// dynamic programming with max-plus passes, two from each end meeting at TP2:
+//   forward  f0[j] = max over i <= j of round(d(i, j))            (best start leg to TP1 = j)
+//            f1[j] = max over i <= j of f0[i] + round(d(i, j))    (best two legs to TP2 = j)
+//   backward b0[j] = max over i >= j of round(d(j, i))            (best finish leg from TP3 = j)
+//            b1[j] = max over i >= j of b0[i] + round(d(j, i))    (best two legs from TP2 = j)
+//   optimum = max over j of f1[j] + b1[j].
+// Each pass prunes with the range tree: for a node N, in[i] + round(d(i, j)) <= max(in over N) +
+// round(upper(j, N)) for every i in N, because rounding is nondecreasing and upper() bounds the
+// distance (metric.cpp). A node is skipped when that bound is below what j needs: the best found
+// for j so far, and in the last pass also L - b1[j], where L is the length of a route already
+// known (f0[j] + b1[j], a route with TP1 = TP2 = j). A j on an optimal route has f1[j] + b1[j] >=
+// L, so the nodes holding its optimal predecessor are never skipped (the test is strict) and its
+// f1 is exact; other fixes may keep a smaller value, which only loses routes shorter than L.
 #include <algorithm>
 #include <limits>
 
@@ -17,54 +24,70 @@ namespace {
 constexpr double kNone = -std::numeric_limits<double>::infinity();
 constexpr int kScanSize = 8;  // nodes this small are scanned fix by fix
 
-void max_plus_pass(const Metric& metric, const RangeTree& tree, const std::vector<double>& in, std::vector<double>& out,
-                   std::vector<int>& arg) {
+// out[j] = max over i on the `forward` side of j (i <= j, or i >= j) of in[i] + round(d(i, j)).
+// need[j] (optional): a value out[j] must exceed to matter (see above).
+void max_plus_pass(const Metric& metric, const RangeTree& tree, bool forward, const std::vector<double>& in,
+                   const std::vector<double>* need, std::vector<double>& out, std::vector<int>& arg) {
   const auto& nodes = tree.nodes();
   std::vector<double> node_max(nodes.size(), kNone);
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const RangeNode& n = nodes[k];
-    if (n.left < 0) {
-      node_max[k] = in[static_cast<std::size_t>(n.lo)];
-    } else {
-      node_max[k] = std::max(node_max[static_cast<std::size_t>(n.left)], node_max[static_cast<std::size_t>(n.right)]);
-    }
+    node_max[k] =
+        n.left < 0 ? in[static_cast<std::size_t>(n.lo)]
+                   : std::max(node_max[static_cast<std::size_t>(n.left)], node_max[static_cast<std::size_t>(n.right)]);
   }
   std::vector<int> stack;
-  for (int j = tree.lo(); j <= tree.hi(); ++j) {
+  const bool exact_is_slow = metric.model() == DistanceModel::Geodesic;
+  const int first = forward ? tree.lo() : tree.hi();
+  const int last = forward ? tree.hi() : tree.lo();
+  const int step = forward ? 1 : -1;
+  for (int j = first;; j += step) {
     const auto uj = static_cast<std::size_t>(j);
     double best = in[uj];
     int best_i = j;
     // Warm start: the best predecessor of the previous fix is usually close to the best here.
-    if (j > tree.lo()) {
-      const int c = arg[uj - 1];
+    if (j != first) {
+      const int c = arg[static_cast<std::size_t>(j - step)];
       const double v = in[static_cast<std::size_t>(c)] + round2(metric.distance(c, j));
       if (v > best) best = v, best_i = c;
     }
+    double bar = best;
+    bool strict = false;  // prune at bound <= bar (best so far) or, for `need`, only at bound < bar
+    if (need && (*need)[uj] > bar) bar = (*need)[uj], strict = true;
     const Box& pj = metric.point_box(j);
     stack.clear();
     stack.push_back(tree.root());
     while (!stack.empty()) {
-      const RangeNode& n = tree.node(stack.back());
-      const double nmax = node_max[static_cast<std::size_t>(stack.back())];
+      const int id = stack.back();
       stack.pop_back();
-      if (n.lo > j || nmax == kNone) continue;
-      if (nmax + round2(metric.upper(pj, n.box)) <= best) continue;
+      const RangeNode& n = tree.node(id);
+      const double nmax = node_max[static_cast<std::size_t>(id)];
+      if ((forward ? n.lo > j : n.hi < j) || nmax == kNone) continue;
+      const double b = nmax + round2(metric.upper(pj, n.box));
+      if (strict ? b < bar : b <= bar) continue;
       if (n.size() <= kScanSize) {
-        const int end = std::min(n.hi, j);
-        for (int i = n.lo; i <= end; ++i) {
+        const int from = forward ? n.lo : std::max(n.lo, j);
+        const int to = forward ? std::min(n.hi, j) : n.hi;
+        for (int i = from; i <= to; ++i) {
           const double base = in[static_cast<std::size_t>(i)];
           if (base == kNone) continue;
+          // The exact geodesic is costly: skip pairs whose cheap chord bound cannot win.
+          if (exact_is_slow && base + round2(metric.upper(metric.point_box(i), pj)) <= best) continue;
           const double v = base + round2(metric.distance(i, j));
-          if (v > best) best = v, best_i = i;
+          if (v > best) {
+            best = v, best_i = i;
+            if (best >= bar) bar = best, strict = false;
+          }
         }
         continue;
       }
-      // Later fixes first: near j the bound is weakest, so earlier ranges are tried last.
-      stack.push_back(n.left);
-      stack.push_back(n.right);
+      // The far side first (popped first): the far end of a leg is usually the better one.
+      stack.push_back(forward ? n.right : n.left);
+      stack.push_back(forward ? n.left : n.right);
     }
     out[uj] = best;
     arg[uj] = best_i;
+    if (j == last) break;
   }
 }
 
@@ -72,23 +95,34 @@ void max_plus_pass(const Metric& metric, const RangeTree& tree, const std::vecto
 
 TypeResult optimise_free_distance(const Metric& metric, const RangeTree& tree, const FlightType& type) {
   const std::size_t n = static_cast<std::size_t>(tree.hi()) + 1;
-  std::vector<double> a(n, kNone), b(n, kNone);
-  for (int i = tree.lo(); i <= tree.hi(); ++i) a[static_cast<std::size_t>(i)] = 0.0;
-  std::vector<std::vector<int>> args(4, std::vector<int>(n, 0));
-  // Pass k gives, for each fix, the best route ending there with k + 1 legs.
-  for (int k = 0; k < 4; ++k) {
-    max_plus_pass(metric, tree, a, b, args[static_cast<std::size_t>(k)]);
-    std::swap(a, b);
+  std::vector<double> zero(n, kNone);
+  for (int i = tree.lo(); i <= tree.hi(); ++i) zero[static_cast<std::size_t>(i)] = 0.0;
+  std::vector<double> f0(n, kNone), f1(n, kNone), b0(n, kNone), b1(n, kNone);
+  std::vector<int> af0(n, 0), af1(n, 0), ab0(n, 0), ab1(n, 0);
+  max_plus_pass(metric, tree, true, zero, nullptr, f0, af0);
+  max_plus_pass(metric, tree, false, zero, nullptr, b0, ab0);
+  max_plus_pass(metric, tree, false, b0, nullptr, b1, ab1);
+  // A known route: TP1 = TP2 = j. Its length L sets what f1[j] must reach: L - b1[j].
+  double known = kNone;
+  for (int j = tree.lo(); j <= tree.hi(); ++j) {
+    const auto u = static_cast<std::size_t>(j);
+    known = std::max(known, f0[u] + b1[u]);
   }
-  int finish = tree.lo();
-  for (int i = tree.lo(); i <= tree.hi(); ++i)
-    if (a[static_cast<std::size_t>(i)] > a[static_cast<std::size_t>(finish)]) finish = i;
+  std::vector<double> need(n, kNone);
+  for (int j = tree.lo(); j <= tree.hi(); ++j)
+    need[static_cast<std::size_t>(j)] = known - b1[static_cast<std::size_t>(j)];
+  max_plus_pass(metric, tree, true, f0, &need, f1, af1);
+
+  int tp2 = tree.lo();
+  for (int j = tree.lo(); j <= tree.hi(); ++j) {
+    const auto u = static_cast<std::size_t>(j), ub = static_cast<std::size_t>(tp2);
+    if (f1[u] + b1[u] > f1[ub] + b1[ub]) tp2 = j;
+  }
   TypeResult r;
   r.type = type;
-  r.points.assign(5, finish);
-  for (int k = 3; k >= 0; --k)
-    r.points[static_cast<std::size_t>(k)] =
-        args[static_cast<std::size_t>(k)][static_cast<std::size_t>(r.points[static_cast<std::size_t>(k) + 1])];
+  const int tp1 = af1[static_cast<std::size_t>(tp2)];
+  const int tp3 = ab1[static_cast<std::size_t>(tp2)];
+  r.points = {af0[static_cast<std::size_t>(tp1)], tp1, tp2, tp3, ab0[static_cast<std::size_t>(tp3)]};
   double sum = 0;
   for (std::size_t k = 0; k < 4; ++k) {
     r.legs.push_back(round2(metric.distance(r.points[k], r.points[k + 1])));

@@ -27,10 +27,11 @@ struct Triple {
 
 }  // namespace
 
-TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree, const FlightType& type) {
+TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree, const FlightType& type, double floor) {
   TypeResult best;
   best.type = type;
   double best_score = 0;
+  auto threshold = [&] { return best.valid ? std::max(best_score, floor) : floor; };
   const double limit = closing_limit(type, 0.0);  // fixed limit (the FAI rules have no relative part)
 
   auto evaluate = [&](int p, int b, int q) {
@@ -85,11 +86,11 @@ TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree,
 
   std::priority_queue<Triple> queue;
   const int root = tree.root();
-  if (bound(root, root, root) >= 0) queue.push({bound(root, root, root), root, root, root});
+  if (bound(root, root, root) > floor) queue.push({bound(root, root, root), root, root, root});
   while (!queue.empty()) {
     const Triple t = queue.top();
     queue.pop();
-    if (best.valid && t.bound <= best_score) break;
+    if (t.bound <= threshold()) break;
     const RangeNode& P = tree.node(t.p);
     const RangeNode& B = tree.node(t.b);
     const RangeNode& Q = tree.node(t.q);
@@ -101,7 +102,7 @@ TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree,
     }
     auto push = [&](int p, int b, int q) {
       const double v = bound(p, b, q);
-      if (v >= 0 && (!best.valid || v > best_score)) queue.push({v, p, b, q});
+      if (v >= 0 && v > threshold()) queue.push({v, p, b, q});
     };
     if (P.size() >= B.size() && P.size() >= Q.size()) {
       push(P.left, t.b, t.q);
@@ -114,6 +115,7 @@ TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree,
       push(t.p, t.b, Q.right);
     }
   }
+  best.exact = !best.valid ? floor < 0 : best_score >= floor;
   return best;
 }
 

@@ -1,5 +1,7 @@
 #include "track/scoring/score.hpp"
 
+#include <algorithm>
+
 #include "track/scoring/cylinders.hpp"
 
 namespace trailray::track::scoring {
@@ -14,7 +16,18 @@ ScoreResult score_window(const std::vector<Fix>& fixes, const RuleSet& rules, co
   const Metric metric(fixes, options.model);
   const RangeTree tree(metric, w.launch, w.landing);
   ClosingFinder closing(metric, tree);
-  for (const FlightType& t : rules.types) {
+  r.by_type.resize(rules.types.size());
+  // Free distances first: their dynamic programme is fast, and their score is a floor that the
+  // closed routes must beat (unless every type's own optimum is asked for).
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < rules.types.size(); ++i)
+    if (rules.types[i].shape == Shape::FreeDistance) order.push_back(i);
+  for (std::size_t i = 0; i < rules.types.size(); ++i)
+    if (rules.types[i].shape != Shape::FreeDistance) order.push_back(i);
+  double floor = -1.0;
+  for (std::size_t i : order) {
+    const FlightType& t = rules.types[i];
+    const double type_floor = options.all_types ? -1.0 : floor;
     TypeResult tr;
     switch (t.shape) {
       case Shape::FreeDistance:
@@ -22,17 +35,19 @@ ScoreResult score_window(const std::vector<Fix>& fixes, const RuleSet& rules, co
         break;
       case Shape::Triangle:
       case Shape::OutAndReturn2:
-        tr = optimise_closed(metric, tree, closing, t);
+        tr = optimise_closed(metric, tree, closing, t, type_floor);
         break;
       case Shape::OutAndReturn1:
-        tr = optimise_out_and_return1(metric, tree, t);
+        tr = optimise_out_and_return1(metric, tree, t, type_floor);
         break;
     }
     if (tr.positions.empty())
       for (int f : tr.points)
         tr.positions.emplace_back(fixes[static_cast<std::size_t>(f)].lat, fixes[static_cast<std::size_t>(f)].lon);
     if (t.cylinders > 0) apply_fai_cylinders(metric, tr);
-    r.by_type.push_back(std::move(tr));
+    // Cylinders shrink the legs after the optimisation, so the floor only rises without them.
+    if (tr.valid && t.cylinders <= 0) floor = std::max(floor, tr.score);
+    r.by_type[i] = std::move(tr);
   }
   for (std::size_t i = 0; i < r.by_type.size(); ++i) {
     const TypeResult& tr = r.by_type[i];

@@ -16,6 +16,9 @@ namespace trailray::track::scoring {
 struct ScoreOptions {
   DistanceModel model = DistanceModel::Fcc;
   bool trim = true;  // score only the detected flight (launch to landing); false: the whole log
+  // true: every type's own optimum (by_type all exact; slower). false: a type stops once it cannot
+  // beat the best score found so far; the best type is exact either way.
+  bool all_types = false;
 };
 
 struct ScoreResult {
