@@ -18,6 +18,7 @@ struct ScoreArgs {
   std::string distance = "fcc";
   bool json = false;
   bool no_trim = false;
+  bool all_types = false;
 };
 
 int run_score(const ScoreArgs& a) {
@@ -42,6 +43,7 @@ int run_score(const ScoreArgs& a) {
   sc::ScoreOptions options;
   options.model = a.distance == "geodesic" ? sc::DistanceModel::Geodesic : sc::DistanceModel::Fcc;
   options.trim = !a.no_trim;
+  options.all_types = a.all_types;
   const sc::ScoreResult r = sc::score_flight(list.fixes, *rules, options);
   if (a.json)
     std::cout << score_json(r, list.fixes).dump(2) << '\n';
@@ -59,7 +61,9 @@ void add_score_command(CLI::App& app, int& exit_code) {
   cmd->footer(
       "Every flight type of the rule set is optimised exactly (branch and bound over the fixes of\n"
       "the log: turnpoints are fixes) and the best-scoring type is reported; --json adds the best\n"
-      "of each type under by_type. Launch and landing are detected from 10 s averages of ground\n"
+      "of each type under by_type (\"exact\": false where that type's search stopped because it\n"
+      "could not beat the best; --all-types finds every type's own optimum). Launch and landing are detected from 10 s "
+      "averages of ground\n"
       "and vertical speed (--no-trim scores the whole log). Legs and closing are rounded to 0.01 km\n"
       "before summing; fai, fai-oar, fai-cylinders and xcleague round the distance and score to 0.1.\n"
       "Distances: --distance fcc (default) is the FCC ellipsoidal formula, which the reference\n"
@@ -77,6 +81,8 @@ void add_score_command(CLI::App& app, int& exit_code) {
       ->default_str("fcc")
       ->type_name("MODEL");
   cmd->add_flag("--no-trim", args->no_trim, "Score the whole log, not only the detected flight");
+  cmd->add_flag("--all-types", args->all_types,
+                "Optimise every type to its own optimum (by default a type stops once it cannot beat the best)");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of a table");
   cmd->callback([args, &exit_code] { exit_code = run_score(*args); });
 }

@@ -45,6 +45,7 @@ nlohmann::json type_json(const ScoreResult& r, const TypeResult& t, const std::v
   j["type"] = t.type.name;
   j["code"] = t.type.code;
   j["valid"] = t.valid;
+  j["exact"] = t.exact;
   j["distance_km"] = tidy(t.distance);
   j["closing_km"] = t.closing < 0 ? nlohmann::json(nullptr) : nlohmann::json(tidy(t.closing));
   j["penalty_km"] = tidy(t.penalty);
@@ -91,7 +92,8 @@ std::string score_table(const ScoreResult& r, const std::vector<Fix>& fixes) {
     const TypeResult& t = r.by_type[i];
     const std::string mark = static_cast<int>(i) == r.best ? "*" : " ";
     if (!t.valid) {
-      s += fmt::format("{} {:<38} {:>4} {:>10}\n", mark, t.type.name, t.type.code, "-");
+      s += fmt::format("{} {:<38} {:>4} {:>10}{}\n", mark, t.type.name, t.type.code, "-",
+                       t.exact ? "" : "   (not better than the best)");
       continue;
     }
     s += fmt::format("{} {:<38} {:>4} {:>7.2f} km {:>9} {:>6.2f} km {:>5.2f} {:>9.2f}\n", mark, t.type.name,
