@@ -61,15 +61,15 @@ void add_score_command(CLI::App& app, int& exit_code) {
   cmd->footer(
       "Every flight type of the rule set is optimised exactly (branch and bound over the fixes of\n"
       "the log: turnpoints are fixes) and the best-scoring type is reported; --json adds the best\n"
-      "of each type under by_type (\"exact\": false where that type's search stopped because it\n"
-      "could not beat the best; --all-types finds every type's own optimum). Launch and landing are detected from 10 s "
-      "averages of ground\n"
-      "and vertical speed (--no-trim scores the whole log). Legs and closing are rounded to 0.01 km\n"
-      "before summing; fai, fai-oar, fai-cylinders and xcleague round the distance and score to 0.1.\n"
+      "of each type under by_type (\"exact\": false where a type's search stopped because it could\n"
+      "not beat the best; --all-types finds every type's own optimum).\n"
+      "Launch and landing are detected from 10 s averages of ground and vertical speed (--no-trim\n"
+      "scores the whole log). Legs and closing are rounded to 0.01 km before summing; fai,\n"
+      "fai-oar, fai-cylinders and xcleague round the distance and the score to 0.1.\n"
       "Distances: --distance fcc (default) is the FCC ellipsoidal formula, which the reference\n"
       "scorer igc-xc-score uses by default, so scores agree with it to the last digit; geodesic is\n"
       "the exact WGS84 geodesic (Karney; the same as Vincenty to < 1 mm, igc-xc-score's hp mode).\n"
-      "The two differ by about 5 m per 100 km, at most a few hundredths of a point.\n"
+      "The two differ by about 5 m per 100 km: a few hundredths of a point.\n"
       "Rule sets: xcontest, ffvl, fai, fai-oar, fai-cylinders, xcleague.\n"
       "Exit status: 0 scored, 1 when the file cannot be read or has too few fixes, 2 for a usage error.");
   cmd->add_option("TRACK", args->file, "IGC flight log")->required()->type_name("FILE");
