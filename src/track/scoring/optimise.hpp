@@ -2,6 +2,7 @@
 // Exact optimisers for one flight type over the fixes [lo, hi] of a flight (branch and bound
 // over index ranges; every bound is an upper bound of the score, see optimise_*.cpp).
 
+#include <array>
 #include <unordered_map>
 #include <vector>
 
@@ -42,9 +43,27 @@ class ClosingFinder {
     int in, out;
   };
   std::unordered_map<long long, Entry> memo_;
+  struct Recent {
+    int a = 0, c = -1;  // the query (c < a: empty slot, never used)
+    Entry entry{0, 1 << 30, -1};
+  };
+  std::array<Recent, 8> recent_{};
+  std::size_t next_recent_ = 0;
 };
 
-TypeResult optimise_free_distance(const Metric& metric, const RangeTree& tree, const FlightType& type);
+// The cheap first passes of the free distance (best start and finish leg per fix) and the route
+// they give with all three turnpoints at one fix: its score is a floor the other types can use.
+struct FreeDistanceStart {
+  std::vector<double> f0, b0;
+  std::vector<int> af0, ab0;
+  double known = 0;  // km, the known route's length
+  int known_at = 0;
+};
+FreeDistanceStart prepare_free_distance(const Metric& metric, const RangeTree& tree);
+double known_route_score(const FreeDistanceStart& start, const FlightType& type);
+// `floor`: only routes scoring above it are searched for (< 0: all).
+TypeResult optimise_free_distance(const Metric& metric, const RangeTree& tree, const FlightType& type,
+                                  const FreeDistanceStart& start, double floor);
 // FAI out-and-return around one turnpoint: the return point is the middle of the closing pair.
 // `floor`: only routes scoring above it are searched for (< 0: all).
 TypeResult optimise_out_and_return1(const Metric& metric, const RangeTree& tree, const FlightType& type, double floor);

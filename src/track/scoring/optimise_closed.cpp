@@ -27,6 +27,7 @@ namespace trailray::track::scoring {
 namespace {
 
 constexpr int kScanSize = 8;
+constexpr int kClosingGrid = 32;
 
 struct Triple {
   double bound;
@@ -46,6 +47,25 @@ double ClosingFinder::closest(int a, int c, int* in, int* out) {
   auto it = memo_.find(key);
   if (it == memo_.end()) {
     Entry best{metric_.distance(a, c), a, c};
+    // Recent answers: a pair (in, out) with in <= a and out >= c is a valid closing here, so it
+    // bounds the search; if moreover the recent query's window held this one's (a <= its a,
+    // c >= its c), the minimum here cannot be smaller than there, and that pair is the answer.
+    for (const Recent& r : recent_) {
+      if (r.entry.in > a || r.entry.out < c) continue;
+      if (r.a >= a && r.c <= c) {
+        best = r.entry;
+        best.d = -best.d - 1;  // mark: exact, no search
+        break;
+      }
+      if (r.entry.d < best.d) best = r.entry;
+    }
+    if (best.d < 0) {
+      best.d = -best.d - 1;
+      it = memo_.emplace(key, best).first;
+      if (in) *in = best.in;
+      if (out) *out = best.out;
+      return best.d;
+    }
     std::vector<std::pair<int, int>> stack{{tree_.root(), tree_.root()}};
     while (!stack.empty()) {
       const auto [xi, yi] = stack.back();
@@ -63,15 +83,26 @@ double ClosingFinder::closest(int a, int c, int* in, int* out) {
           }
         continue;
       }
+      // Split the larger node; the nearer half is searched first (pushed last).
+      int c1 = xi, c2 = xi, d1 = yi, d2 = yi;
       if (x.size() >= y.size() && x.left >= 0) {
-        stack.push_back({x.right, yi});
-        stack.push_back({x.left, yi});
+        c1 = x.left, c2 = x.right;
       } else {
-        stack.push_back({xi, y.left});
-        stack.push_back({xi, y.right});
+        d1 = y.left, d2 = y.right;
+      }
+      const double l1 = metric_.lower(tree_.node(c1).box, tree_.node(d1).box);
+      const double l2 = metric_.lower(tree_.node(c2).box, tree_.node(d2).box);
+      if (l1 <= l2) {
+        stack.push_back({c2, d2});
+        stack.push_back({c1, d1});
+      } else {
+        stack.push_back({c1, d1});
+        stack.push_back({c2, d2});
       }
     }
     it = memo_.emplace(key, best).first;
+    recent_[next_recent_] = Recent{a, c, best};
+    next_recent_ = (next_recent_ + 1) % recent_.size();
   }
   if (in) *in = it->second.in;
   if (out) *out = it->second.out;
@@ -84,6 +115,7 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
   TypeResult best;
   best.type = type;
   double best_score = 0.0;
+
   // Routes must beat this to matter: the best of this type so far, or the caller's floor.
   auto threshold = [&] { return best.valid ? std::max(best_score, floor) : floor; };
 
@@ -103,6 +135,9 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
       if (type.min_side > 0 && l < type.min_side * distance) return;
       if (type.max_side > 0 && l > type.max_side * distance) return;
     }
+    // Without its closing the route scores at most this: skip the closing search when that
+    // cannot beat the best (the penalty is never negative).
+    if (final_round(type, distance * type.multiplier) <= threshold()) return;
     int in = -1, out = -1;
     const double cd = round2(closing.closest(a, c, &in, &out));
     if (cd > closing_limit(type, distance)) return;
@@ -157,7 +192,12 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
     const double open_bound = final_round(type, P * type.multiplier);
     if (open_bound <= threshold()) return open_bound;
     double cd = 0;
-    if (A.hi < C.lo) cd = round2(closing.closest(A.hi, C.lo));
+    // The closing only shrinks when a moves later or c earlier, so snapping A.hi up and C.lo
+    // down to multiples of kClosingGrid still gives a lower bound, and far fewer distinct pairs
+    // to compute (they are memoised).
+    const int a_snap = std::min(tree.hi(), (A.hi + kClosingGrid - 1) / kClosingGrid * kClosingGrid);
+    const int c_snap = std::max(tree.lo(), C.lo / kClosingGrid * kClosingGrid);
+    if (a_snap < c_snap) cd = round2(closing.closest(a_snap, c_snap));
     if (cd > closing_limit(type, P)) return -1;
     return final_round(type, (P - closing_penalty(type, cd)) * type.multiplier);
   };

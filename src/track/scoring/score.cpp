@@ -17,28 +17,37 @@ ScoreResult score_window(const std::vector<Fix>& fixes, const RuleSet& rules, co
   const RangeTree tree(metric, w.launch, w.landing);
   ClosingFinder closing(metric, tree);
   r.by_type.resize(rules.types.size());
-  // Free distances first: their dynamic programme is fast, and their score is a floor that the
-  // closed routes must beat (unless every type's own optimum is asked for).
+  // The closed types first, highest multiplier first, each above the best score found so far
+  // (starting from a free-distance route known from the cheap first passes): a type with a lower
+  // multiplier often cannot reach it at all. The free distance last: its costly passes then only
+  // look at routes that beat the best closed one.
+  const FreeDistanceStart start = prepare_free_distance(metric, tree);
   std::vector<std::size_t> order;
+  double floor = -1.0;
+  for (std::size_t i = 0; i < rules.types.size(); ++i)
+    if (rules.types[i].shape != Shape::FreeDistance)
+      order.push_back(i);
+    else if (rules.types[i].cylinders <= 0)
+      floor = std::max(floor, known_route_score(start, rules.types[i]));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t x, std::size_t y) { return rules.types[x].multiplier > rules.types[y].multiplier; });
   for (std::size_t i = 0; i < rules.types.size(); ++i)
     if (rules.types[i].shape == Shape::FreeDistance) order.push_back(i);
-  for (std::size_t i = 0; i < rules.types.size(); ++i)
-    if (rules.types[i].shape != Shape::FreeDistance) order.push_back(i);
-  double floor = -1.0;
+  if (options.all_types) floor = -1.0;
+  double closed_best = -1.0;
   for (std::size_t i : order) {
     const FlightType& t = rules.types[i];
-    const double type_floor = options.all_types ? -1.0 : floor;
     TypeResult tr;
     switch (t.shape) {
       case Shape::FreeDistance:
-        tr = optimise_free_distance(metric, tree, t);
+        tr = optimise_free_distance(metric, tree, t, start, options.all_types ? -1.0 : closed_best);
         break;
       case Shape::Triangle:
       case Shape::OutAndReturn2:
-        tr = optimise_closed(metric, tree, closing, t, type_floor);
+        tr = optimise_closed(metric, tree, closing, t, floor);
         break;
       case Shape::OutAndReturn1:
-        tr = optimise_out_and_return1(metric, tree, t, type_floor);
+        tr = optimise_out_and_return1(metric, tree, t, floor);
         break;
     }
     if (tr.positions.empty())
@@ -46,7 +55,10 @@ ScoreResult score_window(const std::vector<Fix>& fixes, const RuleSet& rules, co
         tr.positions.emplace_back(fixes[static_cast<std::size_t>(f)].lat, fixes[static_cast<std::size_t>(f)].lon);
     if (t.cylinders > 0) apply_fai_cylinders(metric, tr);
     // Cylinders shrink the legs after the optimisation, so the floor only rises without them.
-    if (tr.valid && t.cylinders <= 0) floor = std::max(floor, tr.score);
+    if (tr.valid && t.cylinders <= 0 && !options.all_types) {
+      floor = std::max(floor, tr.score);
+      if (t.shape != Shape::FreeDistance) closed_best = std::max(closed_best, tr.score);
+    }
     r.by_type[i] = std::move(tr);
   }
   for (std::size_t i = 0; i < r.by_type.size(); ++i) {
