@@ -119,7 +119,14 @@ TypeResult optimise_closed(const Metric& metric, const RangeTree& tree, ClosingF
   // Routes must beat this to matter: the best of this type so far, or the caller's floor.
   auto threshold = [&] { return best.valid ? std::max(best_score, floor) : floor; };
 
+  const bool exact_is_slow = metric.model() == DistanceModel::Geodesic;
   auto evaluate = [&](int a, int b, int c) {
+    if (exact_is_slow) {
+      // The exact geodesic is costly: first the cheap chord bound of the three legs.
+      auto up = [&](int i, int j) { return round2(metric.upper(metric.point_box(i), metric.point_box(j))); };
+      const double ub = oar ? 2 * up(a, c) : up(a, b) + up(b, c) + up(c, a);
+      if (final_round(type, final_round(type, ub) * type.multiplier) <= threshold()) return;
+    }
     std::vector<double> legs;
     if (oar) {
       const double leg = round2(metric.distance(a, c));

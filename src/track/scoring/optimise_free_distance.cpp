@@ -69,7 +69,8 @@ void max_plus_chunk(const Metric& metric, const RangeTree& tree, bool forward, c
       const RangeNode& n = tree.node(id);
       const double nmax = node_max[static_cast<std::size_t>(id)];
       if ((forward ? n.lo > j : n.hi < j) || nmax == kNone) continue;
-      const double b = nmax + round2(metric.upper(pj, n.box));
+      // round2(x) <= x + 0.005: a bound without the cost of rounding.
+      const double b = nmax + metric.upper(pj, n.box) + 0.005;
       if (strict ? b < bar : b <= bar) continue;
       if (n.size() <= kScanSize) {
         const int from = forward ? n.lo : std::max(n.lo, j);
