@@ -96,9 +96,10 @@ std::string score_table(const ScoreResult& r, const std::vector<Fix>& fixes) {
                        t.exact ? "" : "   (not better than the best)");
       continue;
     }
-    s += fmt::format("{} {:<38} {:>4} {:>7.2f} km {:>9} {:>6.2f} km {:>5.2f} {:>9.2f}\n", mark, t.type.name,
+    s += fmt::format("{} {:<38} {:>4} {:>7.2f} km {:>9} {:>6.2f} km {:>5.2f} {:>9.2f}{}\n", mark, t.type.name,
                      t.type.code, t.distance, t.closing < 0 ? std::string("-") : fmt::format("{:.2f} km", t.closing),
-                     t.penalty, t.type.multiplier, t.score);
+                     t.penalty, t.type.multiplier, t.score,
+                     t.exact ? "" : "   (at least; search stopped below the best)");
   }
   if (r.best < 0) {
     s += "no route scores under these rules\n";
