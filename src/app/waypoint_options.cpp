@@ -1,5 +1,7 @@
 #include "app/waypoint_options.hpp"
 
+#include "track/scoring/rules.hpp"
+
 namespace trailray::app {
 
 void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
@@ -12,6 +14,13 @@ void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
       ->allow_extra_args(false);  // one file per --labels: the words after it are tracks
   command.add_flag("--no-waypoints", args.no_waypoints,
                    "No pins or labels for the files' waypoints (GPX wpt, KML points, FIT course points) or places");
+  command.add_flag("--score", args.score,
+                   "Score the first IGC track as `trailray score` does and draw it: the turnpoints as pins, the "
+                   "scored legs as a line on the ground, the closing gap of a closed route in its own colour");
+  command.add_option("--score-rules", args.score_rules, "The rule set --score uses")
+      ->type_name("NAME")
+      ->check(CLI::IsMember(track::scoring::rule_set_names()))
+      ->capture_default_str();
 }
 
 }  // namespace trailray::app

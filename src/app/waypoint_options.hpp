@@ -1,7 +1,8 @@
 #pragma once
 // Waypoints and place labels, spelled the same in `render` and `view`: --labels FILE (place
 // labels from a CSV, GPX or GeoJSON points file, repeatable) and --no-waypoints (no pins and no
-// labels for the files' waypoints or the places).
+// labels for the files' waypoints or the places); --score [--score-rules NAME] (the XC score of the
+// first IGC track drawn: turnpoint pins, the legs on the ground, the closing gap).
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,8 @@ namespace trailray::app {
 struct WaypointArgs {
   std::vector<std::string> label_files;  // --labels
   bool no_waypoints = false;
+  bool score = false;                    // --score: the first IGC track's XC score drawn
+  std::string score_rules = "xcontest";  // --score-rules
 };
 
 void add_waypoint_options(CLI::App& command, WaypointArgs& args);
