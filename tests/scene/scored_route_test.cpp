@@ -85,6 +85,12 @@ TEST(ScoredRoute, ClosedTriangleGivesClosedLegsAGapAndOnePinPerTurnpoint) {
   EXPECT_EQ(drawn.tracks[0].color_srgb, scene::kScoredLegsColor);
   EXPECT_EQ(drawn.tracks[1].color_srgb, scene::kClosingGapColor);
   EXPECT_EQ(drawn.tracks[0].point_count(), 4u);
+  const auto& drawn_legs = drawn.tracks[0].cleaned.segments.at(0).points;
+  ASSERT_EQ(drawn_legs.size(), 4u);
+  for (std::size_t i = 0; i < 3; ++i) {  // the corners where the pins are, not smoothed
+    EXPECT_DOUBLE_EQ(drawn_legs[i].lat, best.positions[i].first);
+    EXPECT_DOUBLE_EQ(drawn_legs[i].lon, best.positions[i].second);
+  }
   ASSERT_EQ(drawn.waypoints.size(), 3u);
   EXPECT_EQ(drawn.waypoints[0].ground_ecef, drawn.waypoints[0].marker_ecef)
       << "no elevation: the pin's marker on the ground";
