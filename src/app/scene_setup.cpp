@@ -22,27 +22,6 @@ bool is_igc_path(const std::string& path) {
   return ext == ".igc";
 }
 
-// --score: the first IGC file's best route under the rules, built as the scene's other routes.
-void add_scored_route(SceneTracks& out, const std::vector<std::string>& paths, const std::string& rules_name,
-                      const scene::TrackStyle& style, const scene::TrackBuildOptions& build,
-                      const scene::WaypointBuildOptions& placing, scene::Diagnostics& diagnostics) {
-  const auto igc = std::find_if(paths.begin(), paths.end(), is_igc_path);
-  if (igc == paths.end()) throw std::runtime_error("--score needs an IGC file among the tracks");
-  const auto rules = track::scoring::rule_set(rules_name);
-  if (!rules) throw std::runtime_error("--score-rules: unknown rule set '" + rules_name + "'");
-  const track::scoring::FixList list = track::scoring::read_scoring_fixes(*igc);
-  if (list.error) throw std::runtime_error(*list.error);
-  const track::scoring::ScoreResult result = track::scoring::score_flight(list.fixes, *rules);
-  if (result.best < 0) {
-    diagnostics.warning(*igc + ": no route scores under the " + rules_name + " rules: nothing to draw for --score");
-    return;
-  }
-  scene::ScoredRouteDrawing drawing =
-      scene::build_scored_route(result, list.fixes, *igc, style, build, placing, diagnostics);
-  for (scene::Track& t : drawing.tracks) out.tracks.add(std::move(t));
-  for (scene::Waypoint& w : drawing.waypoints) out.waypoints.points.push_back(std::move(w));
-}
-
 }  // namespace
 
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
@@ -60,8 +39,30 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
     out.waypoints.points.push_back(std::move(w));
   if (waypoints.no_waypoints) scene::set_waypoints_visible(out.waypoints, false);
   // After --no-waypoints: the score's turnpoints were asked for explicitly.
-  if (waypoints.score) add_scored_route(out, paths, waypoints.score_rules, style, build, placing, diagnostics);
+  if (waypoints.score) {
+    scene::ScoredRouteDrawing drawing =
+        scored_route_of(paths, waypoints.score_rules, style, build, placing, diagnostics);
+    for (scene::Track& t : drawing.tracks) out.tracks.add(std::move(t));
+    for (scene::Waypoint& w : drawing.waypoints) out.waypoints.points.push_back(std::move(w));
+  }
   return out;
+}
+
+scene::ScoredRouteDrawing scored_route_of(const std::vector<std::string>& paths, const std::string& rules_name,
+                                          const scene::TrackStyle& style, const scene::TrackBuildOptions& build,
+                                          const scene::WaypointBuildOptions& placing, scene::Diagnostics& diagnostics) {
+  const auto igc = std::find_if(paths.begin(), paths.end(), is_igc_path);
+  if (igc == paths.end()) throw std::runtime_error("--score needs an IGC file among the tracks");
+  const auto rules = track::scoring::rule_set(rules_name);
+  if (!rules) throw std::runtime_error("--score-rules: unknown rule set '" + rules_name + "'");
+  const track::scoring::FixList list = track::scoring::read_scoring_fixes(*igc);
+  if (list.error) throw std::runtime_error(*list.error);
+  const track::scoring::ScoreResult result = track::scoring::score_flight(list.fixes, *rules);
+  if (result.best < 0) {
+    diagnostics.warning(*igc + ": no route scores under the " + rules_name + " rules: nothing to draw for --score");
+    return {};
+  }
+  return scene::build_scored_route(result, list.fixes, *igc, style, build, placing, diagnostics);
 }
 
 double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded) {

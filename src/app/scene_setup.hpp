@@ -12,6 +12,7 @@
 #include "app/waypoint_options.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/framing.hpp"
+#include "scene/scored_route.hpp"
 #include "scene/style.hpp"
 #include "scene/track_building.hpp"
 #include "scene/track_files.hpp"
@@ -45,6 +46,13 @@ struct SceneTracks {
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints = {});
+
+// --score: the first IGC file of `paths` scored under the rule set `rules_name` and its best route
+// built for the scene (nothing, after a warning, when no route scores). Throws std::runtime_error
+// without an IGC file, for unknown rules or a log that cannot be read.
+scene::ScoredRouteDrawing scored_route_of(const std::vector<std::string>& paths, const std::string& rules_name,
+                                          const scene::TrackStyle& style, const scene::TrackBuildOptions& build,
+                                          const scene::WaypointBuildOptions& placing, scene::Diagnostics& diagnostics);
 
 // The sun's time: --time when given, else the tracks' day at noon (scene::default_sun_time).
 double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded);

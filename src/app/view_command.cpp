@@ -8,8 +8,8 @@
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
 #include "app/track_options.hpp"
-#include "app/waypoint_options.hpp"
 #include "app/view/viewer_app.hpp"
+#include "app/waypoint_options.hpp"
 
 namespace trailray::app {
 namespace {
@@ -52,6 +52,8 @@ int run_view(const ViewArgs& a) {
   o.timeout_s = a.timeout_s;
   o.label_files = a.waypoints.label_files;
   o.no_waypoints = a.waypoints.no_waypoints;
+  o.score = a.waypoints.score;
+  o.score_rules = a.waypoints.score_rules;
   return view::run_viewer(o);
 }
 
@@ -71,7 +73,9 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "--screenshot OUT.png"
       " writes the picture at the end and exits.\n"
       "Exit status: 0 done, 1 a file, source, script or GL failed, 2 a usage error.");
-  cmd->add_option("TRACK", args->tracks, "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to show (the view frames them)")->type_name("FILE");
+  cmd->add_option("TRACK", args->tracks,
+                  "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to show (the view frames them)")
+      ->type_name("FILE");
   cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");
   add_camera_options(*cmd, args->camera);
   add_shading_options(*cmd, args->style);

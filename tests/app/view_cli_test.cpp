@@ -162,7 +162,8 @@ TEST(ViewCli, TheFirstViewPutsTheTrackWhereThePanelsLeaveTheWindowFree) {
   const std::string out = env.file("wide.png");
   const auto r = run_view(env, shell_quote(env.hike()) +
                                    " --terrain none --no-ssao --no-atmosphere --size 1280x720 --time "
-                                   "2024-06-18T10:00:00Z --color '#ff0000' --screenshot " + shell_quote(out));
+                                   "2024-06-18T10:00:00Z --color '#ff0000' --screenshot " +
+                                   shell_quote(out));
   ASSERT_EQ(r.status, 0) << r.out;
   const Picture picture = read_picture(out);
   ASSERT_EQ(picture.width, 1280u);
@@ -289,6 +290,27 @@ TEST(ViewCli, WithoutADisplayItSaysHowToGetOne) {
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("no display"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("xvfb-run"), std::string::npos) << r.out;
+}
+
+// `view --score` draws what `render --score` draws: the scored legs in magenta on the ground.
+TEST(ViewCli, ScoreDrawsTheScoredLegs) {
+  TRAILRAY_REQUIRE_DATA(flight, "igc/scoring/xcscore_tri.igc");
+  ViewEnv env;
+  const auto magenta = [](const Picture& p) {
+    std::size_t n = 0;
+    for (std::uint32_t y = 0; y < p.height; ++y)
+      for (std::uint32_t x = 0; x < p.width; ++x) {
+        const Rgb c = p.at(x, y);
+        n += (c.r > 150 && c.b > 120 && c.g < 90) ? 1 : 0;
+      }
+    return n;
+  };
+  const std::string plain = env.file("plain.png"), scored = env.file("scored.png");
+  const auto a = run_view(env, shell_quote(flight.string()) + kWindow + " --screenshot " + shell_quote(plain));
+  ASSERT_EQ(a.status, 0) << a.out;
+  const auto b = run_view(env, shell_quote(flight.string()) + kWindow + " --score --screenshot " + shell_quote(scored));
+  ASSERT_EQ(b.status, 0) << b.out;
+  EXPECT_GT(magenta(read_picture(scored)), magenta(read_picture(plain)) + 50);
 }
 
 }  // namespace

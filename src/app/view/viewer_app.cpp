@@ -71,6 +71,13 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
        scene::read_place_labels(o.label_files, o.read, {sources_.heights.get(), neutral_}, diagnostics_))
     model_.waypoints.points.push_back(std::move(w));
   scene::set_waypoints_visible(model_.waypoints, model_.settings.show_waypoints);
+  if (o.score) {  // after the visibility: the turnpoints were asked for explicitly
+    scene::ScoredRouteDrawing drawing =
+        scored_route_of(o.tracks, o.score_rules, o.style.tracks, {sources_.heights.get(), neutral_, o.analysis},
+                        {sources_.heights.get(), neutral_}, diagnostics_);
+    for (scene::Track& t : drawing.tracks) model_.tracks.add(std::move(t));
+    for (scene::Waypoint& w : drawing.waypoints) model_.waypoints.points.push_back(std::move(w));
+  }
   controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }

@@ -38,6 +38,8 @@ struct ViewerOptions {
   double timeout_s = 120.0;              // for a scripted picture's tiles
   std::vector<std::string> label_files;  // --labels: place labels
   bool no_waypoints = false;             // --no-waypoints: pins and labels hidden (the panel shows them again)
+  bool score = false;                    // --score: the first IGC track's XC score drawn
+  std::string score_rules = "xcontest";  // --score-rules
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when
