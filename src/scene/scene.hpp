@@ -13,6 +13,7 @@
 #include "scene/image_paint.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
+#include "scene/volumes.hpp"
 #include "scene/waypoints.hpp"
 #include "track/color_values.hpp"
 
@@ -26,6 +27,7 @@ struct Scene {
   TerrainView* terrain = nullptr;
   const TrackSet* tracks = nullptr;        // nullptr: no tracks
   const WaypointSet* waypoints = nullptr;  // nullptr: no waypoints or place labels
+  const VolumeSet* volumes = nullptr;      // nullptr: no airspaces or task cylinders
   Style style;
   // The colour scale in use (color_range(*tracks, style)); nullopt: solid colours.
   std::optional<track::ValueRange> color_range;
