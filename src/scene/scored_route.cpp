@@ -86,11 +86,8 @@ ScoredRouteDrawing build_scored_route(const sc::ScoreResult& result, const std::
   route_style.colors.clear();
   route_style.color_by = track::ColorMetric::solid;
   route_style.curtain = false;
-  // Turnpoints are exact places: smoothing (meant for GPS noise) would pull a 4-point route's
-  // corners towards its middle.
-  TrackBuildOptions exact = options;
-  exact.analysis.clean.smooth = false;
-  out.tracks = build_tracks(files, route_style, exact, diagnostics);
+  // Its legs are routes, which build_tracks never smooths: the corners stay on the turnpoints.
+  out.tracks = build_tracks(files, route_style, options, diagnostics);
   for (std::size_t i = 0; i < out.tracks.size(); ++i)
     out.tracks[i].color_srgb = i == 0 ? kScoredLegsColor : kClosingGapColor;
   out.waypoints = build_waypoints(files.front().file.waypoints, source, WaypointKind::Waypoint, placing);

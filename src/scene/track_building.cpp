@@ -191,7 +191,10 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
       t.name = named.name;
       t.source = loaded.path;
       track::CleanReport report;
-      t.cleaned = track::clean_track(named.raw(), options.analysis.clean, report);
+      // A route's points are planned places, not noisy fixes: smoothing would pull its corners in.
+      track::CleanOptions clean = options.analysis.clean;
+      if (named.is_route()) clean.smooth = false;
+      t.cleaned = track::clean_track(named.raw(), clean, report);
       t.metrics = track::compute_metrics(t.cleaned, options.analysis.metrics);
       std::vector<std::vector<double>> ground;
       if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))

@@ -179,5 +179,30 @@ TEST(RouteBuilding, RoutesAreMarkedSolidInTheRouteColourWithDistancesAlong) {
   EXPECT_EQ(key[1].name, "plan (route)");
 }
 
+TEST(RouteBuilding, RoutesAreNotSmoothedTheirCornersStayWhereThePlanPutsThem) {
+  // An L: five points north, then five east. Smoothing (meant for GPS noise) moves the corner of
+  // a recorded track inwards; a route's corner is a planned place and stays.
+  std::vector<track::TrackPoint> corner_points;
+  for (int i = 0; i <= 5; ++i) corner_points.push_back({kLat + 0.001 * i, kLon, 500.0});
+  for (int i = 1; i <= 5; ++i) corner_points.push_back({kLat + 0.005, kLon + 0.001 * i, 500.0});
+  LoadedTrackFile loaded;
+  loaded.path = "plan.gpx";
+  track::Track recorded;
+  recorded.segments.push_back({corner_points});
+  loaded.file.tracks.push_back(recorded);
+  loaded.file.routes.push_back({"plan", corner_points});
+  TrackStyle style;
+  CollectedDiagnostics diagnostics;
+  const auto tracks = build_tracks({loaded}, style, {}, diagnostics);
+  ASSERT_EQ(tracks.size(), 2u);
+  const auto corner_of = [](const Track& t) { return t.cleaned.segments.at(0).points.at(5); };
+  ASSERT_FALSE(tracks[0].is_route);
+  EXPECT_GT(std::abs(corner_of(tracks[0]).lat - (kLat + 0.005)) + std::abs(corner_of(tracks[0]).lon - kLon), 1e-5)
+      << "the recorded track's corner is smoothed (else this test shows nothing)";
+  ASSERT_TRUE(tracks[1].is_route);
+  EXPECT_DOUBLE_EQ(corner_of(tracks[1]).lat, kLat + 0.005);
+  EXPECT_DOUBLE_EQ(corner_of(tracks[1]).lon, kLon);
+}
+
 }  // namespace
 }  // namespace trailray::scene
