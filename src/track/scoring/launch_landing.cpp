@@ -13,13 +13,12 @@ constexpr double kGroundTime = 20.0, kGroundH = 2.5, kGroundV = 0.1;
 
 }  // namespace
 
-std::vector<FlightWindow> detect_flights(const std::vector<Fix>& fixes) {
+MotionAverages motion_averages(const std::vector<Fix>& fixes) {
   const int n = static_cast<int>(fixes.size());
-  std::vector<FlightWindow> out;
-  if (n < 2) {
-    out.push_back({0, n > 0 ? n - 1 : 0});
-    return out;
-  }
+  MotionAverages out;
+  out.ground_speed.assign(static_cast<std::size_t>(n), 0.0);
+  out.vertical_speed.assign(static_cast<std::size_t>(n), 0.0);
+  if (n < 2) return out;
   std::vector<double> h(static_cast<std::size_t>(n), 0.0), v(static_cast<std::size_t>(n), 0.0);
   auto alt = [&](int i) {
     const Fix& f = fixes[static_cast<std::size_t>(i)];
@@ -37,7 +36,6 @@ std::vector<FlightWindow> detect_flights(const std::vector<Fix>& fixes) {
     }
   }
   // Centred moving averages over fixes within +-5 s (window ends included as the reference does).
-  std::vector<double> hma(static_cast<std::size_t>(n)), vma(static_cast<std::size_t>(n));
   std::vector<double> ph(static_cast<std::size_t>(n) + 1, 0.0), pv(static_cast<std::size_t>(n) + 1, 0.0);
   for (int i = 0; i < n; ++i) {
     ph[static_cast<std::size_t>(i) + 1] = ph[static_cast<std::size_t>(i)] + h[static_cast<std::size_t>(i)];
@@ -50,9 +48,21 @@ std::vector<FlightWindow> detect_flights(const std::vector<Fix>& fixes) {
     int e = i;
     while (e < n - 1 && fixes[static_cast<std::size_t>(e)].time < now + kHalfWindow) ++e;
     const double count = e - s + 1;
-    hma[static_cast<std::size_t>(i)] = (ph[static_cast<std::size_t>(e) + 1] - ph[static_cast<std::size_t>(s)]) / count;
-    vma[static_cast<std::size_t>(i)] = (pv[static_cast<std::size_t>(e) + 1] - pv[static_cast<std::size_t>(s)]) / count;
+    out.ground_speed[static_cast<std::size_t>(i)] =
+        (ph[static_cast<std::size_t>(e) + 1] - ph[static_cast<std::size_t>(s)]) / count;
+    out.vertical_speed[static_cast<std::size_t>(i)] =
+        (pv[static_cast<std::size_t>(e) + 1] - pv[static_cast<std::size_t>(s)]) / count;
   }
+  return out;
+}
+
+std::vector<FlightWindow> find_flights(const std::vector<Fix>& fixes) {
+  const int n = static_cast<int>(fixes.size());
+  std::vector<FlightWindow> out;
+  if (n < 2) return out;
+  const MotionAverages ma = motion_averages(fixes);
+  const std::vector<double>& hma = ma.ground_speed;
+  const std::vector<double>& vma = ma.vertical_speed;
   std::vector<char> flying(static_cast<std::size_t>(n), 0), ground(static_cast<std::size_t>(n), 0);
   int fs = -1, gs = -1;
   for (int i = 0; i < n - 1; ++i) {
@@ -84,7 +94,12 @@ std::vector<FlightWindow> detect_flights(const std::vector<Fix>& fixes) {
     out.push_back({launch, j});
     i = j;
   }
-  if (out.empty()) out.push_back({0, n - 1});
+  return out;
+}
+
+std::vector<FlightWindow> detect_flights(const std::vector<Fix>& fixes) {
+  std::vector<FlightWindow> out = find_flights(fixes);
+  if (out.empty()) out.push_back({0, fixes.empty() ? 0 : static_cast<int>(fixes.size()) - 1});
   return out;
 }
 

@@ -19,4 +19,15 @@ struct FlightWindow {
 // Every flight found, in order; the whole log when none is.
 std::vector<FlightWindow> detect_flights(const std::vector<Fix>& fixes);
 
+// Every flight found, in order; empty when none is (a walk, a drive, a log of the ground).
+// Flight analysis (track/flight/) uses this: it needs to tell "no flight" from "all flight".
+std::vector<FlightWindow> find_flights(const std::vector<Fix>& fixes);
+
+// The detection's 10 s centred moving averages per fix: ground speed and |vertical speed|, m/s.
+struct MotionAverages {
+  std::vector<double> ground_speed;
+  std::vector<double> vertical_speed;
+};
+MotionAverages motion_averages(const std::vector<Fix>& fixes);
+
 }  // namespace trailray::track::scoring
