@@ -7,6 +7,7 @@
 #include "app/check_command.hpp"
 #include "app/convert_command.hpp"
 #include "app/elevation_command.hpp"
+#include "app/flight_command.hpp"
 #include "app/render_command.hpp"
 #include "app/score_command.hpp"
 #include "app/stats_command.hpp"
@@ -29,6 +30,7 @@ int run_cli(int argc, char** argv) {
   add_render_command(app, exit_code);
   add_view_command(app, exit_code);
   add_score_command(app, exit_code);
+  add_flight_command(app, exit_code);
   add_bench_command(app, exit_code);
 
   try {

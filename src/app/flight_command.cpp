@@ -1,0 +1,98 @@
+#include "app/flight_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "app/flight_report.hpp"
+#include "app/terminal_diagnostics.hpp"
+#include "app/track_options.hpp"
+
+namespace trailray::app {
+namespace {
+
+struct FlightArgs {
+  std::vector<std::string> files;
+  bool json = false;
+  track::ReadOptions read;
+};
+
+int run_flight(const FlightArgs& a) {
+  TerminalDiagnostics diagnostics;
+  const track::flight::FlightOptions options;
+  nlohmann::json doc;
+  doc["files"] = nlohmann::json::array();
+  int failed = 0;
+  for (std::size_t i = 0; i < a.files.size(); ++i) {
+    const FileFlights f = analyse_flight_file(a.files[i], a.read, options);
+    for (const auto& w : f.warnings) diagnostics.warning(w);
+    if (f.error) {
+      diagnostics.error(*f.error);
+      ++failed;
+    } else if (f.tracks.empty()) {
+      diagnostics.warning(fmt::format("{}: no tracks (flight analysis needs a track with times)", f.path));
+    }
+    if (a.json) {
+      doc["files"].push_back(flight_file_json(f));
+    } else if (!f.error && !f.tracks.empty()) {
+      fmt::print("{}{}", i > 0 ? "\n" : "", flight_file_text(f));
+      std::fflush(stdout);
+    }
+  }
+  if (a.json) {
+    doc["settings"] = flight_settings_json(options);
+    std::cout << doc.dump(2) << '\n';
+  }
+  if (failed > 0 && a.files.size() > 1)
+    diagnostics.error(fmt::format("{} of {} files could not be read", failed, a.files.size()));
+  return failed > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+void add_flight_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<FlightArgs>();
+  CLI::App* cmd =
+      app.add_subcommand("flight", "Thermals, glides and wind of a flight: take-off, landing and phases per flight");
+  cmd->footer(
+      "Per track, every flight (take-off to landing; several in one file when the pilot landed in\n"
+      "between) with: a summary (duration, distance, share of time circling, mean thermal climb\n"
+      "weighted by time, best 20 s climb, best glide = the highest L/D among glides of at least\n"
+      "2 km that lost at least 100 m), a table of thermals (entry and exit altitude, gain, mean and\n"
+      "best 20 s climb, turns, and the wind their drift implies: FROM that direction, as in weather\n"
+      "reports), a table of glides (distance along the track, height lost, L/D, speed) and the wind\n"
+      "per 500 m altitude band (duration-weighted mean of the thermals in the band).\n"
+      "How: take-off and landing from 10 s averages of ground and vertical speed (as `score` does,\n"
+      "then trimmed to where the pilot stops walking); circling where the heading turns by 7 deg/s\n"
+      "or more over 20 s (until below 4 deg/s), for at least 40 s; the wind from the drift of the\n"
+      "centres of the full circles. Altitudes are the points' elevations (--igc-altitude picks\n"
+      "which IGC altitude). Times are UTC. A track without times or elevations has no flight.\n"
+      "\n"
+      "--json prints one document: {\"files\": [{\"path\", \"format\", \"warnings\", \"error\" (when\n"
+      "unreadable), \"tracks\": [{\"name\", \"index\", \"points\", \"points_used\", \"has_altitude\",\n"
+      "\"note\" (why no flight, or null), \"flights\": [{\"takeoff\": PLACE, \"landing\": PLACE,\n"
+      "\"duration_s\", \"distance_m\", \"max_alt_m\", \"min_alt_m\", \"circling_share\" (0..1),\n"
+      "\"circling_s\", \"circling_left_s\", \"circling_right_s\", \"gliding_s\", \"unknown_s\",\n"
+      "\"thermal_count\", \"mean_thermal_climb_ms\", \"best_climb_ms\", \"best_glide\" and\n"
+      "\"longest_glide\" (indexes into glides, or null), \"phases\": [{\"phase\", \"start\", \"end\",\n"
+      "\"duration_s\", \"start_point\", \"end_point\"}], \"thermals\": [{\"start\": PLACE, \"end\": PLACE,\n"
+      "\"direction\" (left|right), \"duration_s\", \"entry_alt_m\", \"exit_alt_m\", \"gain_m\",\n"
+      "\"mean_climb_ms\", \"best_climb_ms\", \"turns\", \"drift_m\", \"drift_to_deg\", \"wind_speed_ms\",\n"
+      "\"wind_from_deg\", \"wind_from_centres\", \"phase\"}], \"glides\": [{\"start\": PLACE, \"end\": PLACE,\n"
+      "\"duration_s\", \"distance_m\", \"height_lost_m\", \"glide_ratio\" (null when it lost no height),\n"
+      "\"mean_speed_ms\", \"phase\"}], \"wind\": [{\"floor_m\", \"ceiling_m\", \"speed_ms\", \"from_deg\",\n"
+      "\"thermals\"}]}]}]}], \"settings\": {the analysis constants}}, with PLACE = {\"time\" (ISO 8601\n"
+      "UTC), \"lat\", \"lon\", \"alt_m\", \"point\" (index among the track's points)}; unknown figures are null.\n"
+      "Exit status: 0 all read, 1 when any file could not be read, 2 for a usage error.");
+  cmd->add_option("TRACK", args->files,
+                  "Track files: IGC (or GPX, TCX, FIT, KML, GeoJSON with times), - for standard input")
+      ->required()
+      ->type_name("FILE");
+  cmd->add_flag("--json", args->json, "Print one JSON document instead of the report");
+  add_read_options(*cmd, args->read);
+  cmd->callback([args, &exit_code] { exit_code = run_flight(*args); });
+}
+
+}  // namespace trailray::app
