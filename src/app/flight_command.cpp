@@ -63,7 +63,7 @@ void add_flight_command(CLI::App& app, int& exit_code) {
       "2 km that lost at least 100 m), a table of thermals (entry and exit altitude, gain, mean and\n"
       "best 20 s climb, turns, and the wind their drift implies: FROM that direction, as in weather\n"
       "reports), a table of glides (distance along the track, height lost, L/D, speed) and the wind\n"
-      "per 500 m altitude band (duration-weighted mean of the thermals in the band).\n"
+      "per 500 m altitude band (duration-weighted mean of the thermals in the band of 2 turns or more).\n"
       "How: take-off and landing from 10 s averages of ground and vertical speed (as `score` does,\n"
       "then trimmed to where the pilot stops walking); circling where the heading turns by 7 deg/s\n"
       "or more over 20 s (until below 4 deg/s), for at least 40 s; the wind from the drift of the\n"

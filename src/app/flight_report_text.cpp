@@ -117,7 +117,7 @@ std::string glide_table(const fl::Flight& f) {
 
 std::string wind_table(const fl::Flight& f) {
   if (f.wind.empty()) return {};
-  std::string s = "\n  wind by altitude (thermals by their mean altitude, weighted by duration)\n";
+  std::string s = "\n  wind by altitude (thermals of 2 turns or more, by their mean altitude, weighted by duration)\n";
   for (const fl::WindBand& w : f.wind)
     s += fmt::format("  {:>13}  {:<22}  {} thermal{}\n", fmt::format("{:.0f}-{:.0f} m", w.floor_m, w.ceiling_m),
                      wind(w.speed_ms, w.from_deg), w.thermals, w.thermals == 1 ? "" : "s");

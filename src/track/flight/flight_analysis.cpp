@@ -13,7 +13,7 @@ namespace {
 using detail::Sample;
 
 // The duration-weighted mean wind vector of the thermals in each altitude band (by the thermal's
-// mean altitude).
+// mean altitude), of those whose wind came from their circle centres.
 std::vector<WindBand> wind_bands(const std::vector<Thermal>& thermals, double band_m) {
   struct Sum {
     double e = 0, n = 0, w = 0;
@@ -22,7 +22,9 @@ std::vector<WindBand> wind_bands(const std::vector<Thermal>& thermals, double ba
   std::map<long, Sum> bands;
   for (const Thermal& t : thermals) {
     const double mid = 0.5 * (t.start.alt + t.end.alt);
-    if (!std::isfinite(mid) || !std::isfinite(t.wind_speed_ms) || !(t.duration_s > 0) || !(band_m > 0)) continue;
+    if (!t.wind_from_centres || !std::isfinite(mid) || !std::isfinite(t.wind_speed_ms) || !(t.duration_s > 0) ||
+        !(band_m > 0))
+      continue;
     const double to = t.drift_to_deg * geo::wgs84::kRadPerDeg;
     Sum& s = bands[static_cast<long>(std::floor(mid / band_m))];
     s.e += t.wind_speed_ms * std::sin(to) * t.duration_s;

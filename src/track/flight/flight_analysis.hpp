@@ -17,7 +17,7 @@
 //   spans a gap (segment boundary or a step over `max_gap_s`) the phase is Unknown.
 // - Wind from a thermal: the centre of every full turn (the time-mean of the positions over 360
 //   degrees of heading, the air mass's circle centre) is fitted by a straight line in time; its
-//   velocity is the wind. A thermal of less than 1.5 full turns uses its start-to-end
+//   velocity is the wind. A thermal of less than 2 full turns uses its start-to-end
 //   displacement over its duration instead (wind_from_centres false; less exact).
 //
 // Phases tile each flight: phase k runs from sample `start` to sample `end`, and phase k+1
@@ -89,6 +89,8 @@ struct Glide {
   std::size_t phase = 0;            // index into Flight::phases
 };
 
+// The wind in an altitude band: from the thermals whose mean altitude is in it and whose wind
+// came from their circle centres (wind_from_centres; the start-to-end estimate is too rough).
 struct WindBand {
   double floor_m = 0.0, ceiling_m = 0.0;  // altitude band of the thermals' mean altitude
   double speed_ms = 0.0;                  // length of the duration-weighted mean wind vector

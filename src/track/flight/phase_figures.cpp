@@ -105,7 +105,7 @@ Thermal thermal_figures(const std::vector<Sample>& s, const Run& run, const std:
     c[k] = sign * (heading_sum[run.first + k - flight_first] - heading_sum[run.first - flight_first]);
   t.turns = std::max(0.0, c.back() / 360.0);
   double ve = 0, vn = 0;
-  if (t.turns >= 1.5 && fit_velocity(turn_centres(s, run, c), 0.0, ve, vn)) {
+  if (t.turns >= 2.0 && fit_velocity(turn_centres(s, run, c), 0.0, ve, vn)) {
     t.wind_from_centres = true;
   } else if (t.duration_s > 0) {
     const EastNorth d = east_north(a.lat, a.lon, b.lat, b.lon);
