@@ -136,7 +136,7 @@ std::string no_flight_reason(const fl::FlightAnalysis& a) {
   if (a.points_used == 0) return "no times: flight analysis needs timed points";
   if (!a.has_altitude) return "no elevation: take-off and landing are found from the climb";
   if (a.points_used < 2) return "a single timed point";
-  return "no flight found (never fast enough for long enough: a walk, a drive or ground time only)";
+  return "no flight found (never fast and climbing or sinking for a minute: ground time or a walk)";
 }
 
 nlohmann::json flight_file_json(const FileFlights& f) {
