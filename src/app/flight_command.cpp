@@ -73,6 +73,7 @@ void add_flight_command(CLI::App& app, int& exit_code) {
       "\n"
       "--json prints one document: {\"files\": [{\"path\", \"format\", \"warnings\", \"error\" (when\n"
       "unreadable), \"tracks\": [{\"name\", \"index\", \"points\", \"points_used\", \"has_altitude\",\n"
+      "\"fix_interval_s\" (median time between fixes),\n"
       "\"note\" (why no flight, or null), \"flights\": [{\"takeoff\": PLACE, \"landing\": PLACE,\n"
       "\"duration_s\", \"distance_m\", \"max_alt_m\", \"min_alt_m\", \"circling_share\" (0..1),\n"
       "\"circling_s\", \"circling_left_s\", \"circling_right_s\", \"gliding_s\", \"unknown_s\",\n"

@@ -1,7 +1,7 @@
 // JSON shape of `trailray flight --json` (also in its --help). Times are ISO 8601 UTC; NaN
 // figures (no altitude, a glide that lost no height) are null.
 //   {"files": [{"path", "format", "warnings": [...], "error" (only when unreadable),
-//     "tracks": [{"name", "index", "points", "points_used", "has_altitude",
+//     "tracks": [{"name", "index", "points", "points_used", "has_altitude", "fix_interval_s" (median),
 //       "note" (why there is no flight, or null),
 //       "flights": [{"takeoff": PLACE, "landing": PLACE, "duration_s", "distance_m",
 //         "max_alt_m", "min_alt_m", "circling_share", "circling_s", "circling_left_s",
@@ -22,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "track/io/load.hpp"
@@ -126,8 +127,24 @@ FileFlights analyse_flight_file(const std::string& path, const track::ReadOption
   }
   f.format = r.file.format;
   for (std::size_t i = 0; i < r.file.tracks.size(); ++i)
-    f.tracks.push_back({r.file.tracks[i].name, i, fl::analyse_flights(r.file.tracks[i], options)});
+    f.tracks.push_back({r.file.tracks[i].name, i, fl::analyse_flights(r.file.tracks[i], options),
+                        median_fix_interval(r.file.tracks[i])});
   return f;
+}
+
+double median_fix_interval(const track::Track& t) {
+  std::vector<double> steps;
+  double last = track::kMissing;
+  for (const track::Segment& seg : t.segments)
+    for (const track::TrackPoint& p : seg.points) {
+      if (!p.has_time()) continue;
+      if (p.time > last) steps.push_back(p.time - last);
+      if (!(p.time <= last)) last = p.time;
+    }
+  if (steps.empty()) return 0.0;
+  auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+  std::nth_element(steps.begin(), mid, steps.end());
+  return *mid;
 }
 
 std::string no_flight_reason(const fl::FlightAnalysis& a) {
@@ -153,6 +170,7 @@ nlohmann::json flight_file_json(const FileFlights& f) {
     tj["points"] = t.analysis.points;
     tj["points_used"] = t.analysis.points_used;
     tj["has_altitude"] = t.analysis.has_altitude;
+    tj["fix_interval_s"] = num(t.fix_interval_s);
     const std::string note = no_flight_reason(t.analysis);
     tj["note"] = note.empty() ? nlohmann::json(nullptr) : nlohmann::json(note);
     tj["flights"] = nlohmann::json::array();

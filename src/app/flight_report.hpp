@@ -17,6 +17,7 @@ struct TrackFlights {
   std::string name;
   std::size_t index = 0;  // the track's position in the file
   track::flight::FlightAnalysis analysis;
+  double fix_interval_s = 0.0;  // median time between consecutive timed points (0: fewer than two)
 };
 
 struct FileFlights {
@@ -30,6 +31,13 @@ struct FileFlights {
 // Reads one file and analyses every track of it.
 FileFlights analyse_flight_file(const std::string& path, const track::ReadOptions& read,
                                 const track::flight::FlightOptions& options = {});
+
+// The median time step between consecutive timed points of a track; 0 with fewer than two.
+double median_fix_interval(const track::Track& t);
+
+// Fixes this far apart or more cannot resolve a thermalling circle (20 to 30 s): the report
+// says that circling is undercounted.
+inline constexpr double kCoarseFixInterval = 7.0;
 
 // Why a track has no flight ("no times: ..."), or an empty string when it has one.
 std::string no_flight_reason(const track::flight::FlightAnalysis& a);

@@ -138,6 +138,11 @@ std::string flight_file_text(const FileFlights& f) {
       continue;
     }
     s += fmt::format("{} flight{}\n", flights.size(), flights.size() == 1 ? "" : "s");
+    if (t.fix_interval_s >= kCoarseFixInterval)
+      s += fmt::format(
+          "note: fixes {:.0f} s apart: circles of under about {:.0f} s cannot be resolved: circling may be "
+          "undercounted\n",
+          t.fix_interval_s, 3 * t.fix_interval_s);
     for (std::size_t i = 0; i < flights.size(); ++i) {
       const fl::Flight& flight = flights[i];
       s += fmt::format("\nflight {} of {}: {}, {} to {} UTC, {}\n", i + 1, flights.size(), date(flight.takeoff.time),

@@ -20,10 +20,12 @@ namespace {
 
 std::string binary() { return shell_quote(TRAILRAY_BINARY); }
 
-// The simulated fixes as an IGC log (GNSS and pressure altitude alike, or pressure 0).
-std::string igc_of(const SyntheticFlight& sim, bool with_pressure = true) {
+// The simulated fixes as an IGC log (GNSS and pressure altitude alike, or pressure 0), every
+// `every`th fix.
+std::string igc_of(const SyntheticFlight& sim, bool with_pressure = true, std::size_t every = 1) {
   std::string s = "AXXX001\r\nHFDTE150619\r\n";
-  for (const auto& p : sim.points()) {
+  for (std::size_t i = 0; i < sim.points().size(); i += every) {
+    const auto& p = sim.points()[i];
     const auto secs = static_cast<long>(p.time) % 86400;
     const long latm = std::lround(std::fabs(p.lat) * 60000), lonm = std::lround(std::fabs(p.lon) * 60000);
     const long alt = std::lround(p.ele);
@@ -186,6 +188,17 @@ TEST(FlightCli, IgcAltitudeOptionIsUsed) {
   EXPECT_TRUE(track["flights"].empty());
   EXPECT_FALSE(track["has_altitude"].get<bool>());
   EXPECT_NE(track["note"].get<std::string>().find("no elevation"), std::string::npos);
+}
+
+TEST(FlightCli, CoarseFixesAreNoted) {
+  TempFile f("coarse.igc", igc_of(two_thermals(), true, 10));
+  auto r = run_command(binary() + " flight " + shell_quote(f.str()));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("note: fixes 10 s apart"), std::string::npos) << r.out;
+  auto j = run_command(binary() + " flight --json " + shell_quote(f.str()));
+  EXPECT_EQ(json::parse(j.out)["files"][0]["tracks"][0]["fix_interval_s"], 10.0);
+  TempFile fine("fine.igc", igc_of(two_thermals()));
+  EXPECT_EQ(run_command(binary() + " flight " + shell_quote(fine.str())).out.find("note:"), std::string::npos);
 }
 
 TEST(FlightCli, UnreadableFileIsNamed) {
