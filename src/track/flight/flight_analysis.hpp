@@ -14,7 +14,8 @@
 //   |rate| >= `circling_exit_deg_s` (hysteresis); positive = clockwise = circling right. Circling
 //   shorter than `min_thermal_s` is gliding (an S-turn or a single 360 is not a thermal); gliding
 //   shorter than `min_glide_s` between two circlings belongs to the thermal. Where the window
-//   spans a gap (segment boundary or a step over `max_gap_s`) the phase is Unknown.
+//   spans a gap (segment boundary, or a step over `max_gap_s` and over 3 times the median step)
+//   the phase is Unknown.
 // - Wind from a thermal: the centre of every full turn (the time-mean of the positions over 360
 //   degrees of heading, the air mass's circle centre) is fitted by a straight line in time; its
 //   velocity is the wind. A thermal of less than 2 full turns uses its start-to-end
@@ -42,7 +43,7 @@ struct FlightOptions {
   double circling_exit_deg_s = 4.0;      // |turn rate| below which circling ends
   double min_thermal_s = 40.0;           // shorter circling is gliding
   double min_glide_s = 20.0;             // shorter gliding between two circlings is thermalling
-  double max_gap_s = 15.0;               // a longer step between fixes is a gap (phase Unknown)
+  double max_gap_s = 15.0;               // a longer step (and over 3 median steps) is a gap: Unknown
   double best_climb_window_s = 20.0;     // Thermal::best_climb_ms is the best climb over this long
   double best_glide_min_m = 2000.0;      // Flight::best_glide considers glides at least this long
   double best_glide_min_loss_m = 100.0;  // ... that lost at least this much height

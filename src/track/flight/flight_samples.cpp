@@ -1,5 +1,6 @@
 #include "track/flight/flight_samples.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace trailray::track::flight::detail {
@@ -23,7 +24,7 @@ Samples collect_samples(const Track& track, double max_gap_s) {
       s.lat = p.lat;
       s.lon = p.lon;
       s.point = point;
-      s.gap_before = !out.list.empty() && (new_segment || p.time - out.list.back().time > max_gap_s);
+      s.gap_before = !out.list.empty() && new_segment;
       new_segment = false;
       if (p.has_ele() && std::isfinite(p.ele)) {
         if (!out.has_altitude)
@@ -35,6 +36,19 @@ Samples collect_samples(const Track& track, double max_gap_s) {
       out.list.push_back(s);
     }
   }
+  // A logger that records every 20 s is slow, not gappy: a gap is a step over max_gap_s and
+  // over three times the median step.
+  std::vector<double> steps;
+  steps.reserve(out.list.size());
+  for (std::size_t k = 1; k < out.list.size(); ++k) steps.push_back(out.list[k].time - out.list[k - 1].time);
+  double gap = max_gap_s;
+  if (!steps.empty()) {
+    auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), mid, steps.end());
+    gap = std::max(gap, 3.0 * *mid);
+  }
+  for (std::size_t k = 1; k < out.list.size(); ++k)
+    if (out.list[k].time - out.list[k - 1].time > gap) out.list[k].gap_before = true;
   return out;
 }
 

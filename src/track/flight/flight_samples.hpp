@@ -16,7 +16,7 @@ struct Sample {
   double lat = 0.0, lon = 0.0;
   double alt = kMissing;    // NaN only when the whole track has no elevation
   std::size_t point = 0;    // Place::point
-  bool gap_before = false;  // a segment boundary or a step over max_gap_s before this sample
+  bool gap_before = false;  // a segment boundary or a gap (see collect_samples) before this sample
 };
 
 struct Samples {
@@ -25,7 +25,8 @@ struct Samples {
 };
 
 // Points with a time, a finite position and a time after the previous sample's, in track order.
-// Missing elevations take the nearest earlier one (the first known before any).
+// Missing elevations take the nearest earlier one (the first known before any). A step longer
+// than max_gap_s and than 3 times the median step is a gap.
 Samples collect_samples(const Track& track, double max_gap_s);
 
 Place place_of(const Sample& s);

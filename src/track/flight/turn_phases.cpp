@@ -65,14 +65,16 @@ TurnPhases turn_phases(const std::vector<Sample>& s, std::size_t first, std::siz
     while (lo < k && s[first + lo].time < t - half) ++lo;
     if (hi < k) hi = k;
     while (hi + 1 < n && s[first + hi + 1].time <= t + half) ++hi;
-    const double span = s[first + hi].time - s[first + lo].time;
+    // Fixes further apart than half the window: the rate from the neighbours at least.
+    const std::size_t a = lo == k && k > 0 ? k - 1 : lo, b = hi == k && k + 1 < n ? k + 1 : hi;
+    const double span = s[first + b].time - s[first + a].time;
     // A gap longer than half the window is in no window: the fixes on either side are unknown.
     const bool next_gap = k + 1 < n && s[first + k + 1].gap_before;
-    if (gaps[hi] != gaps[lo] || span <= 0.0 || (k > 0 && s[first + k].gap_before) || next_gap) {
+    if (gaps[b] != gaps[a] || span <= 0.0 || (k > 0 && s[first + k].gap_before) || next_gap) {
       state[k] = current = Phase::Unknown;
       continue;
     }
-    const double rate = (sum[hi] - sum[lo]) / span;
+    const double rate = (sum[b] - sum[a]) / span;
     const Phase dir = rate > 0 ? Phase::CirclingRight : Phase::CirclingLeft;
     if (std::fabs(rate) >= o.circling_enter_deg_s)
       current = dir;

@@ -268,3 +268,25 @@ TEST(FlightSynthetic, WalkIsNoFlight) {
   sim.ground(60);
   EXPECT_TRUE(fl::analyse_flights(sim.track()).flights.empty());
 }
+
+// A logger that records every 20 s is slow, not gappy: no Unknown phase, and a 60 s hole in it
+// still is one.
+TEST(FlightSynthetic, SparseFixesAreNotGaps) {
+  SyntheticFlight sim;
+  sim.ground(200);
+  sim.glide(600, 0.0);
+  sim.circle(300, true, 2.0, 80.0);
+  sim.glide(600, 90.0);
+  sim.ground(200);
+  trailray::track::Track sparse;
+  sparse.segments.emplace_back();
+  const auto& pts = sim.points();
+  for (std::size_t i = 0; i < pts.size(); i += 20)
+    if (i < 900 || i > 960) sparse.segments[0].points.push_back(pts[i]);  // one hole of 80 s
+  const fl::FlightAnalysis a = fl::analyse_flights(sparse);
+  ASSERT_EQ(a.flights.size(), 1u);
+  expect_tiling(a.flights[0]);
+  EXPECT_GT(a.flights[0].unknown_s, 0.0);
+  EXPECT_LE(a.flights[0].unknown_s, 80.0 + 2 * 20.0);
+  EXPECT_GT(a.flights[0].gliding_s, 900.0);
+}
