@@ -36,6 +36,7 @@ int run_render(const RenderArgs& a) {
   scene.terrain = &terrain;
   scene.tracks = &tracks.tracks;
   scene.waypoints = &tracks.waypoints;
+  if (!tracks.volumes.volumes.empty()) scene.volumes = &tracks.volumes;
   scene.style = style;
   scene.color_range = scene::color_range(tracks.tracks, style);
   scene.sun_time_unix_s = sun_time(time, tracks.recorded);

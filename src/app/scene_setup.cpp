@@ -11,6 +11,7 @@
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
 #include "track/scoring/score.hpp"
+#include "track/task/task_reader.hpp"
 
 namespace trailray::app {
 
@@ -45,7 +46,26 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
     for (scene::Track& t : drawing.tracks) out.tracks.add(std::move(t));
     for (scene::Waypoint& w : drawing.waypoints) out.waypoints.points.push_back(std::move(w));
   }
+  if (!waypoints.task_file.empty()) {
+    scene::TaskDrawing drawing =
+        task_drawing_of(waypoints.task_file, scene::highest_recorded_m(out.tracks), style, build, placing, diagnostics);
+    for (scene::Track& t : drawing.tracks) out.tracks.add(std::move(t));
+    for (scene::Waypoint& w : drawing.waypoints) out.waypoints.points.push_back(std::move(w));
+    out.volumes = std::move(drawing.volumes);
+  }
   return out;
+}
+
+scene::TaskDrawing task_drawing_of(const std::string& task_file, double highest_m, const scene::TrackStyle& style,
+                                   const scene::TrackBuildOptions& build, const scene::WaypointBuildOptions& placing,
+                                   scene::Diagnostics& diagnostics) {
+  const track::task::TaskReadResult read = track::task::read_task_file(task_file);
+  for (const auto& w : read.warnings) diagnostics.warning(w.to_string());
+  if (read.error) throw std::runtime_error("--task: " + read.error->to_string());
+  const track::task::TaskDistances distances = track::task::measure_task(*read.task);
+  // 300 m above the highest point flown: the cylinders stand clear above the flights.
+  const double ceiling = std::isnan(highest_m) ? highest_m : highest_m + 300.0;
+  return scene::build_task_drawing(*read.task, distances, task_file, ceiling, style, build, placing, diagnostics);
 }
 
 scene::ScoredRouteDrawing scored_route_of(const std::vector<std::string>& paths, const std::string& rules_name,

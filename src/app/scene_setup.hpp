@@ -14,6 +14,7 @@
 #include "scene/framing.hpp"
 #include "scene/scored_route.hpp"
 #include "scene/style.hpp"
+#include "scene/task_volumes.hpp"
 #include "scene/track_building.hpp"
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
@@ -38,6 +39,7 @@ struct SceneTracks {
   scene::TrackSet tracks;
   scene::RecordedPoints recorded;  // the files' points as recorded (the sun's day, the lowest height)
   scene::WaypointSet waypoints;    // the files' waypoints, then the places of --labels
+  scene::VolumeSet volumes;        // --task: the task's cylinders
 };
 // Reads every file (the first that cannot be read throws, naming it) and builds its tracks
 // (build_tracks' errors), points without an elevation on the lowest recorded height where there
@@ -53,6 +55,14 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
 scene::ScoredRouteDrawing scored_route_of(const std::vector<std::string>& paths, const std::string& rules_name,
                                           const scene::TrackStyle& style, const scene::TrackBuildOptions& build,
                                           const scene::WaypointBuildOptions& placing, scene::Diagnostics& diagnostics);
+
+// --task: the task of `task_file` read, measured and built for the scene; its cylinders reach
+// 300 m above `highest_m` (the tracks' highest point; NaN: 1500 m above the ground). Throws
+// std::runtime_error naming the file and the place when it cannot be read; its warnings go to
+// `diagnostics`.
+scene::TaskDrawing task_drawing_of(const std::string& task_file, double highest_m, const scene::TrackStyle& style,
+                                   const scene::TrackBuildOptions& build, const scene::WaypointBuildOptions& placing,
+                                   scene::Diagnostics& diagnostics);
 
 // The sun's time: --time when given, else the tracks' day at noon (scene::default_sun_time).
 double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded);

@@ -54,6 +54,7 @@ int run_view(const ViewArgs& a) {
   o.no_waypoints = a.waypoints.no_waypoints;
   o.score = a.waypoints.score;
   o.score_rules = a.waypoints.score_rules;
+  o.task_file = a.waypoints.task_file;
   return view::run_viewer(o);
 }
 

@@ -17,6 +17,12 @@ void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
   command.add_flag("--score", args.score,
                    "Score the first IGC track as `trailray score` does and draw it: the turnpoints as pins, the "
                    "scored legs as a line on the ground, the closing gap of a closed route in its own colour");
+  command
+      .add_option("--task", args.task_file,
+                  "A competition task (XCTrack .xctsk, its XCTSK: QR text, or an IGC file's C-record declaration) "
+                  "drawn: the turnpoint cylinders (from the ground to 300 m above the highest track point), the "
+                  "optimised route on the ground, the turnpoints as pins")
+      ->type_name("FILE");
   command.add_option("--score-rules", args.score_rules, "The rule set --score uses")
       ->type_name("NAME")
       ->check(CLI::IsMember(track::scoring::rule_set_names()))

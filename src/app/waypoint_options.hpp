@@ -2,7 +2,8 @@
 // Waypoints and place labels, spelled the same in `render` and `view`: --labels FILE (place
 // labels from a CSV, GPX or GeoJSON points file, repeatable) and --no-waypoints (no pins and no
 // labels for the files' waypoints or the places); --score [--score-rules NAME] (the XC score of the
-// first IGC track drawn: turnpoint pins, the legs on the ground, the closing gap).
+// first IGC track drawn: turnpoint pins, the legs on the ground, the closing gap); --task FILE (a
+// competition task: its cylinders, the optimised route on the ground, the turnpoints as pins).
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,7 @@ struct WaypointArgs {
   bool no_waypoints = false;
   bool score = false;                    // --score: the first IGC track's XC score drawn
   std::string score_rules = "xcontest";  // --score-rules
+  std::string task_file;                 // --task: a task drawn (empty: none)
 };
 
 void add_waypoint_options(CLI::App& command, WaypointArgs& args);

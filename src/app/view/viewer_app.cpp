@@ -78,6 +78,14 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
     for (scene::Track& t : drawing.tracks) model_.tracks.add(std::move(t));
     for (scene::Waypoint& w : drawing.waypoints) model_.waypoints.points.push_back(std::move(w));
   }
+  if (!o.task_file.empty()) {
+    scene::TaskDrawing drawing = task_drawing_of(o.task_file, scene::highest_recorded_m(model_.tracks), o.style.tracks,
+                                                 {sources_.heights.get(), neutral_, o.analysis},
+                                                 {sources_.heights.get(), neutral_}, diagnostics_);
+    for (scene::Track& t : drawing.tracks) model_.tracks.add(std::move(t));
+    for (scene::Waypoint& w : drawing.waypoints) model_.waypoints.points.push_back(std::move(w));
+    model_.volumes = std::move(drawing.volumes);
+  }
   controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
@@ -113,6 +121,7 @@ scene::Scene ViewerApp::scene() {
   s.terrain = &terrain_;
   s.tracks = &model_.tracks;
   s.waypoints = &model_.waypoints;
+  if (!model_.volumes.volumes.empty()) s.volumes = &model_.volumes;
   s.style = model_.settings.style;
   s.color_range = model_.color_range();
   s.sun_time_unix_s = sun_unix_time();

@@ -40,6 +40,7 @@ struct ViewerOptions {
   bool no_waypoints = false;             // --no-waypoints: pins and labels hidden (the panel shows them again)
   bool score = false;                    // --score: the first IGC track's XC score drawn
   std::string score_rules = "xcontest";  // --score-rules
+  std::string task_file;                 // --task: a task drawn
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when

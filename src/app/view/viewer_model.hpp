@@ -14,6 +14,7 @@
 #include "app/view/replay.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
+#include "scene/volumes.hpp"
 #include "scene/waypoints.hpp"
 #include "track/color_values.hpp"
 #include "track/statistics.hpp"
@@ -85,6 +86,7 @@ class ColorRangeCache {
 struct ViewerModel {
   scene::TrackSet tracks;
   scene::WaypointSet waypoints;  // the files' waypoints (as they load), then the places of --labels
+  scene::VolumeSet volumes;      // --task: the task's cylinders
   ViewerSettings settings;
   HoverState hover;
   ChartSelection selection;

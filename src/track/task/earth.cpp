@@ -16,7 +16,8 @@ constexpr double kRad = 3.14159265358979323846 / 180.0;
 double haversine_m(const geo::LatLon& a, const geo::LatLon& b) {
   const double p1 = a.lat * kRad, p2 = b.lat * kRad;
   const double dp = p2 - p1, dl = (b.lon - a.lon) * kRad;
-  const double h = std::sin(dp / 2) * std::sin(dp / 2) + std::cos(p1) * std::cos(p2) * std::sin(dl / 2) * std::sin(dl / 2);
+  const double h =
+      std::sin(dp / 2) * std::sin(dp / 2) + std::cos(p1) * std::cos(p2) * std::sin(dl / 2) * std::sin(dl / 2);
   return 2.0 * kFaiSphereRadiusM * std::asin(std::sqrt(std::fmin(1.0, h)));
 }
 
@@ -46,7 +47,8 @@ double Earth::azimuth_deg(const geo::LatLon& from, const geo::LatLon& to) const 
   if (from.lat == to.lat && from.lon == to.lon) return 0.0;
   if (model_ == EarthModel::FaiSphere) {
     const double p1 = from.lat * kRad, p2 = to.lat * kRad, dl = (to.lon - from.lon) * kRad;
-    return std::atan2(std::sin(dl) * std::cos(p2), std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl)) /
+    return std::atan2(std::sin(dl) * std::cos(p2),
+                      std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl)) /
            kRad;
   }
   double s12 = 0.0, azi1 = 0.0, azi2 = 0.0;

@@ -81,7 +81,8 @@ TaskReadResult read_igc_declaration(std::string_view text, const std::string& fi
     DeclaredPoint p;
     p.line = line_number;
     if (const std::size_t column = parse_point(line, p); column != 0) {
-      result.error = Diagnostic{file, {line_number, static_cast<std::int64_t>(column), -1},
+      result.error = Diagnostic{file,
+                                {line_number, static_cast<std::int64_t>(column), -1},
                                 "C record: expected DDMMmmmN DDDMMmmmE and a name"};
       return result;
     }
@@ -92,10 +93,11 @@ TaskReadResult read_igc_declaration(std::string_view text, const std::string& fi
     return result;
   }
   if (declared_count >= 0 && static_cast<long long>(points.size()) != declared_count + 4)
-    result.warnings.push_back(Diagnostic{
-        file, {header_line, 24, -1},
-        "the declaration names " + std::to_string(declared_count) + " turnpoints but has " +
-            std::to_string(points.size()) + " points (take-off, start, turnpoints, finish, landing expected)"});
+    result.warnings.push_back(Diagnostic{file,
+                                         {header_line, 24, -1},
+                                         "the declaration names " + std::to_string(declared_count) +
+                                             " turnpoints but has " + std::to_string(points.size()) +
+                                             " points (take-off, start, turnpoints, finish, landing expected)"});
 
   // Roles by place: the first is the take-off, the second the start, the last the landing and
   // the one before it the finish; with fewer than 4 points, start and finish only.
@@ -105,19 +107,25 @@ TaskReadResult read_igc_declaration(std::string_view text, const std::string& fi
   for (std::size_t i = 0; i < n; ++i) {
     Role role = Role::Turnpoint;
     if (n >= 4) {
-      if (i == 0) role = Role::Takeoff;
-      else if (i == 1) role = Role::Sss;
-      else if (i == n - 2) role = Role::Goal;
-      else if (i == n - 1) continue;  // the landing is not part of the task
+      if (i == 0)
+        role = Role::Takeoff;
+      else if (i == 1)
+        role = Role::Sss;
+      else if (i == n - 2)
+        role = Role::Goal;
+      else if (i == n - 1)
+        continue;  // the landing is not part of the task
     } else {
-      if (i == 0) role = Role::Sss;
-      else if (i == n - 1) role = Role::Goal;
+      if (i == 0)
+        role = Role::Sss;
+      else if (i == n - 1)
+        role = Role::Goal;
     }
     const DeclaredPoint& p = points[i];
     if (!p.given) {
       if (role != Role::Takeoff)
-        result.warnings.push_back(Diagnostic{file, {p.line, 2, -1}, std::string("the ") + role_name(role) +
-                                                                        " has no position (zeros): left out"});
+        result.warnings.push_back(Diagnostic{
+            file, {p.line, 2, -1}, std::string("the ") + role_name(role) + " has no position (zeros): left out"});
       continue;
     }
     Turnpoint tp;

@@ -21,20 +21,28 @@ int Task::ess_index() const {
 
 const char* role_name(Role role) {
   switch (role) {
-    case Role::Takeoff: return "takeoff";
-    case Role::Sss: return "SSS";
-    case Role::Turnpoint: return "turnpoint";
-    case Role::Ess: return "ESS";
-    case Role::Goal: return "goal";
+    case Role::Takeoff:
+      return "takeoff";
+    case Role::Sss:
+      return "SSS";
+    case Role::Turnpoint:
+      return "turnpoint";
+    case Role::Ess:
+      return "ESS";
+    case Role::Goal:
+      return "goal";
   }
   return "turnpoint";
 }
 
 const char* format_name(TaskFormat format) {
   switch (format) {
-    case TaskFormat::XctskJson: return "XCTrack task (JSON)";
-    case TaskFormat::XctskQr: return "XCTrack task (QR form, version 2)";
-    case TaskFormat::IgcDeclaration: return "IGC task declaration (C records)";
+    case TaskFormat::XctskJson:
+      return "XCTrack task (JSON)";
+    case TaskFormat::XctskQr:
+      return "XCTrack task (QR form, version 2)";
+    case TaskFormat::IgcDeclaration:
+      return "IGC task declaration (C records)";
   }
   return "task";
 }

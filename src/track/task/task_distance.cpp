@@ -220,7 +220,8 @@ TaskDistances measure_task(const Task& task, const OptimiseOptions& options) {
 
   const int sss = task.sss_index(), ess = task.ess_index();
   if (sss >= 0 && ess > sss)
-    out.speed_section_m = route.cumulative_m[static_cast<std::size_t>(ess)] - route.cumulative_m[static_cast<std::size_t>(sss)];
+    out.speed_section_m =
+        route.cumulative_m[static_cast<std::size_t>(ess)] - route.cumulative_m[static_cast<std::size_t>(sss)];
   return out;
 }
 

@@ -23,12 +23,12 @@
 namespace trailray::track::task {
 
 struct TaskRoute {
-  std::vector<geo::LatLon> points;    // one per turnpoint: where the route touches it
-  std::vector<double> cumulative_m;   // along the route from the first point to each point
+  std::vector<geo::LatLon> points;   // one per turnpoint: where the route touches it
+  std::vector<double> cumulative_m;  // along the route from the first point to each point
   double distance_m = 0.0;
-  int sweeps = 0;                     // of the optimisation, all starts together
-  double last_move_m = 0.0;           // the largest move of a point in the last sweep
-  bool converged = true;              // false: stopped at the sweep limit
+  int sweeps = 0;            // of the optimisation, all starts together
+  double last_move_m = 0.0;  // the largest move of a point in the last sweep
+  bool converged = true;     // false: stopped at the sweep limit
 };
 
 struct TaskDistances {

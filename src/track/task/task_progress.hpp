@@ -32,7 +32,7 @@ struct TurnpointReach {
   double time = kMissing;  // seconds since the epoch, UTC (interpolated)
   std::size_t fix = 0;     // the fix at or after the crossing
   double lat = 0.0, lon = 0.0;
-  bool exit = false;       // reached by going out of the cylinder
+  bool exit = false;  // reached by going out of the cylinder
 };
 
 struct TaskProgress {
@@ -40,12 +40,12 @@ struct TaskProgress {
   int reached = 0;                         // how many, in order, from the first
   double start_time = kMissing;            // race: the gate; elapsed time: the SSS crossing
   double ess_time = kMissing;
-  double speed_section_s = kMissing;       // ESS time minus start time
+  double speed_section_s = kMissing;  // ESS time minus start time
   double goal_time = kMissing;
   bool goal = false;
   bool goal_after_deadline = false;
-  double day_start = kMissing;             // midnight UTC of the flight's first fix: the day of the task's times
-  std::size_t fixes = 0;                   // fixes with a time that were checked
+  double day_start = kMissing;  // midnight UTC of the flight's first fix: the day of the task's times
+  std::size_t fixes = 0;        // fixes with a time that were checked
 };
 
 struct ProgressOptions {

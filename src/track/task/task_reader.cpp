@@ -19,7 +19,8 @@ TaskReadResult read_task_file(const std::string& path) {
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxTaskBytes) {
-      result.error = Diagnostic{path, {}, "bigger than " + std::to_string(kMaxTaskBytes >> 20) + " MiB: not a task file"};
+      result.error =
+          Diagnostic{path, {}, "bigger than " + std::to_string(kMaxTaskBytes >> 20) + " MiB: not a task file"};
       return result;
     }
   }

@@ -109,8 +109,10 @@ class Reader {
       while (i < s.size() && i - start < 2 && s[i] >= '0' && s[i] <= '9') value = value * 10 + (s[i++] - '0');
       if (i == start) break;
       parts[count++] = value;
-      if (i < s.size() && s[i] == ':') ++i;
-      else break;
+      if (i < s.size() && s[i] == ':')
+        ++i;
+      else
+        break;
     }
     if (count < 2 || i != s.size() || parts[0] > 24 || parts[1] > 59 || parts[2] > 60)
       return fail(path, "expected a time \"HH:MM:SSZ\", got \"" + v.get<std::string>().substr(0, 40) + "\"");
@@ -141,8 +143,10 @@ class Reader {
     if (!text(doc, "earthModel", "", model)) return false;
     if (model.empty()) return true;
     task.earth_stated = true;
-    if (model == "FAI_SPHERE") task.earth = EarthModel::FaiSphere;
-    else if (model != "WGS84") warn("earthModel", "unknown earth model \"" + model.substr(0, 40) + "\": WGS84 used");
+    if (model == "FAI_SPHERE")
+      task.earth = EarthModel::FaiSphere;
+    else if (model != "WGS84")
+      warn("earthModel", "unknown earth model \"" + model.substr(0, 40) + "\": WGS84 used");
     return true;
   }
   // The last turnpoint of a task is its goal.
@@ -173,10 +177,14 @@ bool Reader::version1(const json& doc, Task& task) {
     if (tp.radius_m < 0.0) return fail(path + ".radius", "negative");
     std::string role;
     if (!text(t, "type", path, role)) return false;
-    if (role == "TAKEOFF") tp.role = Role::Takeoff;
-    else if (role == "SSS") tp.role = Role::Sss;
-    else if (role == "ESS") tp.role = Role::Ess;
-    else if (!role.empty()) warn(path + ".type", "unknown type \"" + role.substr(0, 40) + "\": read as a turnpoint");
+    if (role == "TAKEOFF")
+      tp.role = Role::Takeoff;
+    else if (role == "SSS")
+      tp.role = Role::Sss;
+    else if (role == "ESS")
+      tp.role = Role::Ess;
+    else if (!role.empty())
+      warn(path + ".type", "unknown type \"" + role.substr(0, 40) + "\": read as a turnpoint");
     const json* w = member(t, "waypoint");
     if (w == nullptr) return fail(path + ".waypoint", "missing");
     if (!w->is_object()) return fail(path + ".waypoint", "expected an object");
@@ -192,8 +200,10 @@ bool Reader::version1(const json& doc, Task& task) {
     StartSection s;
     std::string v;
     if (!text(*sss, "type", "sss", v)) return false;
-    if (v == "ELAPSED-TIME") s.type = SssType::ElapsedTime;
-    else if (!v.empty() && v != "RACE") warn("sss.type", "unknown start type \"" + v.substr(0, 40) + "\": RACE used");
+    if (v == "ELAPSED-TIME")
+      s.type = SssType::ElapsedTime;
+    else if (!v.empty() && v != "RACE")
+      warn("sss.type", "unknown start type \"" + v.substr(0, 40) + "\": RACE used");
     v.clear();
     if (!text(*sss, "direction", "sss", v)) return false;
     if (v == "ENTER") s.direction = Direction::Enter;
@@ -204,8 +214,10 @@ bool Reader::version1(const json& doc, Task& task) {
     if (!goal->is_object()) return fail("goal", "expected an object");
     std::string v;
     if (!text(*goal, "type", "goal", v)) return false;
-    if (v == "LINE") task.goal_type = GoalType::Line;
-    else if (!v.empty() && v != "CYLINDER") warn("goal.type", "unknown goal type \"" + v.substr(0, 40) + "\": CYLINDER used");
+    if (v == "LINE")
+      task.goal_type = GoalType::Line;
+    else if (!v.empty() && v != "CYLINDER")
+      warn("goal.type", "unknown goal type \"" + v.substr(0, 40) + "\": CYLINDER used");
     if (const json* d = member(*goal, "deadline"); d != nullptr && !time_of_day(*d, "goal.deadline", task.deadline_s))
       return false;
   }
@@ -239,7 +251,8 @@ bool Reader::version2(const json& doc, Task& task) {
     if (z == nullptr) return fail(path + ".z", "missing");
     if (!z->is_string()) return fail(path + ".z", "expected a string");
     const auto values = decode_polyline_values(z->get<std::string>());
-    if (!values || values->size() < 2) return fail(path + ".z", "not a polyline of longitude, latitude[, altitude, radius]");
+    if (!values || values->size() < 2)
+      return fail(path + ".z", "not a polyline of longitude, latitude[, altitude, radius]");
     tp.lon = static_cast<double>((*values)[0]) * 1e-5;
     tp.lat = static_cast<double>((*values)[1]) * 1e-5;
     if (!latlon(tp.lat, tp.lon, path + ".z")) return false;
@@ -250,9 +263,12 @@ bool Reader::version2(const json& doc, Task& task) {
     if (const json* type = member(t, "t")) {
       if (!type->is_number_integer()) return fail(path + ".t", "expected 2 (SSS) or 3 (ESS)");
       const long long code = type->get<long long>();
-      if (code == 2) tp.role = Role::Sss;
-      else if (code == 3) tp.role = Role::Ess;
-      else if (code != 0) warn(path + ".t", "unknown type " + std::to_string(code) + ": read as a turnpoint");
+      if (code == 2)
+        tp.role = Role::Sss;
+      else if (code == 3)
+        tp.role = Role::Ess;
+      else if (code != 0)
+        warn(path + ".t", "unknown type " + std::to_string(code) + ": read as a turnpoint");
     }
     task.turnpoints.push_back(std::move(tp));
   }
@@ -313,7 +329,8 @@ TaskReadResult read_xctsk(std::string_view text, const std::string& file) {
   if (doc.is_discarded()) {
     SyntaxErrorFinder finder;
     json::sax_parse(body.begin(), body.end(), &finder);
-    const std::size_t offset = static_cast<std::size_t>(body.data() - text.data()) + (finder.position > 0 ? finder.position - 1 : 0);
+    const std::size_t offset =
+        static_cast<std::size_t>(body.data() - text.data()) + (finder.position > 0 ? finder.position - 1 : 0);
     result.error = Diagnostic{file, line_column(text, offset), describe_syntax_error(finder.message)};
     return result;
   }
@@ -330,7 +347,8 @@ TaskReadResult read_xctsk(std::string_view text, const std::string& file) {
   }
   // Version 2 is the QR form, which has "t" where version 1 has "turnpoints".
   const bool v2 = version == 2 || (version == 0 && doc.contains("t") && !doc.contains("turnpoints"));
-  if (version != 0 && version != 1 && version != 2) reader.warn("version", "unknown version " + std::to_string(version) + ": read as " + (v2 ? "2" : "1"));
+  if (version != 0 && version != 1 && version != 2)
+    reader.warn("version", "unknown version " + std::to_string(version) + ": read as " + (v2 ? "2" : "1"));
   const bool ok = v2 ? reader.version2(doc, task) : reader.version1(doc, task);
   if (!ok) return result;
   if (qr) task.format = TaskFormat::XctskQr;

@@ -107,8 +107,8 @@ TEST(TaskDistance, MatchesXContestOnTheReferenceTasks) {
     const char* name;
     double optimised_tolerance_km;
   };
-  for (const Case& c : {Case{"pyxctsk_task_gibe", 0.05}, Case{"pyxctsk_task_fobe_line", 0.5},
-                        Case{"pyxctsk_task_noha_route", 0.05}}) {
+  for (const Case& c :
+       {Case{"pyxctsk_task_gibe", 0.05}, Case{"pyxctsk_task_fobe_line", 0.5}, Case{"pyxctsk_task_noha_route", 0.05}}) {
     const char* name = c.name;
     SCOPED_TRACE(name);
     TRAILRAY_REQUIRE_DATA(task_path, std::string("tasks/") + name + ".xctsk");

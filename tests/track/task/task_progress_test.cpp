@@ -61,8 +61,8 @@ std::vector<TrackPoint> fly(const std::vector<std::pair<double, double>>& corner
 // east, the ESS and goal cylinder (500 m) 10 km north of that.
 Task simple_task() {
   Task task;
-  task.turnpoints = {tp("TO", 0, 0, 0, Role::Takeoff), tp("S", 0, 0, 2000, Role::Sss), tp("A", 10000, 0, 1000, Role::Turnpoint),
-                     tp("G", 10000, 10000, 500, Role::Goal)};
+  task.turnpoints = {tp("TO", 0, 0, 0, Role::Takeoff), tp("S", 0, 0, 2000, Role::Sss),
+                     tp("A", 10000, 0, 1000, Role::Turnpoint), tp("G", 10000, 10000, 500, Role::Goal)};
   task.sss = StartSection{SssType::Race, Direction::Exit, {10 * 3600.0}};
   task.deadline_s = 18 * 3600.0;
   return task;
@@ -80,7 +80,7 @@ TEST(TaskProgress, CrossingTimesAreInterpolatedBetweenFixes) {
   EXPECT_NEAR(p.turnpoints[1].time, t0 + 200.0, 0.05);   // out of the start at 2 km
   EXPECT_NEAR(p.turnpoints[2].time, t0 + 900.0, 0.05);   // into A at 9 km
   EXPECT_NEAR(p.turnpoints[3].time, t0 + 1950.0, 0.05);  // into the goal at 10 km + 9.5 km
-  EXPECT_TRUE(p.turnpoints[1].exit);  // an exit start: reached by leaving it
+  EXPECT_TRUE(p.turnpoints[1].exit);                     // an exit start: reached by leaving it
   EXPECT_FALSE(p.turnpoints[2].exit);
   EXPECT_TRUE(p.goal);
   EXPECT_FALSE(p.goal_after_deadline);
