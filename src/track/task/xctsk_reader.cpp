@@ -16,6 +16,9 @@ namespace {
 
 using json = nlohmann::json;
 
+// Far beyond any task's cylinder, and short of the antipode, where a circle stops being one.
+constexpr double kMaxRadiusM = 1.0e6;
+
 // Records the first syntax error's byte offset and message (nlohmann's SAX interface reports it
 // without an exception).
 struct SyntaxErrorFinder : nlohmann::json_sax<json> {
@@ -174,7 +177,7 @@ bool Reader::version1(const json& doc, Task& task) {
     if (!t.is_object()) return fail(path, "expected an object");
     Turnpoint tp;
     if (!number(t, "radius", path, tp.radius_m, true)) return false;
-    if (tp.radius_m < 0.0) return fail(path + ".radius", "negative");
+    if (tp.radius_m < 0.0 || tp.radius_m > kMaxRadiusM) return fail(path + ".radius", "out of range (0 to 1000 km)");
     std::string role;
     if (!text(t, "type", path, role)) return false;
     if (role == "TAKEOFF")
@@ -259,7 +262,7 @@ bool Reader::version2(const json& doc, Task& task) {
     if (values->size() >= 3) tp.altitude_m = static_cast<double>((*values)[2]);
     if (values->size() >= 4) tp.radius_m = static_cast<double>((*values)[3]);
     if (task.waypoints_only) tp.radius_m = 0.0;
-    if (tp.radius_m < 0.0) return fail(path + ".z", "negative radius");
+    if (tp.radius_m < 0.0 || tp.radius_m > kMaxRadiusM) return fail(path + ".z", "radius out of range (0 to 1000 km)");
     if (const json* type = member(t, "t")) {
       if (!type->is_number_integer()) return fail(path + ".t", "expected 2 (SSS) or 3 (ESS)");
       const long long code = type->get<long long>();
