@@ -15,7 +15,16 @@ namespace trailray::track::task {
 
 namespace {
 
+bool all_digits(std::string_view s, std::size_t from, std::size_t count) {
+  if (from + count > s.size()) return false;
+  for (std::size_t i = from; i < from + count; ++i)
+    if (s[i] < '0' || s[i] > '9') return false;
+  return true;
+}
+
+// At most 9 digits: no overflow.
 bool digits(std::string_view s, std::size_t from, std::size_t count, long long& out) {
+  if (count > 9) return false;
   if (from + count > s.size()) return false;
   out = 0;
   for (std::size_t i = from; i < from + count; ++i) {
@@ -67,9 +76,8 @@ TaskReadResult read_igc_declaration(std::string_view text, const std::string& fi
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.empty() || line[0] != 'C') continue;
     if (header_line == 0) {
-      long long tt = 0;
       // The header is 25 characters of digits; a position record has N/S at column 9.
-      if (line.size() >= 25 && digits(line, 1, 24, tt)) {
+      if (line.size() >= 25 && all_digits(line, 1, 24)) {
         header_line = line_number;
         digits(line, 23, 2, declared_count);
         continue;
