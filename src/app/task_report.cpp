@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace trailray::app {
@@ -141,13 +142,15 @@ std::string task_table(const std::string& file, const tt::Task& task, const tt::
                                 task.earth_stated ? "" : " (assumed: the file names no earth model)");
   out += fmt::format("{}; goal {}{}\n", start_text(task), task.goal_type == tt::GoalType::Line ? "line" : "cylinder",
                      std::isnan(task.deadline_s) ? std::string() : ", deadline " + clock(task.deadline_s) + "Z");
-  out += fmt::format("{:>3}  {:<10} {:<9} {:>9}  {:>10}  {:>12}  {}\n", "#", "name", "role", "radius", "centres km",
+  std::size_t w = 4;  // the name column: as wide as the longest name
+  for (const tt::Turnpoint& t : task.turnpoints) w = std::max(w, t.name.size());
+  out += fmt::format("{:>3}  {:<{}} {:<9} {:>9}  {:>10}  {:>12}  {}\n", "#", "name", w, "role", "radius", "centres km",
                      "optimised km", "description");
   for (std::size_t i = 0; i < task.turnpoints.size(); ++i) {
     const tt::Turnpoint& t = task.turnpoints[i];
-    out +=
-        fmt::format("{:>3}  {:<10} {:<9} {:>7.0f} m  {:>10.2f}  {:>12.2f}  {}\n", i + 1, t.name, tt::role_name(t.role),
-                    t.radius_m, d.centre_cumulative_m[i] / 1000.0, d.optimised.cumulative_m[i] / 1000.0, t.description);
+    out += fmt::format("{:>3}  {:<{}} {:<9} {:>7.0f} m  {:>10.2f}  {:>12.2f}  {}\n", i + 1, t.name, w,
+                       tt::role_name(t.role), t.radius_m, d.centre_cumulative_m[i] / 1000.0,
+                       d.optimised.cumulative_m[i] / 1000.0, t.description);
   }
   out += fmt::format("distance: {:.2f} km through centres, {:.2f} km optimised", d.centre_m / 1000.0,
                      d.optimised.distance_m / 1000.0);
@@ -169,7 +172,7 @@ std::string task_table(const std::string& file, const tt::Task& task, const tt::
                        p.goal ? (p.goal_after_deadline ? "goal made after the deadline" : "goal made") : "no goal");
     for (std::size_t i = 0; i < p.turnpoints.size(); ++i) {
       const tt::TurnpointReach& r = p.turnpoints[i];
-      out += fmt::format("{:>3}  {:<10} {:<9} {}\n", i + 1, task.turnpoints[i].name,
+      out += fmt::format("{:>3}  {:<{}} {:<9} {}\n", i + 1, task.turnpoints[i].name, w,
                          tt::role_name(task.turnpoints[i].role),
                          r.reached ? clock(r.time) + "Z" + (r.exit ? " (out)" : "") : "not reached");
     }
