@@ -10,8 +10,8 @@
 #include "app/flight_command.hpp"
 #include "app/render_command.hpp"
 #include "app/score_command.hpp"
-#include "app/task_command.hpp"
 #include "app/stats_command.hpp"
+#include "app/task_command.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/view_command.hpp"
 
