@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/flight_report.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/track_options.hpp"
+#include "track/task/task_reader.hpp"
 
 namespace trailray::app {
 namespace {
@@ -16,17 +18,38 @@ namespace {
 struct FlightArgs {
   std::vector<std::string> files;
   bool json = false;
+  std::string task;  // --task FILE
+  double tolerance_percent = 0.0;
   track::ReadOptions read;
 };
+
+// The task of --task, read and measured once; nullopt (after an error) when it cannot be read.
+std::optional<FlightTask> read_flight_task(const FlightArgs& a, TerminalDiagnostics& diagnostics) {
+  namespace tt = track::task;
+  const tt::TaskReadResult read = tt::read_task_file(a.task);
+  for (const auto& w : read.warnings) diagnostics.warning(w.to_string());
+  if (read.error) {
+    diagnostics.error(read.error->to_string());
+    return std::nullopt;
+  }
+  FlightTask t{a.task, *read.task, tt::measure_task(*read.task), a.tolerance_percent / 100.0};
+  return t;
+}
 
 int run_flight(const FlightArgs& a) {
   TerminalDiagnostics diagnostics;
   const track::flight::FlightOptions options;
+  std::optional<FlightTask> task;
+  if (!a.task.empty()) {
+    task = read_flight_task(a, diagnostics);
+    if (!task) return 1;
+  }
+  const FlightTask* checked = task ? &*task : nullptr;
   nlohmann::json doc;
   doc["files"] = nlohmann::json::array();
   int failed = 0;
   for (std::size_t i = 0; i < a.files.size(); ++i) {
-    const FileFlights f = analyse_flight_file(a.files[i], a.read, options);
+    const FileFlights f = analyse_flight_file(a.files[i], a.read, options, checked);
     for (const auto& w : f.warnings) diagnostics.warning(w);
     if (f.error) {
       diagnostics.error(*f.error);
@@ -35,14 +58,15 @@ int run_flight(const FlightArgs& a) {
       diagnostics.warning(fmt::format("{}: no tracks (flight analysis needs a track with times)", f.path));
     }
     if (a.json) {
-      doc["files"].push_back(flight_file_json(f));
+      doc["files"].push_back(flight_file_json(f, checked));
     } else if (!f.error && !f.tracks.empty()) {
-      fmt::print("{}{}", i > 0 ? "\n" : "", flight_file_text(f));
+      fmt::print("{}{}", i > 0 ? "\n" : "", flight_file_text(f, checked));
       std::fflush(stdout);
     }
   }
   if (a.json) {
     doc["settings"] = flight_settings_json(options);
+    if (task) doc["task"] = task_json(task->path, task->task, task->distances, {});
     std::cout << doc.dump(2) << '\n';
   }
   if (failed > 0 && a.files.size() > 1)
@@ -87,12 +111,22 @@ void add_flight_command(CLI::App& app, int& exit_code) {
       "\"mean_speed_ms\", \"phase\"}], \"wind\": [{\"floor_m\", \"ceiling_m\", \"speed_ms\", \"from_deg\",\n"
       "\"thermals\"}]}]}]}], \"settings\": {the analysis constants}}, with PLACE = {\"time\" (ISO 8601\n"
       "UTC), \"lat\", \"lon\", \"alt_m\", \"point\" (index among the track's points)}; unknown figures are null.\n"
-      "Exit status: 0 all read, 1 when any file could not be read, 2 for a usage error.");
+      "With --task, each file's result against the task follows its report (JSON: \"task\" per file, as\n"
+      "in `trailray task --json`'s \"flights\", and the task itself as the document's \"task\").\n"
+      "Exit status: 0 all read, 1 when any file (or the task) could not be read, 2 for a usage error.");
   cmd->add_option("TRACK", args->files,
                   "Track files: IGC (or GPX, TCX, FIT, KML, GeoJSON with times), - for standard input")
       ->required()
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of the report");
+  cmd->add_option("--task", args->task,
+                  "Also check the flights against a task (.xctsk, XCTSK: text, IGC C records): the turnpoints "
+                  "reached and when, as `trailray task` prints them")
+      ->type_name("FILE");
+  cmd->add_option("--tolerance", args->tolerance_percent, "With --task: cylinder tolerance in percent of the radius")
+      ->type_name("PERCENT")
+      ->check(CLI::Range(0.0, 10.0))
+      ->default_str("0");
   add_read_options(*cmd, args->read);
   cmd->callback([args, &exit_code] { exit_code = run_flight(*args); });
 }

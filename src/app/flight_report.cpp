@@ -116,7 +116,7 @@ nlohmann::json flight_json(const fl::Flight& f) {
 }  // namespace
 
 FileFlights analyse_flight_file(const std::string& path, const track::ReadOptions& read,
-                                const track::flight::FlightOptions& options) {
+                                const track::flight::FlightOptions& options, const FlightTask* task) {
   FileFlights f;
   f.path = path;
   const track::ReadResult r = track::load_track_file(path, read);
@@ -129,6 +129,7 @@ FileFlights analyse_flight_file(const std::string& path, const track::ReadOption
   for (std::size_t i = 0; i < r.file.tracks.size(); ++i)
     f.tracks.push_back({r.file.tracks[i].name, i, fl::analyse_flights(r.file.tracks[i], options),
                         median_fix_interval(r.file.tracks[i])});
+  if (task != nullptr) f.task = task_flight_report(path, r.file, task->task, task->distances, task->tolerance);
   return f;
 }
 
@@ -156,7 +157,7 @@ std::string no_flight_reason(const fl::FlightAnalysis& a) {
   return "no flight found (never fast and climbing or sinking for a minute: ground time or a walk)";
 }
 
-nlohmann::json flight_file_json(const FileFlights& f) {
+nlohmann::json flight_file_json(const FileFlights& f, const FlightTask* task) {
   nlohmann::json j;
   j["path"] = f.path;  // as given, like `stats`
   j["format"] = f.format ? nlohmann::json(track::format_name(*f.format)) : nlohmann::json(nullptr);
@@ -177,6 +178,7 @@ nlohmann::json flight_file_json(const FileFlights& f) {
     for (const fl::Flight& flight : t.analysis.flights) tj["flights"].push_back(flight_json(flight));
     j["tracks"].push_back(tj);
   }
+  if (task != nullptr && f.task) j["task"] = task_flight_json(task->task, *f.task);
   return j;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/task_report.hpp"
 #include "track/diagnostics.hpp"
 #include "track/flight/flight_analysis.hpp"
 
@@ -24,13 +25,22 @@ struct FileFlights {
   std::string path;  // as given on the command line ("-" for stdin)
   std::optional<track::Format> format;
   std::vector<TrackFlights> tracks;
-  std::vector<std::string> warnings;  // "file:line:col: message"
-  std::optional<std::string> error;   // set when the file could not be read
+  std::vector<std::string> warnings;     // "file:line:col: message"
+  std::optional<std::string> error;      // set when the file could not be read
+  std::optional<TaskFlightReport> task;  // with --task: the turnpoints its fixes reached
 };
 
-// Reads one file and analyses every track of it.
+// A task to check every file against (`flight --task`), measured once.
+struct FlightTask {
+  std::string path;
+  track::task::Task task;
+  track::task::TaskDistances distances;
+  double tolerance = 0.0;  // fraction of a radius
+};
+
+// Reads one file and analyses every track of it; with a task, also which turnpoints it reached.
 FileFlights analyse_flight_file(const std::string& path, const track::ReadOptions& read,
-                                const track::flight::FlightOptions& options = {});
+                                const track::flight::FlightOptions& options = {}, const FlightTask* task = nullptr);
 
 // The median time step between consecutive timed points of a track; 0 with fewer than two.
 double median_fix_interval(const track::Track& t);
@@ -42,9 +52,10 @@ inline constexpr double kCoarseFixInterval = 7.0;
 // Why a track has no flight ("no times: ..."), or an empty string when it has one.
 std::string no_flight_reason(const track::flight::FlightAnalysis& a);
 
-nlohmann::json flight_file_json(const FileFlights& f);
+// With the task the file was checked against (its "task": the turnpoints reached).
+nlohmann::json flight_file_json(const FileFlights& f, const FlightTask* task = nullptr);
 // The analysis constants, for the document's "settings".
 nlohmann::json flight_settings_json(const track::flight::FlightOptions& o);
-std::string flight_file_text(const FileFlights& f);
+std::string flight_file_text(const FileFlights& f, const FlightTask* task = nullptr);
 
 }  // namespace trailray::app

@@ -126,7 +126,7 @@ std::string wind_table(const fl::Flight& f) {
 
 }  // namespace
 
-std::string flight_file_text(const FileFlights& f) {
+std::string flight_file_text(const FileFlights& f, const FlightTask* task) {
   std::string s;
   for (const TrackFlights& t : f.tracks) {
     const auto& flights = t.analysis.flights;
@@ -150,6 +150,10 @@ std::string flight_file_text(const FileFlights& f) {
       s += summary(flight) + thermal_table(flight) + glide_table(flight) + wind_table(flight);
     }
   }
+  if (task != nullptr && f.task)
+    s += fmt::format("\nthe task {} ({:.2f} km optimised):\n", task->path,
+                     task->distances.optimised.distance_m / 1000.0) +
+         task_flight_text(task->task, *f.task);
   return s;
 }
 

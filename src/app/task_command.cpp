@@ -34,18 +34,18 @@ int run_task(const TaskArgs& a) {
   int status = 0;
   std::vector<TaskFlightReport> flights;
   for (const std::string& path : a.tracks) {
-    TaskFlightReport f;
-    f.file = path;
     const track::ReadResult r = track::load_track_file(path);
     for (const auto& w : r.warnings) diagnostics.warning(w.to_string());
-    const std::vector<track::TrackPoint> fixes = r.error ? std::vector<track::TrackPoint>{} : tt::timed_fixes(r.file);
-    if (r.error || fixes.empty()) {
-      f.error = r.error ? r.error->to_string() : path + ": no point with a time";
+    TaskFlightReport f;
+    if (r.error) {
+      f.file = path;
+      f.error = r.error->to_string();
+    } else {
+      f = task_flight_report(path, r.file, task, distances, a.tolerance_percent / 100.0);
+    }
+    if (f.error) {
       diagnostics.error(*f.error);
       status = 1;
-    } else {
-      f.progress = tt::task_progress(task, distances.optimised, fixes, {a.tolerance_percent / 100.0});
-      f.notes = task_time_notes(task, f.progress, fixes.front().time, fixes.back().time);
     }
     flights.push_back(std::move(f));
   }

@@ -26,6 +26,13 @@ std::string duration(double seconds) {
 nlohmann::json number_or_null(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
 double km(double m) { return std::round(m) / 1000.0; }
 
+// The name column: as wide as the longest name.
+std::size_t name_width(const tt::Task& task) {
+  std::size_t w = 4;
+  for (const tt::Turnpoint& t : task.turnpoints) w = std::max(w, t.name.size());
+  return w;
+}
+
 std::string start_text(const tt::Task& t) {
   if (!t.sss) return "no speed section";
   std::string gates;
@@ -54,6 +61,52 @@ std::vector<std::string> task_time_notes(const tt::Task& task, const tt::TaskPro
                                 clock(first_fix_time)));
   (void)last_fix_time;
   return notes;
+}
+
+TaskFlightReport task_flight_report(const std::string& path, const track::TrackFile& file, const tt::Task& task,
+                                    const tt::TaskDistances& d, double tolerance) {
+  TaskFlightReport f;
+  f.file = path;
+  const std::vector<track::TrackPoint> fixes = tt::timed_fixes(file);
+  if (fixes.empty()) {
+    f.error = path + ": no point with a time";
+    return f;
+  }
+  f.progress = tt::task_progress(task, d.optimised, fixes, {tolerance});
+  f.notes = task_time_notes(task, f.progress, fixes.front().time, fixes.back().time);
+  return f;
+}
+
+nlohmann::json task_flight_json(const tt::Task& task, const TaskFlightReport& f) {
+  nlohmann::json j;
+  j["file"] = f.file;
+  if (f.error) {
+    j["error"] = *f.error;
+    return j;
+  }
+  const tt::TaskProgress& p = f.progress;
+  nlohmann::json reached = nlohmann::json::array();
+  for (std::size_t i = 0; i < p.turnpoints.size(); ++i) {
+    const tt::TurnpointReach& r = p.turnpoints[i];
+    if (!r.reached) break;
+    reached.push_back({{"index", i},
+                       {"name", task.turnpoints[i].name},
+                       {"time", r.time},
+                       {"clock", clock(r.time) + "Z"},
+                       {"fix", r.fix},
+                       {"lat", r.lat},
+                       {"lon", r.lon},
+                       {"by_exit", r.exit}});
+  }
+  j["reached"] = reached;
+  j["reached_count"] = p.reached;
+  j["goal"] = p.goal;
+  j["goal_after_deadline"] = p.goal_after_deadline;
+  j["start_time"] = number_or_null(p.start_time);
+  j["ess_time"] = number_or_null(p.ess_time);
+  j["speed_section_s"] = number_or_null(p.speed_section_s);
+  j["notes"] = f.notes;
+  return j;
 }
 
 nlohmann::json task_json(const std::string& file, const tt::Task& task, const tt::TaskDistances& d,
@@ -99,40 +152,30 @@ nlohmann::json task_json(const std::string& file, const tt::Task& task, const tt
     doc["stated_km"] = nullptr;
   }
   nlohmann::json fl = nlohmann::json::array();
-  for (const TaskFlightReport& f : flights) {
-    nlohmann::json j;
-    j["file"] = f.file;
-    if (f.error) {
-      j["error"] = *f.error;
-      fl.push_back(j);
-      continue;
-    }
-    const tt::TaskProgress& p = f.progress;
-    nlohmann::json reached = nlohmann::json::array();
-    for (std::size_t i = 0; i < p.turnpoints.size(); ++i) {
-      const tt::TurnpointReach& r = p.turnpoints[i];
-      if (!r.reached) break;
-      reached.push_back({{"index", i},
-                         {"name", task.turnpoints[i].name},
-                         {"time", r.time},
-                         {"clock", clock(r.time) + "Z"},
-                         {"fix", r.fix},
-                         {"lat", r.lat},
-                         {"lon", r.lon},
-                         {"by_exit", r.exit}});
-    }
-    j["reached"] = reached;
-    j["reached_count"] = p.reached;
-    j["goal"] = p.goal;
-    j["goal_after_deadline"] = p.goal_after_deadline;
-    j["start_time"] = number_or_null(p.start_time);
-    j["ess_time"] = number_or_null(p.ess_time);
-    j["speed_section_s"] = number_or_null(p.speed_section_s);
-    j["notes"] = f.notes;
-    fl.push_back(j);
-  }
+  for (const TaskFlightReport& f : flights) fl.push_back(task_flight_json(task, f));
   doc["flights"] = fl;
   return doc;
+}
+
+std::string task_flight_text(const tt::Task& task, const TaskFlightReport& f) {
+  if (f.error) return fmt::format("{}: {}\n", f.file, *f.error);
+  std::string out;
+  const std::size_t w = name_width(task);
+  const tt::TaskProgress& p = f.progress;
+  out += fmt::format("{}: {} of {} turnpoints, {}\n", f.file, p.reached, task.turnpoints.size(),
+                     p.goal ? (p.goal_after_deadline ? "goal made after the deadline" : "goal made") : "no goal");
+  for (std::size_t i = 0; i < p.turnpoints.size(); ++i) {
+    const tt::TurnpointReach& r = p.turnpoints[i];
+    out += fmt::format("{:>3}  {:<{}} {:<9} {}\n", i + 1, task.turnpoints[i].name, w,
+                       tt::role_name(task.turnpoints[i].role),
+                       r.reached ? clock(r.time) + "Z" + (r.exit ? " (out)" : "") : "not reached");
+  }
+  if (!std::isnan(p.start_time))
+    out += fmt::format("start {}Z, ESS {}, speed section {}\n", clock(p.start_time),
+                       std::isnan(p.ess_time) ? std::string("not reached") : clock(p.ess_time) + "Z",
+                       duration(p.speed_section_s));
+  for (const std::string& n : f.notes) out += "note: " + n + "\n";
+  return out;
 }
 
 std::string task_table(const std::string& file, const tt::Task& task, const tt::TaskDistances& d,
@@ -142,8 +185,7 @@ std::string task_table(const std::string& file, const tt::Task& task, const tt::
                                 task.earth_stated ? "" : " (assumed: the file names no earth model)");
   out += fmt::format("{}; goal {}{}\n", start_text(task), task.goal_type == tt::GoalType::Line ? "line" : "cylinder",
                      std::isnan(task.deadline_s) ? std::string() : ", deadline " + clock(task.deadline_s) + "Z");
-  std::size_t w = 4;  // the name column: as wide as the longest name
-  for (const tt::Turnpoint& t : task.turnpoints) w = std::max(w, t.name.size());
+  const std::size_t w = name_width(task);
   out += fmt::format("{:>3}  {:<{}} {:<9} {:>9}  {:>10}  {:>12}  {}\n", "#", "name", w, "role", "radius", "centres km",
                      "optimised km", "description");
   for (std::size_t i = 0; i < task.turnpoints.size(); ++i) {
@@ -161,27 +203,7 @@ std::string task_table(const std::string& file, const tt::Task& task, const tt::
   else
     out += "; the file states no distance";
   out += '\n';
-  for (const TaskFlightReport& f : flights) {
-    out += '\n';
-    if (f.error) {
-      out += fmt::format("{}: {}\n", f.file, *f.error);
-      continue;
-    }
-    const tt::TaskProgress& p = f.progress;
-    out += fmt::format("{}: {} of {} turnpoints, {}\n", f.file, p.reached, task.turnpoints.size(),
-                       p.goal ? (p.goal_after_deadline ? "goal made after the deadline" : "goal made") : "no goal");
-    for (std::size_t i = 0; i < p.turnpoints.size(); ++i) {
-      const tt::TurnpointReach& r = p.turnpoints[i];
-      out += fmt::format("{:>3}  {:<{}} {:<9} {}\n", i + 1, task.turnpoints[i].name, w,
-                         tt::role_name(task.turnpoints[i].role),
-                         r.reached ? clock(r.time) + "Z" + (r.exit ? " (out)" : "") : "not reached");
-    }
-    if (!std::isnan(p.start_time))
-      out += fmt::format("start {}Z, ESS {}, speed section {}\n", clock(p.start_time),
-                         std::isnan(p.ess_time) ? std::string("not reached") : clock(p.ess_time) + "Z",
-                         duration(p.speed_section_s));
-    for (const std::string& n : f.notes) out += "note: " + n + "\n";
-  }
+  for (const TaskFlightReport& f : flights) out += '\n' + task_flight_text(task, f);
   return out;
 }
 

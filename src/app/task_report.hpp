@@ -27,6 +27,16 @@ struct TaskFlightReport {
 std::vector<std::string> task_time_notes(const track::task::Task& task, const track::task::TaskProgress& p,
                                          double first_fix_time, double last_fix_time);
 
+// The task's result for one file read: the progress of its timed fixes (all tracks, in order)
+// and the notes on its times; an error when it has no timed fix. `tolerance`: fraction of a radius.
+TaskFlightReport task_flight_report(const std::string& path, const track::TrackFile& file,
+                                    const track::task::Task& task, const track::task::TaskDistances& d,
+                                    double tolerance);
+
+// One flight's result alone (as in task_json's "flights" and `trailray flight --task`).
+nlohmann::json task_flight_json(const track::task::Task& task, const TaskFlightReport& flight);
+std::string task_flight_text(const track::task::Task& task, const TaskFlightReport& flight);
+
 nlohmann::json task_json(const std::string& file, const track::task::Task& task, const track::task::TaskDistances& d,
                          const std::vector<TaskFlightReport>& flights);
 std::string task_table(const std::string& file, const track::task::Task& task, const track::task::TaskDistances& d,

@@ -1,5 +1,6 @@
 // `trailray flight` as a user runs it: the report and the JSON of a simulated flight whose
 // thermals and wind are known, two flights in one file, tracks without times, bad input.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -226,4 +227,48 @@ TEST(FlightCli, RealFlightWithAMiddleLanding) {
   ASSERT_EQ(flights.size(), 2u);
   EXPECT_LT(flights[0]["landing"]["time"].get<std::string>(), flights[1]["takeoff"]["time"].get<std::string>());
   for (const json& fl : flights) EXPECT_GT(fl["thermal_count"].get<int>(), 3);
+}
+
+// --task: the flight's result against a task follows its report. A task made around the
+// simulated flight: the take-off where it starts, a cylinder around its middle (reached), one
+// 50 km away (not reached).
+TEST(FlightCli, TaskResultFollowsTheReport) {
+  const SyntheticFlight sim = two_thermals();
+  const auto& start = sim.points().front();
+  const auto& middle = sim.points()[sim.points().size() / 2];
+  const std::string tp = R"({{"radius":{},"waypoint":{{"name":"{}","lat":{:.6f},"lon":{:.6f}}}{}}})";
+  const std::string task_json =
+      R"({"version":1,"taskType":"CLASSIC","turnpoints":[)" +
+      fmt::format(fmt::runtime(tp), 400, "LAUNCH", start.lat, start.lon, R"(,"type":"TAKEOFF")") + "," +
+      fmt::format(fmt::runtime(tp), 500, "MIDDLE", middle.lat, middle.lon, "") + "," +
+      fmt::format(fmt::runtime(tp), 400, "FAR", middle.lat + 0.45, middle.lon, "") + "]}";
+  TempFile task("t.xctsk", task_json);
+  TempFile f("flight.igc", igc_of(sim));
+  const auto text = run_command(binary() + " flight --task " + shell_quote(task.str()) + " " + shell_quote(f.str()));
+  ASSERT_EQ(text.status, 0) << text.out;
+  EXPECT_NE(text.out.find("thermals   2"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("2 of 3 turnpoints, no goal"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("FAR"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("not reached"), std::string::npos) << text.out;
+
+  const auto r =
+      run_command(binary() + " flight --json --task " + shell_quote(task.str()) + " " + shell_quote(f.str()));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const json doc = json::parse(r.out);
+  ASSERT_EQ(doc["task"]["turnpoints"].size(), 3u);
+  const json& result = doc["files"][0]["task"];
+  EXPECT_EQ(result["reached_count"], 2);
+  ASSERT_EQ(result["reached"].size(), 2u);
+  EXPECT_EQ(result["reached"][1]["name"], "MIDDLE");
+  // Reached after the take-off (the log's first fix), within the simulated flight's duration.
+  const double launched = result["reached"][0]["time"].get<double>();
+  const double reached = result["reached"][1]["time"].get<double>();
+  EXPECT_GT(reached, launched);
+  EXPECT_LT(reached - launched, sim.points().back().time - start.time);
+
+  TempFile bad("bad.xctsk", R"({"version":1,"turnpoints":[]})");
+  const auto broken =
+      run_command(binary() + " flight --task " + shell_quote(bad.str()) + " " + shell_quote(f.str()) + " 2>&1");
+  EXPECT_EQ(broken.status, 1);
+  EXPECT_NE(broken.out.find(bad.str()), std::string::npos) << broken.out;
 }
