@@ -32,11 +32,15 @@ int run_render(const RenderArgs& a) {
       {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
   const SceneTracks tracks = load_scene_tracks(a.tracks, a.read, style.tracks, {sources.heights.get(), 0.0, a.analysis},
                                                diagnostics, a.waypoints);
+  // The task's cylinders (--task) and the airspaces of --airspace, on the terrain.
+  scene::VolumeSet volumes = tracks.volumes;
+  add_airspace_volumes(volumes, a.airspace.files, airspace_region(tracks.tracks, tracks.waypoints, camera_request),
+                       sources.heights.get(), diagnostics);
   scene::Scene scene;
   scene.terrain = &terrain;
   scene.tracks = &tracks.tracks;
   scene.waypoints = &tracks.waypoints;
-  if (!tracks.volumes.volumes.empty()) scene.volumes = &tracks.volumes;
+  if (!volumes.volumes.empty()) scene.volumes = &volumes;
   scene.style = style;
   scene.color_range = scene::color_range(tracks.tracks, style);
   scene.sun_time_unix_s = sun_time(time, tracks.recorded);

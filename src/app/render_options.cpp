@@ -42,6 +42,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& args) {
   add_imagery_option(cmd, args.terrain);
   add_track_style_options(cmd, args.style);
   add_waypoint_options(cmd, args.waypoints);
+  add_airspace_options(cmd, args.airspace);
   add_label_options(cmd, args.style);
   add_read_options(cmd, args.read);
   add_cleaning_options(cmd, args.analysis);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/airspace_options.hpp"
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
 #include "app/terrain_options.hpp"
@@ -32,6 +33,7 @@ struct RenderArgs {
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
   WaypointArgs waypoints;
+  AirspaceArgs airspace;
 };
 
 void add_render_options(CLI::App& command, RenderArgs& args);

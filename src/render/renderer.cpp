@@ -64,6 +64,7 @@ std::string legend_key(const scene::Scene& scene, const scene::Lens& lens) {
   if (scene.tracks != nullptr)
     for (const scene::TrackKeyEntry& entry : scene::track_key_for(scene.style.tracks, *scene.tracks))
       key += '\n' + entry.name;
+  for (const scene::TrackKeyEntry& entry : scene::airspace_key_for(scene)) key += "\nairspace " + entry.name;
   return key;
 }
 
@@ -91,6 +92,9 @@ FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camer
   // Pins after the tracks: they are drawn by the same pass.
   for (const TrackDraw& pin : pin_gpu_.draws(scene.waypoints, scene.style.pins)) content.tracks.push_back(pin);
   content.labels = layout_labels(scene, camera, target.pixel_ratio);
+  content.volumes = volume_gpu_.draw(scene.volumes, tiles.report.neutral_ground_m);
+  if (scene.volumes != nullptr)
+    for (const scene::Volume& v : scene.volumes->volumes) content.volume_count += v.visible ? 1 : 0;
   content.label_style = scene.style.labels;
   FrameReport report = draw(content, camera, target);
   track_gpu_.evict(scene.tracks);
@@ -112,6 +116,7 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
   }
   for (const TrackDraw& draw : content.tracks) (draw.is_pin ? report.pin_draws : report.tracks_drawn) += 1;
   report.labels_drawn = content.labels.size();
+  report.volumes_drawn = content.volumes != nullptr ? content.volume_count : 0;
 
   // The sun and sky light of the frame: what decides the shadows and what the passes shade with.
   const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);
@@ -197,6 +202,11 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
     compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
   });
   if (overlay) passes.run("overlays", [&] { track_pass_.blend_overlay(*overlay); });
+  if (content.volumes != nullptr)
+    passes.run("volumes", [&] {
+      frame.bind();
+      volume_pass_.draw(gbuffer, camera, *content.volumes, target.pixel_ratio);
+    });
   if (!content.labels.empty())
     passes.run("labels", [&] {
       frame.bind();

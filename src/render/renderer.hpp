@@ -10,6 +10,7 @@
 //   ssao       ambient occlusion from the G-buffer
 //   compose    sun, sky light, shadows, AO, atmosphere: the lit frame
 //   overlays   the track overlay blended over it
+//   volumes    airspaces and task cylinders: translucent walls, floor and ceiling outlines
 //   labels     the names of waypoints, places and tracks (laid out by scene/label_layout.hpp)
 //   output     the frame handed to its target (read back, copied into a window)
 //
@@ -33,9 +34,11 @@
 #include "render/passes/ssao_pass.hpp"
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_pass.hpp"
+#include "render/passes/volume_pass.hpp"
 #include "render/pin_gpu.hpp"
 #include "render/terrain_gpu.hpp"
 #include "render/track_gpu.hpp"
+#include "render/volume_gpu.hpp"
 #include "scene/camera.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
@@ -59,6 +62,7 @@ struct FrameReport {
   std::size_t tracks_drawn = 0;        // visible tracks
   std::size_t pin_draws = 0;           // the waypoints' stems and balls (a draw per kind and part)
   std::size_t labels_drawn = 0;        // labels placed (those whose point is hidden included)
+  std::size_t volumes_drawn = 0;       // visible airspaces and task cylinders
   bool shadows_drawn = false;          // false: switched off, or the sun below the horizon
   // The GPU caches after this frame's eviction: held, used by the frame, uploaded, evicted.
   GpuCacheStats gpu_meshes;
@@ -75,6 +79,8 @@ struct FrameContent {
   scene::Shading shading;
   glm::dvec3 sun_direction_ecef{0.0, 0.0, 1.0};  // unit, towards the sun
   std::vector<scene::PlacedLabel> labels;        // laid out for the frame's camera and size
+  const VolumeDraw* volumes = nullptr;           // airspaces and task cylinders (nullptr: none)
+  std::size_t volume_count = 0;                  // how many volumes `volumes` holds
   scene::LabelStyle label_style;
 };
 
@@ -125,6 +131,7 @@ class Renderer {
   ComposePass compose_pass_;
   TrackPass track_pass_;
   LabelPass label_pass_;
+  VolumePass volume_pass_;
   struct LegendPanelCache {
     std::string key;
     scene::PixelRect panel;
@@ -134,6 +141,7 @@ class Renderer {
   TerrainGpu terrain_gpu_;
   TrackGpu track_gpu_;
   PinGpu pin_gpu_;
+  VolumeGpu volume_gpu_;
   scene::TerrainView neutral_terrain_{nullptr, nullptr};  // for scenes without terrain
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "scene/airspace_volumes.hpp"
 #include "scene/text_raster.hpp"
 
 namespace trailray::scene {
@@ -12,6 +13,18 @@ namespace {
 const TrackSet kNoTracks;
 
 const TrackSet& tracks_of(const Scene& scene) { return scene.tracks != nullptr ? *scene.tracks : kNoTracks; }
+
+// The rows from a panel's top to the image's bottom: what a legend stacked above it leaves free.
+int rows_taken(const PixelRect& panel, std::uint32_t height) {
+  return panel.empty() ? 0 : static_cast<int>(height) - panel.y;
+}
+
+PixelRect united(const PixelRect& a, const PixelRect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  const int x = std::min(a.x, b.x), y = std::min(a.y, b.y);
+  return {x, y, std::max(a.right(), b.right()) - x, std::max(a.bottom(), b.bottom()) - y};
+}
 
 }  // namespace
 
@@ -41,14 +54,24 @@ std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet
   return key;
 }
 
+std::vector<TrackKeyEntry> airspace_key_for(const Scene& scene) {
+  std::vector<TrackKeyEntry> key;
+  if (scene.volumes == nullptr) return key;
+  for (const AirspaceClassShown& c : airspace_classes_shown(*scene.volumes)) key.push_back({c.label, c.color_srgb});
+  return key;
+}
+
 void draw_scene_legend(RgbaImage& image, const Scene& scene) {
   if (!scene.style.legend) return;
   const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
   const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
-  if (!legend && key.empty()) return;
+  const auto airspaces = airspace_key_for(scene);
+  if (!legend && key.empty() && airspaces.empty()) return;
   TextRasterizer text;
-  if (legend) draw_color_legend(image, text, *legend);
-  if (!key.empty()) draw_track_key(image, text, key);
+  PixelRect below;
+  if (legend) below = draw_color_legend(image, text, *legend).panel;
+  if (!key.empty()) below = draw_track_key(image, text, key).panel;
+  if (!airspaces.empty()) draw_track_key(image, text, airspaces, {0, rows_taken(below, image.height)});
 }
 
 PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene) {
@@ -61,11 +84,16 @@ PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Sc
   if (!scene.style.legend) return {};
   const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
   const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
+  const auto airspaces = airspace_key_for(scene);
   // As draw_scene_legend: a colour bar or a key, never both (one is for a metric, the other for
-  // solid colours).
-  if (legend) return color_legend_panel(width, height, text, *legend);
-  if (!key.empty()) return track_key_panel(width, height, text, key);
-  return {};
+  // solid colours); the airspaces' key above either.
+  PixelRect below;
+  if (legend)
+    below = color_legend_panel(width, height, text, *legend);
+  else if (!key.empty())
+    below = track_key_panel(width, height, text, key);
+  if (airspaces.empty()) return below;
+  return united(below, track_key_panel(width, height, text, airspaces, {0, rows_taken(below, height)}));
 }
 
 KeptClearCorner legend_clearance(const PixelRect& panel, std::uint32_t height) {

@@ -2,7 +2,8 @@
 // What the legend says about a scene: for tracks coloured by a metric, a colour bar titled with
 // the metric's name and unit ("Speed (km/h)", "Elapsed time (h:mm)"), its range's ends as the
 // metric prints them, and a "0" tick for signed metrics; for several solid tracks, a key of their
-// names and colours. Drawing is scene/legend.hpp's; this file decides the content.
+// names and colours; the airspace classes drawn, as a key of their own above it. Drawing is scene/legend.hpp's; this
+// file decides the content.
 
 #include <cstdint>
 #include <optional>
@@ -20,6 +21,10 @@ std::optional<ColorLegend> color_legend_for(const TrackStyle& style, const std::
 
 // The key of the visible tracks' names: only for several solid tracks (one track needs no key).
 std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet& tracks);
+
+// The key of the airspace classes drawn (airspace_volumes.hpp), stacked above the other legend:
+// empty without visible airspaces.
+std::vector<TrackKeyEntry> airspace_key_for(const Scene& scene);
 
 // Draws the legend the scene calls for into `image` (nothing with style.legend off).
 void draw_scene_legend(RgbaImage& image, const Scene& scene);

@@ -25,6 +25,7 @@ struct VolumeLimit {
   VolumeHeightReference reference = VolumeHeightReference::Msl;
   double metres = 0.0;
   // No upper limit (UNL): drawn up to a height the scene chooses, faded out at the top.
+  // For an unlimited (or capped) ceiling `metres` holds the height the scene chose to draw it at.
   bool unlimited = false;
 };
 
@@ -44,6 +45,16 @@ struct Volume {
   std::vector<geo::LatLon> boundary;  // closed ring, first point not repeated
   VolumeLimit floor;
   VolumeLimit ceiling;
+
+  // The limits as written in the file ("FL 95", "2000 ft AGL", "GND"), shown on hover; empty:
+  // the limits are printed from the numbers.
+  std::string floor_text;
+  std::string ceiling_text;
+  // The terrain under each boundary point (metres above MSL), which limits above the ground stand
+  // on: filled by place_volumes_on_ground (volume_shapes.hpp); empty until then.
+  std::vector<double> ground_m;
+  // A line (2 points: a cable) is drawn as one wall, not closed back to its start.
+  bool closed = true;
 
   glm::vec3 color_srgb{0.8f, 0.2f, 0.2f};
   float opacity = 0.25f;  // of the walls; outlines are drawn opaque

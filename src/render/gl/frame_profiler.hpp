@@ -33,8 +33,8 @@ class ProfilerError : public RenderError {
 
 // The passes of a frame (DESIGN.md "The frame"), in the order the table lists them; other names
 // are welcome and listed after these in the order first seen.
-inline constexpr std::string_view kStandardPasses[] = {"shadows", "tiles",      "tracks",  "ssao",
-                                                       "compose", "atmosphere", "overlays", "labels"};
+inline constexpr std::string_view kStandardPasses[] = {"shadows",    "tiles",    "tracks",  "ssao",  "compose",
+                                                       "atmosphere", "overlays", "volumes", "labels"};
 
 // Mean and median over the frames that ran a pass (milliseconds); nullopt: no sample.
 struct PassTimes {

@@ -1,0 +1,126 @@
+#include "scene/volume_shapes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "terrain/height_sampler.hpp"
+
+namespace trailray::scene {
+namespace {
+
+double ground_at(const Volume& v, std::size_t i, double neutral) {
+  if (v.ground_m.size() == v.boundary.size() && !std::isnan(v.ground_m[i])) return v.ground_m[i];
+  return std::isnan(neutral) ? 0.0 : neutral;
+}
+
+double limit_height(const VolumeLimit& limit, double ground) {
+  return limit.reference == VolumeHeightReference::Ground ? ground + limit.metres : limit.metres;
+}
+
+bool on_ground(const VolumeLimit& limit) {
+  return limit.reference == VolumeHeightReference::Ground && limit.metres <= 0.0;
+}
+
+// Möller-Trumbore: the distance along the ray to the triangle, nullopt when it misses.
+std::optional<double> hit_triangle(const Ray& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a;
+  const glm::dvec3 p = glm::cross(ray.direction, ac);
+  const double det = glm::dot(ab, p);
+  if (std::abs(det) < 1e-12) return std::nullopt;
+  const glm::dvec3 s = ray.origin - a;
+  const double u = glm::dot(s, p) / det;
+  if (u < 0.0 || u > 1.0) return std::nullopt;
+  const glm::dvec3 q = glm::cross(s, ab);
+  const double w = glm::dot(ray.direction, q) / det;
+  if (w < 0.0 || u + w > 1.0) return std::nullopt;
+  const double t = glm::dot(ac, q) / det;
+  if (t <= 0.0) return std::nullopt;
+  return t;
+}
+
+std::string limit_text(const std::string& written, const VolumeLimit& limit) {
+  if (!written.empty()) return written;
+  if (limit.unlimited) return "UNL";
+  if (limit.reference == VolumeHeightReference::Ground)
+    return limit.metres <= 0.0 ? std::string("GND") : fmt::format("{:.0f} m AGL", limit.metres);
+  return fmt::format("{:.0f} m", limit.metres);
+}
+
+}  // namespace
+
+void place_volumes_on_ground(VolumeSet& set, terrain::HeightSource* heights) {
+  std::vector<geo::LatLon> points;
+  std::vector<Volume*> todo;
+  for (Volume& v : set.volumes)
+    if (v.ground_m.size() != v.boundary.size()) {
+      todo.push_back(&v);
+      points.insert(points.end(), v.boundary.begin(), v.boundary.end());
+    }
+  if (todo.empty()) return;
+  std::vector<double> ground(points.size(), std::numeric_limits<double>::quiet_NaN());
+  if (heights != nullptr && !points.empty()) ground = terrain::HeightSampler(*heights).sample(points);
+  std::size_t at = 0;
+  for (Volume* v : todo) {
+    v->ground_m.assign(ground.begin() + static_cast<std::ptrdiff_t>(at),
+                       ground.begin() + static_cast<std::ptrdiff_t>(at + v->boundary.size()));
+    at += v->boundary.size();
+  }
+  ++set.revision;
+}
+
+std::vector<VolumeShape> volume_shapes(const VolumeSet& set, double neutral_ground_m) {
+  std::vector<VolumeShape> out;
+  for (std::size_t index = 0; index < set.volumes.size(); ++index) {
+    const Volume& v = set.volumes[index];
+    if (!v.visible || v.boundary.size() < 2) continue;
+    VolumeShape shape;
+    shape.volume = index;
+    shape.closed = v.closed && v.boundary.size() > 2;
+    shape.floor_outline = !on_ground(v.floor);
+    shape.faded_top = v.ceiling.unlimited;
+    shape.color_srgb = v.color_srgb;
+    shape.opacity = v.opacity;
+    shape.columns.reserve(v.boundary.size());
+    for (std::size_t i = 0; i < v.boundary.size(); ++i) {
+      const double ground = ground_at(v, i, neutral_ground_m);
+      double bottom = on_ground(v.floor) ? ground - kBuriedFloorM : limit_height(v.floor, ground);
+      const double top = limit_height(v.ceiling, ground);
+      bottom = std::min(bottom, top - kMinWallM);
+      const geo::LatLon& p = v.boundary[i];
+      shape.columns.push_back({ecef_from({p.lat, p.lon, bottom}), ecef_from({p.lat, p.lon, top}), bottom, top});
+    }
+    out.push_back(std::move(shape));
+  }
+  return out;
+}
+
+std::optional<VolumeHit> pick_volume(const std::vector<VolumeShape>& shapes, const Ray& ray, double max_distance_m) {
+  std::optional<VolumeHit> best;
+  double nearest = max_distance_m;
+  for (const VolumeShape& s : shapes) {
+    const std::size_t n = s.columns.size();
+    const std::size_t walls = s.closed ? n : n - 1;
+    for (std::size_t i = 0; i < walls; ++i) {
+      const VolumeColumn& a = s.columns[i];
+      const VolumeColumn& b = s.columns[(i + 1) % n];
+      for (const auto& hit : {hit_triangle(ray, a.bottom_ecef, b.bottom_ecef, b.top_ecef),
+                              hit_triangle(ray, a.bottom_ecef, b.top_ecef, a.top_ecef)})
+        if (hit && *hit < nearest) {
+          nearest = *hit;
+          best = VolumeHit{s.volume, *hit};
+        }
+    }
+  }
+  return best;
+}
+
+std::string volume_description(const Volume& volume) {
+  std::string out = volume.category.empty() ? volume.name : volume.category + " " + volume.name;
+  return fmt::format("{} · {} – {}", out, limit_text(volume.floor_text, volume.floor),
+                     limit_text(volume.ceiling_text, volume.ceiling));
+}
+
+}  // namespace trailray::scene
