@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "app/airspace_options.hpp"
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
 #include "app/track_options.hpp"
@@ -25,6 +26,7 @@ struct ViewArgs {
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
   WaypointArgs waypoints;
+  AirspaceArgs airspace;
   bool verbose = false;
   int frames = 0;
   std::string script, screenshot;
@@ -55,6 +57,7 @@ int run_view(const ViewArgs& a) {
   o.score = a.waypoints.score;
   o.score_rules = a.waypoints.score_rules;
   o.task_file = a.waypoints.task_file;
+  o.airspace_files = a.airspace.files;
   return view::run_viewer(o);
 }
 
@@ -93,6 +96,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
   add_imagery_option(*cmd, args->terrain);
   add_track_style_options(*cmd, args->style);
   add_waypoint_options(*cmd, args->waypoints);
+  add_airspace_options(*cmd, args->airspace);
   add_label_options(*cmd, args->style);
   add_read_options(*cmd, args->read);
   add_cleaning_options(*cmd, args->analysis);

@@ -117,6 +117,21 @@ std::optional<VolumeHit> pick_volume(const std::vector<VolumeShape>& shapes, con
   return best;
 }
 
+std::vector<std::string> volume_tooltip_lines(const Volume& volume) {
+  std::vector<std::string> lines{volume.name.empty() ? std::string("(no name)") : volume.name};
+  if (!volume.category.empty())
+    lines.push_back((volume.kind == VolumeKind::Airspace ? "class: " : "role: ") + volume.category);
+  lines.push_back("floor: " + limit_text(volume.floor_text, volume.floor));
+  lines.push_back("ceiling: " + limit_text(volume.ceiling_text, volume.ceiling));
+  return lines;
+}
+
+void set_volumes_visible(VolumeSet& set, VolumeKind kind, bool visible) {
+  for (Volume& v : set.volumes)
+    if (v.kind == kind) v.visible = visible;
+  ++set.revision;
+}
+
 std::string volume_description(const Volume& volume) {
   std::string out = volume.category.empty() ? volume.name : volume.category + " " + volume.name;
   return fmt::format("{} · {} – {}", out, limit_text(volume.floor_text, volume.floor),

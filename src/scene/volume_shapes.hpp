@@ -55,6 +55,13 @@ struct VolumeHit {
 // mouse, or infinity), nullopt when none.
 std::optional<VolumeHit> pick_volume(const std::vector<VolumeShape>& shapes, const Ray& ray, double max_distance_m);
 
+// The tooltip's lines: the name, then "class: CTR" (or "role: goal"), "floor: GND", "ceiling:
+// 12959 ft" with the limits as written in the file, else from the numbers.
+std::vector<std::string> volume_tooltip_lines(const Volume& volume);
+
+// Shows or hides every volume of a kind and bumps the set's revision.
+void set_volumes_visible(VolumeSet& set, VolumeKind kind, bool visible);
+
 // A line for the tooltip: "CTR MEIRINGEN · GND – 6000 ft" (the limits as written in the file,
 // else from the numbers).
 std::string volume_description(const Volume& volume);

@@ -164,8 +164,7 @@ TEST(AirspaceVolumes, FloorOnTheGroundIsBuriedAndHasNoOutline) {
   place_volumes_on_ground(bare, nullptr);
   const std::vector<VolumeShape> bare_shapes = volume_shapes(bare, 300.0);
   ASSERT_EQ(bare_shapes.size(), 1u);
-  for (const VolumeColumn& c : bare_shapes[0].columns)
-    EXPECT_NEAR(c.bottom_m, 300.0 - kBuriedFloorM, 1e-6);
+  for (const VolumeColumn& c : bare_shapes[0].columns) EXPECT_NEAR(c.bottom_m, 300.0 - kBuriedFloorM, 1e-6);
 }
 
 TEST(AirspaceVolumes, CulledAroundTheTracksLevelledAndCapped) {
@@ -287,6 +286,18 @@ TEST(AirspaceVolumes, DescriptionShowsTheLimitsAsWritten) {
   v.floor_text.clear();
   v.floor = {VolumeHeightReference::Ground, 300.0, false};
   EXPECT_EQ(volume_description(v), "CTR MEIRINGEN · 300 m AGL – 12959 ft");
+  EXPECT_EQ(volume_tooltip_lines(v),
+            (std::vector<std::string>{"MEIRINGEN", "class: CTR", "floor: 300 m AGL", "ceiling: 12959 ft"}));
+}
+
+TEST(AirspaceVolumes, ShownAndHiddenByKind) {
+  VolumeSet set;
+  set.volumes.resize(2);
+  set.volumes[1].kind = VolumeKind::TaskCylinder;
+  set_volumes_visible(set, VolumeKind::Airspace, false);
+  EXPECT_FALSE(set.volumes[0].visible);
+  EXPECT_TRUE(set.volumes[1].visible);
+  EXPECT_EQ(set.revision, 1u);
 }
 
 TEST(AirspaceVolumes, SwissFileAroundInterlaken) {

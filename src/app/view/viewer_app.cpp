@@ -86,6 +86,9 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
     for (scene::Waypoint& w : drawing.waypoints) model_.waypoints.points.push_back(std::move(w));
     model_.volumes = std::move(drawing.volumes);
   }
+  // The task's cylinders, then the airspaces; every volume placed on the terrain.
+  add_airspace_volumes(model_.volumes, o.airspace_files, airspace_region(model_.tracks, model_.waypoints, o.camera),
+                       sources_.heights.get(), diagnostics_);
   controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens));
   controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
@@ -115,6 +118,15 @@ void ViewerApp::adopt(LoadedViewerTracks loaded) {
   if (model_.selected_track < 0 && !model_.tracks.empty()) model_.selected_track = 0;
 }
 
+// The legend window's key: the tracks' names (several solid tracks), then the airspace classes.
+std::vector<scene::TrackKeyEntry> ViewerApp::legend_key(const scene::TrackStyle& style) const {
+  std::vector<scene::TrackKeyEntry> key = scene::track_key_for(style, model_.tracks);
+  scene::Scene with_volumes;
+  with_volumes.volumes = &model_.volumes;
+  for (scene::TrackKeyEntry& entry : scene::airspace_key_for(with_volumes)) key.push_back(std::move(entry));
+  return key;
+}
+
 // The scene as the panels have it now (visible tracks, style, the sun's time).
 scene::Scene ViewerApp::scene() {
   scene::Scene s;
@@ -129,7 +141,7 @@ scene::Scene ViewerApp::scene() {
   // Labels stay out from under the legend window where it first appears.
   if (panels_ && s.style.legend)
     s.label_keep_out.push_back(legend_overlay_rect(
-        scene::color_legend_for(s.style.tracks, s.color_range), scene::track_key_for(s.style.tracks, model_.tracks),
+        scene::color_legend_for(s.style.tracks, s.color_range), legend_key(s.style.tracks),
         static_cast<float>(window_.framebuffer_width()), static_cast<float>(window_.framebuffer_height())));
   return s;
 }
@@ -165,8 +177,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   if (panels_ && draw_overlays(overlay)) controller_.reset_north();
   if (panels_ && model_.settings.style.legend) {
     const scene::TrackStyle& style = model_.settings.style.tracks;
-    draw_legend_overlay(scene::color_legend_for(style, model_.color_range()),
-                        scene::track_key_for(style, model_.tracks));
+    draw_legend_overlay(scene::color_legend_for(style, model_.color_range()), legend_key(style));
   }
   if (width > 0 && height > 0) draw_scene_into_window(wall_s);
   imgui_.render();

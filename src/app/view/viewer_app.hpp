@@ -41,6 +41,7 @@ struct ViewerOptions {
   bool score = false;                    // --score: the first IGC track's XC score drawn
   std::string score_rules = "xcontest";  // --score-rules
   std::string task_file;                 // --task: a task drawn
+  std::vector<std::string> airspace_files;  // --airspace: OpenAir files drawn as volumes
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <limits>
 
 #include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
@@ -50,6 +51,23 @@ void ViewerApp::update_hover(double x_px, double y_px, const scene::Camera& came
   }
   const HoverState picked = pick_track_point(model_.tracks, camera, x_px, y_px, kPickRadiusPx, ground_depth_m);
   if (picked.track >= 0 || !model_.hover.from_chart) model_.hover = picked;
+  // An airspace's wall last: the walls stand everywhere, a track point or a pin is what is looked at.
+  if (picked.track < 0 && !model_.hover.from_chart) {
+    double ground_m = std::numeric_limits<double>::infinity();
+    if (const auto ground = controller_.ground_point_at(x_px, y_px))
+      ground_m = glm::length(scene::ecef_from(*ground) - camera.position());
+    model_.hover.volume = pick_airspace(x_px, y_px, camera, ground_m);
+  }
+}
+
+int ViewerApp::pick_airspace(double x_px, double y_px, const scene::Camera& camera, double ground_m) {
+  if (model_.volumes.volumes.empty()) return -1;
+  if (volume_shapes_revision_ != model_.volumes.revision) {
+    volume_shapes_ = scene::volume_shapes(model_.volumes, neutral_);
+    volume_shapes_revision_ = model_.volumes.revision;
+  }
+  const auto hit = scene::pick_volume(volume_shapes_, camera.ray_through_pixel(x_px, y_px), ground_m);
+  return hit ? static_cast<int>(hit->volume) : -1;
 }
 
 void ViewerApp::handle_mouse(const scene::Camera& camera) {

@@ -27,6 +27,7 @@ struct HoverState {
   std::size_t point = 0;    // flat point index
   bool from_chart = false;  // true: the chart set it (the 3D view marks the point); false: the 3D view
   int waypoint = -1;        // a pin hovered in the 3D view (index into ViewerModel::waypoints), -1: none
+  int volume = -1;          // an airspace's wall under the cursor (index into ViewerModel::volumes), -1: none
 };
 
 // A drag-selected range on the profile chart (flat point indices, inclusive).
@@ -49,6 +50,7 @@ struct ViewerSettings {
   bool show_tracks = true, show_statistics = true, show_shading = false, show_occlusion = false, show_profiler = false,
        show_chart = true, show_replay = true;
   bool show_waypoints = true;  // the pins and labels of waypoints and places (--no-waypoints: false)
+  bool show_airspace = true;   // the volumes of --airspace
 };
 
 // The frame profiler's rows as the profiler panel shows them (a plain table, so the panel does not
@@ -86,7 +88,7 @@ class ColorRangeCache {
 struct ViewerModel {
   scene::TrackSet tracks;
   scene::WaypointSet waypoints;  // the files' waypoints (as they load), then the places of --labels
-  scene::VolumeSet volumes;      // --task: the task's cylinders
+  scene::VolumeSet volumes;      // --task: the task's cylinders, then the airspaces of --airspace
   ViewerSettings settings;
   HoverState hover;
   ChartSelection selection;

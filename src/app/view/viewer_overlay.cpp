@@ -8,6 +8,7 @@
 #include "app/view/tooltip.hpp"
 #include "app/view/track_picking.hpp"
 #include "app/view/waypoint_view.hpp"
+#include "scene/volume_shapes.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -49,10 +50,25 @@ void waypoint_hover(const OverlayState& s, const scene::Waypoint& w) {
   ImGui::EndTooltip();
 }
 
+void volume_hover(const OverlayState& s, const scene::Volume& v) {
+  if (s.cursor) {
+    const ImVec2 at = to_screen(*s.cursor);
+    ImGui::SetNextWindowPos({at.x + 16.0f, at.y + 8.0f});
+  }
+  ImGui::BeginTooltip();
+  const std::vector<std::string> lines = scene::volume_tooltip_lines(v);
+  ImGui::TextUnformatted(lines.front().c_str());
+  ImGui::Separator();
+  for (std::size_t i = 1; i < lines.size(); ++i) ImGui::TextUnformatted(lines[i].c_str());
+  ImGui::EndTooltip();
+}
+
 void hover(const OverlayState& s, ImDrawList* list) {
   const HoverState& h = s.model.hover;
   if (h.waypoint >= 0 && h.waypoint < static_cast<int>(s.model.waypoints.points.size()))
     return waypoint_hover(s, s.model.waypoints.points[static_cast<std::size_t>(h.waypoint)]);
+  if (h.track < 0 && h.volume >= 0 && h.volume < static_cast<int>(s.model.volumes.volumes.size()))
+    return volume_hover(s, s.model.volumes.volumes[static_cast<std::size_t>(h.volume)]);
   if (h.track < 0 || h.track >= static_cast<int>(s.model.tracks.size())) return;
   const scene::Track& t = s.model.tracks[static_cast<std::size_t>(h.track)];
   if (h.point >= t.point_count()) return;

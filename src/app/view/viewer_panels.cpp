@@ -13,6 +13,7 @@
 #include "app/view/panel_layout.hpp"
 #include "app/view/profile_chart.hpp"
 #include "app/view/viewer_panels.hpp"
+#include "scene/volume_shapes.hpp"
 #include "scene/waypoint_building.hpp"
 
 namespace trailray::app::view {
@@ -201,6 +202,11 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     ImGui::SameLine();
     if (ImGui::Checkbox("waypoints", &model.settings.show_waypoints))
       scene::set_waypoints_visible(model.waypoints, model.settings.show_waypoints);
+  }
+  if (!model.volumes.volumes.empty()) {
+    ImGui::SameLine();
+    if (ImGui::Checkbox("airspace", &model.settings.show_airspace))
+      scene::set_volumes_visible(model.volumes, scene::VolumeKind::Airspace, model.settings.show_airspace);
   }
   ImGui::SameLine();
   ImGui::Checkbox("labels", &model.settings.style.labels.enabled);

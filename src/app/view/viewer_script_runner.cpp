@@ -8,6 +8,7 @@
 #include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
 #include "app/view/waypoint_view.hpp"
+#include "scene/volume_shapes.hpp"
 
 namespace trailray::app::view {
 
@@ -80,6 +81,10 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
           const scene::Waypoint& w = model_.waypoints.points[static_cast<std::size_t>(h.waypoint)];
           fmt::print("hover: waypoint {} '{}'\n", h.waypoint, w.name);
           for (const std::string& line : waypoint_tooltip_lines(w)) fmt::print("  {}\n", line);
+        } else if (h.track < 0 && h.volume >= 0 && h.volume < static_cast<int>(model_.volumes.volumes.size())) {
+          const scene::Volume& v = model_.volumes.volumes[static_cast<std::size_t>(h.volume)];
+          fmt::print("hover: airspace {} '{}'\n", h.volume, v.name);
+          for (const std::string& line : scene::volume_tooltip_lines(v)) fmt::print("  {}\n", line);
         } else if (h.track < 0) {
           fmt::print("hover: none\n");
         } else {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/airspace_options.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/view/camera_controller.hpp"
@@ -21,8 +22,10 @@
 #include "render/platform/window.hpp"
 #include "render/renderer.hpp"
 #include "scene/framing.hpp"
+#include "scene/legend.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
+#include "scene/volume_shapes.hpp"
 
 namespace trailray::app::view {
 
@@ -50,6 +53,9 @@ class ViewerApp {
   scene::KeptClearCorner legend_corner(const scene::Lens& lens);
   FramingRoom framing_room(const scene::Lens& lens);
   void update_hover(double x_px, double y_px, const scene::Camera& camera);
+  // The airspace wall under the pixel, in front of the terrain `ground_m` away (infinity: none).
+  int pick_airspace(double x_px, double y_px, const scene::Camera& camera, double ground_m);
+  std::vector<scene::TrackKeyEntry> legend_key(const scene::TrackStyle& style) const;
   void fly_to_track(int index);
   void fly_to_waypoint(int index);  // index into model_.waypoints
   void follow_replay();             // the replay's camera follow (chase, or orbit round the marker)
@@ -66,6 +72,9 @@ class ViewerApp {
   TerminalDiagnostics diagnostics_;
   TerrainSources sources_;
   double neutral_ = 0.0;
+  // The airspaces' walls as the hover picks them, made again when the set's revision changes.
+  std::vector<scene::VolumeShape> volume_shapes_;
+  std::uint64_t volume_shapes_revision_ = ~std::uint64_t{0};
   scene::RecordedPoints recorded_;
   ViewerModel model_;
   // GL objects after the window (the context) and before nothing else: destroyed first.
