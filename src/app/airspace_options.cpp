@@ -77,6 +77,10 @@ void add_airspace_volumes(scene::VolumeSet& set, const std::vector<std::string>&
     const std::size_t left_out = built.outside_region + built.above_floor + built.over_cap;
     diagnostics.note(fmt::format("{}: {} of {} airspaces drawn ({} boundary points of {})", path, built.volumes.size(),
                                  read.file.airspaces.size(), built.points_after, built.points_before));
+    // Culled and levelled as intended: a note; the cap reached (near airspaces not drawn): a warning.
+    if (built.over_cap > 0)
+      diagnostics.warning(fmt::format("{}: {} airspaces near the tracks not drawn (at most {} are): the nearest kept",
+                                      path, built.over_cap, options.max_volumes));
     if (left_out > 0)
       diagnostics.note(fmt::format(
           "{}: left out {} away from the tracks, {} with a floor above {:.0f} m, {} over "
