@@ -21,18 +21,18 @@ struct ClassEntry {
 
 // The table of airspace_volumes.hpp, in the order the legend lists the classes.
 const std::array<ClassEntry, 10> kClasses{{
-    {{"CTR", "", ""}, {{0.86f, 0.13f, 0.13f}, 0.26f}},
-    {{"R", "P", "GP"}, {{0.93f, 0.30f, 0.10f}, 0.26f}},
-    {{"Q", "", ""}, {{0.98f, 0.58f, 0.08f}, 0.24f}},
-    {{"A", "B", ""}, {{0.52f, 0.22f, 0.78f}, 0.20f}},
-    {{"C", "", ""}, {{0.16f, 0.28f, 0.86f}, 0.20f}},
-    {{"D", "", ""}, {{0.20f, 0.55f, 0.98f}, 0.22f}},
-    {{"E", "", ""}, {{0.22f, 0.68f, 0.36f}, 0.18f}},
-    {{"F", "G", ""}, {{0.58f, 0.66f, 0.30f}, 0.18f}},
-    {{"TMZ", "RMZ", ""}, {{0.58f, 0.60f, 0.64f}, 0.20f}},
-    {{"W", "", ""}, {{0.30f, 0.78f, 0.86f}, 0.18f}},
+    {{"CTR", "", ""}, {{0.86f, 0.13f, 0.13f}, 0.16f}},
+    {{"R", "P", "GP"}, {{0.93f, 0.30f, 0.10f}, 0.16f}},
+    {{"Q", "", ""}, {{0.98f, 0.58f, 0.08f}, 0.15f}},
+    {{"A", "B", ""}, {{0.52f, 0.22f, 0.78f}, 0.12f}},
+    {{"C", "", ""}, {{0.16f, 0.28f, 0.86f}, 0.12f}},
+    {{"D", "", ""}, {{0.20f, 0.55f, 0.98f}, 0.14f}},
+    {{"E", "", ""}, {{0.22f, 0.68f, 0.36f}, 0.11f}},
+    {{"F", "G", ""}, {{0.58f, 0.66f, 0.30f}, 0.11f}},
+    {{"TMZ", "RMZ", ""}, {{0.58f, 0.60f, 0.64f}, 0.12f}},
+    {{"W", "", ""}, {{0.30f, 0.78f, 0.86f}, 0.11f}},
 }};
-const AirspaceClassStyle kOtherClass{{0.62f, 0.52f, 0.74f}, 0.18f};
+const AirspaceClassStyle kOtherClass{{0.62f, 0.52f, 0.74f}, 0.11f};
 
 std::size_t class_index(std::string_view normalized) {
   for (std::size_t i = 0; i < kClasses.size(); ++i)

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "scene/volume_shapes.hpp"
+
 namespace trailray::scene {
 namespace {
 
@@ -97,6 +99,11 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
       out.push_back({w.name, place ? LabelKind::place : LabelKind::waypoint, w.priority, w.marker_ecef,
                      place ? kPlaceColor : kWaypointColor, pin.px, pin.m, pin.width_px, pin.width_m});
     }
+  // Airspaces' names after every point's (as places of the lowest priority), in their class's
+  // colour: where the volume's middle is, halfway up.
+  if (scene.volumes != nullptr)
+    for (const VolumeLabel& v : airspace_labels(*scene.volumes))
+      out.push_back({v.text, LabelKind::place, 0, v.anchor_ecef, track_label_color(v.color_srgb)});
   return out;
 }
 

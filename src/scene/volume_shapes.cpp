@@ -117,6 +117,27 @@ std::optional<VolumeHit> pick_volume(const std::vector<VolumeShape>& shapes, con
   return best;
 }
 
+std::vector<VolumeLabel> airspace_labels(const VolumeSet& set) {
+  std::vector<VolumeLabel> out;
+  for (const Volume& v : set.volumes) {
+    if (!v.visible || v.kind != VolumeKind::Airspace || v.name.empty() || v.boundary.empty()) continue;
+    double lat = 0.0, lon = 0.0, ground = 0.0;
+    int grounds = 0;
+    for (std::size_t i = 0; i < v.boundary.size(); ++i) {
+      lat += v.boundary[i].lat;
+      lon += v.boundary[i].lon;
+      if (i < v.ground_m.size() && !std::isnan(v.ground_m[i])) ground += v.ground_m[i], ++grounds;
+    }
+    const auto n = static_cast<double>(v.boundary.size());
+    ground = grounds > 0 ? ground / grounds : 0.0;
+    const double floor = std::max(limit_height(v.floor, ground), ground);
+    const double top = v.ceiling.unlimited ? floor + 1000.0 : limit_height(v.ceiling, ground);
+    std::string text = v.category.empty() ? v.name : v.category + " " + v.name;
+    out.push_back({std::move(text), ecef_from({lat / n, lon / n, 0.5 * (floor + std::max(top, floor))}), v.color_srgb});
+  }
+  return out;
+}
+
 std::vector<std::string> volume_tooltip_lines(const Volume& volume) {
   std::vector<std::string> lines{volume.name.empty() ? std::string("(no name)") : volume.name};
   if (!volume.category.empty())

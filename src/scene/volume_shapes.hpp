@@ -62,6 +62,15 @@ std::vector<std::string> volume_tooltip_lines(const Volume& volume);
 // Shows or hides every volume of a kind and bumps the set's revision.
 void set_volumes_visible(VolumeSet& set, VolumeKind kind, bool visible);
 
+// Where an airspace's name is shown on the picture: over the middle of its boundary, halfway
+// between its floor and its ceiling (an unlimited one: 1000 m over the floor), "CTR MEIRINGEN".
+struct VolumeLabel {
+  std::string text;
+  glm::dvec3 anchor_ecef{};
+  glm::vec3 color_srgb{1.0f};
+};
+std::vector<VolumeLabel> airspace_labels(const VolumeSet& set);
+
 // A line for the tooltip: "CTR MEIRINGEN · GND – 6000 ft" (the limits as written in the file,
 // else from the numbers).
 std::string volume_description(const Volume& volume);

@@ -21,9 +21,9 @@ namespace trailray::render {
 struct VolumeStyle {
   float outline_px = 2.0f;  // the outlines' width in picture pixels (times the pixel ratio)
   // Walls farther than this fade, to `far_alpha` of their opacity at `fade_end_m`.
-  float fade_start_m = 15000.0f;
-  float fade_end_m = 120000.0f;
-  float far_alpha = 0.3f;
+  float fade_start_m = 8000.0f;
+  float fade_end_m = 60000.0f;
+  float far_alpha = 0.25f;
 };
 
 class VolumePass {
