@@ -70,6 +70,7 @@ TEST_F(VolumePassTest, AVolumeInFrontTintsItsProjectionAndNothingElse) {
     SCOPED_TRACE(encoding == DistanceEncoding::float32 ? "float distances" : "packed distances");
     drawer.renderer().set_distance_encoding(encoding);
     scene::Scene scene = test::plain_scene(kPlace, 0.0);
+    scene.style.labels.enabled = false;  // the box's name is the labels' business
     const scene::RgbaImage without = drawer.draw(*camera.value, scene).image;
     scene.volumes = &set;
     const test::Drawn with = drawer.draw(*camera.value, scene);
@@ -125,6 +126,7 @@ TEST_F(VolumePassTest, ARidgeInFrontHidesAVolumeCompletely) {
   const auto camera = scene::camera_at({{at(-6000, 0).lat, at(-6000, 0).lon, 1300.0}, 90.0, 0.0}, kLens, 1000.0);
   ASSERT_TRUE(camera.ok()) << camera.error;
   scene::Scene scene = test::plain_scene(kPlace, 1000.0);
+  scene.style.labels.enabled = false;
   const scene::RgbaImage without = drawer.draw(*camera.value, scene).image;
   scene::VolumeSet behind;
   behind.volumes = {box(3000.0, -500.0, 1000.0, 1100.0, 1500.0)};

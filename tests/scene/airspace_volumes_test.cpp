@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "geo/wgs84.hpp"
+#include "scene/label_layout.hpp"
 #include "scene/volume_shapes.hpp"
 #include "terrain/east_profile_source.hpp"
 #include "test_support.hpp"
@@ -288,6 +289,26 @@ TEST(AirspaceVolumes, DescriptionShowsTheLimitsAsWritten) {
   EXPECT_EQ(volume_description(v), "CTR MEIRINGEN · 300 m AGL – 12959 ft");
   EXPECT_EQ(volume_tooltip_lines(v),
             (std::vector<std::string>{"MEIRINGEN", "class: CTR", "floor: 300 m AGL", "ceiling: 12959 ft"}));
+}
+
+TEST(AirspaceVolumes, NamesAreLabelledHalfwayUpOverTheMiddle) {
+  air::AirspaceFile file;
+  file.airspaces.push_back(airspace("CTR", "MIDDLE", square(-1000.0, -1000.0, 2000.0), msl(1000.0), msl(3000.0)));
+  file.airspaces.push_back(airspace("D", "", square(0, 0, 1000)));  // no name: no label
+  VolumeSet set;
+  set.volumes = airspace_volumes(file, "n.txt", {}).volumes;
+  Scene scene;
+  scene.volumes = &set;
+  const std::vector<LabelCandidate> labels = label_candidates(scene);
+  ASSERT_EQ(labels.size(), 1u);
+  EXPECT_EQ(labels[0].text, "CTR MIDDLE");
+  const geo::Geodetic g = geo::geodetic_from_ecef(labels[0].anchor_ecef);
+  EXPECT_NEAR(g.height_m, 2000.0, 1.0);
+  EXPECT_NEAR(g.lat_deg, kLat, 1e-4);
+  EXPECT_NEAR(g.lon_deg, kLon, 1e-4);
+  EXPECT_GT(labels[0].color.r, labels[0].color.b);  // the class's red
+  set.volumes[0].visible = false;
+  EXPECT_TRUE(label_candidates(scene).empty());
 }
 
 TEST(AirspaceVolumes, ShownAndHiddenByKind) {
