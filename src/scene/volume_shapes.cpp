@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -47,6 +48,19 @@ std::string limit_text(const std::string& written, const VolumeLimit& limit) {
   if (limit.reference == VolumeHeightReference::Ground)
     return limit.metres <= 0.0 ? std::string("GND") : fmt::format("{:.0f} m AGL", limit.metres);
   return fmt::format("{:.0f} m", limit.metres);
+}
+
+// "CTR MEIRINGEN"; a name that already starts with its class ("CTR Muenchen") is not prefixed again.
+std::string class_and_name(const Volume& v) {
+  if (v.category.empty()) return v.name;
+  if (v.name.size() >= v.category.size()) {
+    bool same = true;
+    for (std::size_t i = 0; i < v.category.size() && same; ++i)
+      same = std::toupper(static_cast<unsigned char>(v.name[i])) == static_cast<unsigned char>(v.category[i]);
+    const bool word_ends = v.name.size() == v.category.size() || v.name[v.category.size()] == ' ';
+    if (same && word_ends) return v.name;
+  }
+  return v.category + " " + v.name;
 }
 
 }  // namespace
@@ -132,8 +146,8 @@ std::vector<VolumeLabel> airspace_labels(const VolumeSet& set) {
     ground = grounds > 0 ? ground / grounds : 0.0;
     const double floor = std::max(limit_height(v.floor, ground), ground);
     const double top = v.ceiling.unlimited ? floor + 1000.0 : limit_height(v.ceiling, ground);
-    std::string text = v.category.empty() ? v.name : v.category + " " + v.name;
-    out.push_back({std::move(text), ecef_from({lat / n, lon / n, 0.5 * (floor + std::max(top, floor))}), v.color_srgb});
+    out.push_back(
+        {class_and_name(v), ecef_from({lat / n, lon / n, 0.5 * (floor + std::max(top, floor))}), v.color_srgb});
   }
   return out;
 }
@@ -154,8 +168,7 @@ void set_volumes_visible(VolumeSet& set, VolumeKind kind, bool visible) {
 }
 
 std::string volume_description(const Volume& volume) {
-  std::string out = volume.category.empty() ? volume.name : volume.category + " " + volume.name;
-  return fmt::format("{} · {} – {}", out, limit_text(volume.floor_text, volume.floor),
+  return fmt::format("{} · {} – {}", class_and_name(volume), limit_text(volume.floor_text, volume.floor),
                      limit_text(volume.ceiling_text, volume.ceiling));
 }
 

@@ -287,6 +287,9 @@ TEST(AirspaceVolumes, DescriptionShowsTheLimitsAsWritten) {
   v.floor_text.clear();
   v.floor = {VolumeHeightReference::Ground, 300.0, false};
   EXPECT_EQ(volume_description(v), "CTR MEIRINGEN · 300 m AGL – 12959 ft");
+  v.name = "CTR Meiringen";  // the class already in the name: not twice
+  EXPECT_EQ(volume_description(v), "CTR Meiringen · 300 m AGL – 12959 ft");
+  v.name = "MEIRINGEN";
   EXPECT_EQ(volume_tooltip_lines(v),
             (std::vector<std::string>{"MEIRINGEN", "class: CTR", "floor: 300 m AGL", "ceiling: 12959 ft"}));
 }
