@@ -1,6 +1,6 @@
-// `trailray render --airspace FILE` as a user runs it: the airspaces around the camera tint the
-// picture and the note says how many were drawn; a broken file stops with FILE:LINE, an unknown
-// record is a warning.
+// `--airspace FILE` as a user runs it: in `render` the airspaces around the camera tint the
+// picture and the note says how many were drawn, a broken file stops with FILE:LINE, an unknown
+// record is a warning; in `view` hovering a wall prints the airspace's name, class and limits.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -58,6 +58,31 @@ TEST(RenderAirspaceCli, AnAirspaceInViewChangesThePictureAndIsCounted) {
   EXPECT_NE(drawn.out.find(file + ": 1 of 1 airspaces drawn"), std::string::npos) << drawn.out;
   EXPECT_NE(drawn.out.find(file + ":5:1: unknown OpenAir record 'XX'"), std::string::npos) << drawn.out;
   EXPECT_NE(bytes_of(env.path("plain.png")), bytes_of(env.path("box.png")));
+}
+
+TEST(ViewAirspaceCli, HoveringAWallPrintsTheAirspaceAndTheSkyNothing) {
+  Env env;
+  // A box 1 km wide up to 300 m around the point looked at from 1.4 km south, 10 degrees down:
+  // the view's centre meets its south wall 900 m away (84 m up) before the ground; the top row
+  // looks 12.5 degrees up, over its ceiling.
+  const std::string file = env.write("box.txt",
+                                     "AC D\nAN BOX\nAL GND\nAH 300m MSL\n"
+                                     "DP 46:41:44 N 007:50:36 E\nDP 46:41:44 N 007:51:24 E\n"
+                                     "DP 46:42:16 N 007:51:24 E\nDP 46:42:16 N 007:50:36 E\n");
+  const std::string script = env.write("hover.txt", "hover 240 135\nprint-hover\nhover 240 1\nprint-hover\n");
+  const std::string auth = env.write("Xauthority", "");
+  const std::string command =
+      "XDG_CONFIG_HOME=" + shell_quote(env.path("config")) + " XDG_CACHE_HOME=" + shell_quote(env.path("cache")) +
+      " TRAILRAY_CONFIG= xvfb-run -a -f " + shell_quote(auth) + " " + shell_quote(TRAILRAY_BINARY) +
+      " view --imagery none --terrain none --look-at 46.70,7.85,0 --distance 1400 --heading 0 --pitch -10"
+      " --size 480x270 --airspace " +
+      shell_quote(file) + " --script " + shell_quote(script) + " 2>&1";
+  const auto r = run_command(command);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("hover: airspace 0 'BOX'\n  BOX\n  class: D\n  floor: GND\n  ceiling: 300m MSL"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("hover: none"), std::string::npos) << "over the ceiling\n" << r.out;
 }
 
 TEST(RenderAirspaceCli, ABrokenFileStopsWithItsLine) {
