@@ -11,6 +11,7 @@
 
 #include "geo/wgs84.hpp"
 #include "scene/label_layout.hpp"
+#include "scene/legend_content.hpp"
 #include "scene/volume_shapes.hpp"
 #include "terrain/east_profile_source.hpp"
 #include "test_support.hpp"
@@ -312,6 +313,41 @@ TEST(AirspaceVolumes, NamesAreLabelledHalfwayUpOverTheMiddle) {
   EXPECT_GT(labels[0].color.r, labels[0].color.b);  // the class's red
   set.volumes[0].visible = false;
   EXPECT_TRUE(label_candidates(scene).empty());
+}
+
+TEST(AirspaceVolumes, TheLegendStacksTheClassesAboveTheColourBar) {
+  air::AirspaceFile file;
+  file.airspaces.push_back(airspace("CTR", "a", square(0, 0, 1000)));
+  file.airspaces.push_back(airspace("Q", "b", square(0, 0, 1000)));
+  VolumeSet set;
+  set.volumes = airspace_volumes(file, "l.txt", {}).volumes;
+  Scene scene;
+  scene.volumes = &set;
+  const std::vector<TrackKeyEntry> key = airspace_key_for(scene);
+  ASSERT_EQ(key.size(), 2u);
+  EXPECT_EQ(key[0].name, "CTR control zone");
+  EXPECT_EQ(key[0].color_srgb, airspace_class_style("CTR").color_srgb);
+  const PixelRect alone = scene_legend_panel(640, 360, scene);
+  EXPECT_FALSE(alone.empty());
+  // With a colour bar as well: one panel over both, the bar's below.
+  scene.style.tracks.color_by = track::ColorMetric::altitude;
+  scene.color_range = track::ValueRange{500.0, 1500.0};
+  const PixelRect both = scene_legend_panel(640, 360, scene);
+  scene.volumes = nullptr;
+  const PixelRect bar = scene_legend_panel(640, 360, scene);
+  EXPECT_TRUE(both.contains(bar));
+  EXPECT_GT(both.height, bar.height + alone.height / 2);
+  EXPECT_EQ(both.bottom(), bar.bottom());
+  RgbaImage image;
+  image.width = 640, image.height = 360;
+  image.rgba.assign(640u * 360u * 4u, 0);
+  scene.volumes = &set;
+  draw_scene_legend(image, scene);
+  std::size_t painted_above_bar = 0;
+  for (int y = both.y; y < bar.y; ++y)
+    for (int x = both.x; x < both.right(); ++x)
+      painted_above_bar += image.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))[3] > 0;
+  EXPECT_GT(painted_above_bar, 100u);
 }
 
 TEST(AirspaceVolumes, ShownAndHiddenByKind) {
