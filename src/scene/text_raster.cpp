@@ -35,20 +35,12 @@ FaceHandle load_face(FT_Library library, std::span<const unsigned char> bytes, c
   const FT_Error error = FT_New_Memory_Face(library, bytes.data(), static_cast<FT_Long>(bytes.size()), 0, &face);
   if (error != 0)
     throw SceneError(std::string("FreeType cannot read the embedded font ") + name + " (error " +
-                      std::to_string(error) + ")");
+                     std::to_string(error) + ")");
   return FaceHandle(face);
 }
 
 int round_26_6(FT_Pos value) { return static_cast<int>((value + 32) >> 6); }  // 26.6 fixed point -> pixels
 int ceil_26_6(FT_Pos value) { return static_cast<int>((value + 63) >> 6); }
-
-std::size_t utf8_sequence_length(unsigned char lead) {
-  if (lead < 0x80) return 1;
-  if (lead >= 0xC2 && lead <= 0xDF) return 2;  // 0xC0, 0xC1 only start overlong forms
-  if (lead >= 0xE0 && lead <= 0xEF) return 3;
-  if (lead >= 0xF0 && lead <= 0xF4) return 4;
-  return 0;
-}
 
 }  // namespace
 
@@ -166,28 +158,10 @@ std::string TextRasterizer::ellipsize(std::string_view text, std::size_t max_cod
 std::u32string decode_utf8(std::string_view text) {
   std::u32string out;
   out.reserve(text.size());
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto lead = static_cast<unsigned char>(text[i]);
-    const std::size_t length = utf8_sequence_length(lead);
-    if (length == 0) {  // a continuation byte or an impossible lead byte
-      out.push_back(kReplacementCharacter);
-      ++i;
-      continue;
-    }
-    char32_t value = length == 1 ? lead : lead & (0x7F >> length);
-    std::size_t used = 1;
-    for (; used < length && i + used < text.size(); ++used) {
-      const auto next = static_cast<unsigned char>(text[i + used]);
-      if ((next & 0xC0) != 0x80) break;
-      value = (value << 6) | (next & 0x3F);
-    }
-    // Shortest form only (no overlong 3- and 4-byte forms), no surrogates, nothing past U+10FFFF.
-    const bool complete = used == length;
-    const bool valid = complete && !(length == 3 && value < 0x800) && !(length == 4 && value < 0x10000) &&
-                       !(value >= 0xD800 && value <= 0xDFFF) && value <= 0x10FFFF;
-    out.push_back(valid ? value : kReplacementCharacter);
-    i += used;  // a broken sequence resumes at the byte that broke it
+  for (std::size_t i = 0; i < text.size();) {
+    const geo::Utf8Step step = geo::next_utf8(text.substr(i));
+    out.push_back(step.code_point);  // U+FFFD for a broken sequence, which resumes at the byte that broke it
+    i += step.length;
   }
   return out;
 }

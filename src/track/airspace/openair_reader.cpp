@@ -21,27 +21,10 @@ constexpr double kMaxRadiusM = 2'000'000.0;
 // file of nothing but huge circles would fill memory.
 constexpr std::size_t kMaxPointsPerFile = 5'000'000;
 
-bool is_valid_utf8(std::string_view s) {
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const std::size_t length = c < 0x80             ? 1
-                               : (c & 0xE0) == 0xC0 ? 2
-                               : (c & 0xF0) == 0xE0 ? 3
-                               : (c & 0xF8) == 0xF0 ? 4
-                                                    : 0;
-    if (length == 0 || length > s.size() - i) return false;
-    for (std::size_t k = 1; k < length; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
-    i += length;
-  }
-  return true;
-}
-
 // The file as UTF-8: the BOM dropped; Latin-1 bytes converted when the file is not UTF-8.
 std::string as_utf8(std::string_view bytes, bool& converted) {
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
-  converted = !is_valid_utf8(bytes);
+  converted = !geo::is_valid_utf8(bytes);
   if (!converted) return std::string(bytes);
   std::string out;
   out.reserve(bytes.size() + bytes.size() / 8);

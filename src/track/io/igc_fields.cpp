@@ -5,35 +5,10 @@
 #include <array>
 #include <utility>
 
+#include "geo/utf8.hpp"
 #include "track/io/parse_util.hpp"
 
 namespace trailray::track::detail {
-namespace {
-
-// Structurally valid UTF-8 (lead and continuation bytes; overlong 3/4-byte forms not checked).
-bool valid_utf8(std::string_view s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    if (c < 0x80)
-      n = 0;
-    else if (c >= 0xc2 && c <= 0xdf)
-      n = 1;
-    else if (c >= 0xe0 && c <= 0xef)
-      n = 2;
-    else if (c >= 0xf0 && c <= 0xf4)
-      n = 3;
-    else
-      return false;
-    if (n > s.size() - i - 1) return false;
-    for (std::size_t k = 1; k <= n; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
-    i += n + 1;
-  }
-  return true;
-}
-
-}  // namespace
 
 bool numeric_extension(std::string_view v) {
   std::size_t i = 0;
@@ -56,7 +31,7 @@ std::string excerpt(std::string_view s) {
 std::string header_text(std::string_view s) {
   std::string out;
   out.reserve(s.size());
-  const bool utf8 = valid_utf8(s);
+  const bool utf8 = geo::is_valid_utf8(s);
   for (char ch : s) {
     auto c = static_cast<unsigned char>(ch);
     if (c < 0x20 || c == 0x7f) {
