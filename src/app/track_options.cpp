@@ -11,8 +11,7 @@ void add_track_options(CLI::App& cmd, TrackOptions& o) {
 }
 
 void add_read_options(CLI::App& cmd, track::ReadOptions& read) {
-  cmd.add_flag("--strict", read.strict,
-               "Treat reader warnings (cut-off file, invalid points, bad records) as errors");
+  cmd.add_flag("--strict", read.strict, "Treat reader warnings (cut-off file, invalid points, bad records) as errors");
   const std::map<std::string, track::ReadOptions::IgcAltitude> altitudes{
       {"auto", track::ReadOptions::IgcAltitude::Auto},
       {"gnss", track::ReadOptions::IgcAltitude::Gnss},
@@ -24,7 +23,8 @@ void add_read_options(CLI::App& cmd, track::ReadOptions& read) {
            for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
            read.igc_altitude = altitudes.at(key);
          },
-         "IGC altitude used as elevation: auto (GNSS when the fix is valid, else pressure), gnss, pressure")
+         "IGC altitude used as elevation (the 3D track's, the statistics'): auto (GNSS when the fix is valid, "
+         "else pressure), gnss, pressure. The viewer's chart shows the pressure altitude too")
       ->check(CLI::IsMember({"auto", "gnss", "pressure"}, CLI::ignore_case))
       ->type_name("auto|gnss|pressure");
 }

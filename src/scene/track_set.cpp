@@ -39,6 +39,25 @@ double Track::lowest_altitude() const {
   return lowest;
 }
 
+bool Track::has_pressure_altitude() const {
+  return std::any_of(pressure_altitude_m.begin(), pressure_altitude_m.end(), [](double h) { return !std::isnan(h); });
+}
+
+// Cleaning smooths both alike, so where `ele` was the pressure altitude the two differ only by
+// the float the pressure altitude is kept in (well under 1 cm); a GNSS altitude differs from it by
+// metres somewhere.
+bool Track::altitude_is_pressure() const {
+  constexpr double kSame = 0.01;  // metres
+  bool any = false;
+  for (std::size_t i = 0; i < altitude_m.size(); ++i) {
+    const double p = pressure_altitude(i);
+    if (std::isnan(p) || std::isnan(altitude_m[i])) continue;
+    if (std::fabs(altitude_m[i] - p) > kSame) return false;
+    any = true;
+  }
+  return any;
+}
+
 std::size_t Track::points_with_value() const {
   std::size_t n = 0;
   for (const TrackPolyline& line : geometry.segments)

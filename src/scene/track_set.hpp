@@ -42,17 +42,18 @@ struct Track {
   track::TrackSummary summary;  // raw and clean statistics, as `trailray stats` prints them
 
   // Per flat point (NaN where a point has no such value).
-  std::vector<std::size_t> segment_first;  // flat index of each non-empty segment's first point
-  std::vector<double> distance_m;          // cumulative 2D distance from the start (gaps add nothing)
-  std::vector<double> time_unix_s;         // timestamp
-  std::vector<double> elapsed_s;           // since the track's first timestamp
-  std::vector<double> altitude_m;          // recorded elevation
-  std::vector<double> ground_m;            // terrain height below (NaN: no terrain, or not sampled yet)
-  std::vector<double> speed_kmh;           // windowed horizontal speed
-  std::vector<double> vspeed_ms;           // windowed vertical speed, positive climbing
-  std::vector<double> heart_rate_bpm;      // recorded
-  std::vector<std::size_t> timed_points;   // the flat indices of the points with a time, in order
-  bool times_rise = true;                  // their times never go back (cleaned tracks' do not)
+  std::vector<std::size_t> segment_first;   // flat index of each non-empty segment's first point
+  std::vector<double> distance_m;           // cumulative 2D distance from the start (gaps add nothing)
+  std::vector<double> time_unix_s;          // timestamp
+  std::vector<double> elapsed_s;            // since the track's first timestamp
+  std::vector<double> altitude_m;           // recorded elevation (what the 3D track is drawn at)
+  std::vector<double> pressure_altitude_m;  // IGC pressure altitude (against 1013.25 hPa)
+  std::vector<double> ground_m;             // terrain height below (NaN: no terrain, or not sampled yet)
+  std::vector<double> speed_kmh;            // windowed horizontal speed
+  std::vector<double> vspeed_ms;            // windowed vertical speed, positive climbing
+  std::vector<double> heart_rate_bpm;       // recorded
+  std::vector<std::size_t> timed_points;    // the flat indices of the points with a time, in order
+  bool times_rise = true;                   // their times never go back (cleaned tracks' do not)
 
   // What is drawn: one polyline per non-empty segment, points in ECEF (points without an
   // elevation on the ground), the colour values of the style's metric, curtain heights.
@@ -74,6 +75,15 @@ struct Track {
   std::optional<double> end_time() const;
   // The lowest recorded altitude (NaN: no point has one).
   double lowest_altitude() const;
+  // A point's pressure altitude (NaN: none, or no such array).
+  double pressure_altitude(std::size_t point) const {
+    return point < pressure_altitude_m.size() ? pressure_altitude_m[point] : track::kMissing;
+  }
+  // Some point has a pressure altitude (an IGC file with a barometer).
+  bool has_pressure_altitude() const;
+  // The altitude drawn is the pressure altitude (`--igc-altitude pressure`, or a file whose GNSS
+  // channel is empty): every point with both has the same two altitudes. False without one.
+  bool altitude_is_pressure() const;
   // Points with a colour value.
   std::size_t points_with_value() const;
   void bump_revision() { ++revision; }

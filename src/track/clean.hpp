@@ -30,7 +30,8 @@
 //        (geo::local_mean_offset: within 0.1 mm of the exact 3D mean); a window reaching
 //        further than geo::kLocalMeanMaxOffsetDeg, or near a pole, averages ECEF coordinates;
 //      - elevation (the "up" axis) averaged over the neighbours that have one; a point without
-//        elevation stays without;
+//        elevation stays without; the IGC pressure altitude likewise, on its own (so a flight's
+//        two altitudes stay comparable, and equal where `ele` is the pressure altitude);
 //      - near a segment end the kernel is truncated symmetrically to the neighbours that exist
 //        on both sides (half-width min(N, i, n-1-i)) and renormalised (divided by the sum of
 //        the weights used), so ends are not pulled inward: a segment's first and last points
@@ -39,7 +40,7 @@
 //      max_gap_s apart split the segment into stretches that are smoothed on their own (the
 //      points on either side of the pause stay where they are), so positions kilometres apart
 //      in time are never averaged. Stretches of one or two points are unchanged by smoothing.
-// Times and the recorded extension channels are carried over unchanged.
+// Times and the recorded extension channels (heart rate, cadence, ...) are carried over unchanged.
 // Every dropped or repaired point is counted in CleanReport.
 
 #include <cstddef>

@@ -28,10 +28,17 @@ struct TrackPoint {
   float temperature = kMissingF;  // degrees Celsius
   float power = kMissingF;        // watts
   float speed = kMissingF;        // metres per second, as recorded by the device
+  // IGC pressure altitude in metres against the ISA standard atmosphere (1013.25 hPa), kept
+  // whichever altitude `ele` holds (ReadOptions::igc_altitude): a flight has two altitudes and
+  // the viewer shows both. Cleaning smooths it like `ele`. It fills what was padding.
+  float pressure_altitude = kMissingF;
 
   bool has_ele() const { return !std::isnan(ele); }
   bool has_time() const { return !std::isnan(time); }
+  bool has_pressure_altitude() const { return !std::isnan(pressure_altitude); }
 };
+
+static_assert(sizeof(TrackPoint) == 56, "a track point is 56 bytes: million-point tracks are common");
 
 struct Segment {
   std::vector<TrackPoint> points;

@@ -1,11 +1,13 @@
 // `trailray view` through its command line, in a window under Xvfb (Mesa's llvmpipe through EGL):
 // the window shows the track, a scripted drag changes the view, hovering a known track point
-// prints that point's values, the replay moves the marker, a broken file or script is reported.
+// prints that point's values (an IGC flight's two altitudes too), the replay moves the marker, a
+// broken file or script is reported.
 // Small windows (480x270) keep the whole set to a few seconds per test on llvmpipe.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <string>
@@ -233,6 +235,58 @@ TEST(ViewCli, HoveringAKnownTrackPointPrintsItsValues) {
   EXPECT_NE(r.out.find("heart rate: " + std::to_string(120 + point % 30) + " bpm"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("speed: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("hover: none"), std::string::npos) << "a corner far from the track hovers nothing\n" << r.out;
+}
+
+// The hike as an IGC flight (B records from 10:00:00 UTC, 10 s apart): GNSS altitude the hike's,
+// pressure altitude 100 m lower.
+std::string igc_hike(const ViewEnv& env, const std::vector<GpxPoint>& points) {
+  std::string text = "AXXX001\r\nHFDTE180624\r\n";
+  const auto degrees_minutes = [](double v, int& deg, int& milli_min) {
+    deg = static_cast<int>(std::floor(v));
+    milli_min = static_cast<int>(std::lround((v - deg) * 60000.0));
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const int t = 10 * 3600 + 10 * static_cast<int>(i);
+    int lat_d = 0, lat_m = 0, lon_d = 0, lon_m = 0;
+    degrees_minutes(points[i].lat, lat_d, lat_m);
+    degrees_minutes(points[i].lon, lon_d, lon_m);
+    const long gnss = std::lround(points[i].ele);
+    char b[64];
+    std::snprintf(b, sizeof b, "B%02d%02d%02d%02d%05dN%03d%05dEA%05ld%05ld\r\n", t / 3600, t / 60 % 60, t % 60, lat_d,
+                  lat_m, lon_d, lon_m, gnss - 100, gnss);
+    text += b;
+  }
+  return env.script("hike.igc", text);
+}
+
+// Both altitudes reach the viewer, and --igc-altitude picks the one the 3D track is drawn at
+// (the hover finds the point where that altitude projects).
+TEST(ViewCli, AnIgcFlightHasBothAltitudesAndIgcAltitudePicksTheDrawnOne) {
+  ViewEnv env;
+  const auto points = bent_hike();
+  const std::string flight = igc_hike(env, points);
+  for (const bool pressure : {false, true}) {
+    SCOPED_TRACE(pressure ? "pressure" : "auto");
+    auto drawn = points;
+    if (pressure)
+      for (GpxPoint& p : drawn) p.ele -= 100.0;
+    const scene::Camera camera = framing_camera(drawn, kWidth, kHeight);
+    const auto at = camera.project(scene::ecef_from({drawn[60].lat, drawn[60].lon, drawn[60].ele}));
+    ASSERT_TRUE(at.has_value());
+    const std::string script = env.script(
+        "igc_hover.txt", "hover " + std::to_string(at->x_px) + " " + std::to_string(at->y_px) + "\nprint-hover\n");
+    const auto r = run_view(env, shell_quote(flight) + kWindow + (pressure ? " --igc-altitude pressure" : "") +
+                                     " --script " + shell_quote(script));
+    ASSERT_EQ(r.status, 0) << r.out;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(hover: track 0 '[^']*' point (\d+))"))) << r.out;
+    const int point = std::stoi(m[1]);
+    EXPECT_LE(std::abs(point - 60), 1);
+    const int gnss = 1000 + 2 * point;
+    EXPECT_NE(r.out.find("\n  altitude: " + std::to_string(pressure ? gnss - 100 : gnss) + " m"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("\n  pressure altitude: " + std::to_string(gnss - 100) + " m"), std::string::npos) << r.out;
+  }
 }
 
 TEST(ViewCli, ReplayMovesTheMarker) {

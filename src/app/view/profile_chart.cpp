@@ -41,6 +41,60 @@ float point_value(const scene::Track& t, std::size_t point) {
   return i < values.size() ? values[i] : std::numeric_limits<float>::quiet_NaN();
 }
 
+constexpr ImU32 kTerrainColour = IM_COL32(120, 100, 80, 200);
+// The second altitude line: light and dashed, unlike any track colour or colormap (solid).
+constexpr ImU32 kPressureColour = IM_COL32(235, 235, 235, 230);
+constexpr float kDash = 6.0f, kDashGap = 4.0f;  // pixels
+
+// A line from a to b, drawn only where x falls in a dash: the phase follows x, so consecutive
+// pieces of a polyline continue one another's pattern.
+void add_dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 colour, float width) {
+  if (a.x > b.x) std::swap(a, b);
+  const float span = b.x - a.x;
+  if (span < 1e-3f) {
+    draw->AddLine(a, b, colour, width);
+    return;
+  }
+  const auto at = [&](float x) { return ImVec2(x, a.y + (b.y - a.y) * (x - a.x) / span); };
+  const float period = kDash + kDashGap;
+  for (float start = std::floor(a.x / period) * period; start < b.x; start += period) {
+    const float x0 = std::max(a.x, start), x1 = std::min(b.x, start + kDash);
+    if (x0 < x1) draw->AddLine(at(x0), at(x1), colour, width);
+  }
+}
+
+// The legend in the plot's top right corner: the altitude lines and the terrain, when there are
+// at least two things to tell apart.
+void draw_chart_legend(ImDrawList* draw, const std::vector<AltitudeLine>& lines, bool terrain, ImU32 drawn_colour,
+                       float right, float top) {
+  if (lines.size() + (terrain ? 1 : 0) < 2) return;
+  const float row = ImGui::GetTextLineHeight() + 2.0f, swatch = 18.0f, pad = 6.0f;
+  float text_w = 0.0f;
+  for (const AltitudeLine& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l.label.c_str()).x);
+  if (terrain) text_w = std::max(text_w, ImGui::CalcTextSize("terrain").x);
+  const float w = pad * 3 + swatch + text_w;
+  const float h = pad * 2 + row * static_cast<float>(lines.size() + (terrain ? 1 : 0));
+  const float left = right - w - 4.0f, y0 = top + 4.0f;
+  draw->AddRectFilled(ImVec2(left, y0), ImVec2(left + w, y0 + h), IM_COL32(15, 15, 20, 200), 3.0f);
+  float y = y0 + pad;
+  const auto entry = [&](const std::string& label) {
+    draw->AddText(ImVec2(left + pad * 2 + swatch, y), IM_COL32(230, 230, 230, 255), label.c_str());
+    y += row;
+  };
+  for (const AltitudeLine& l : lines) {
+    const ImVec2 a(left + pad, y + row * 0.5f), b(left + pad + swatch, y + row * 0.5f);
+    if (l.pressure)
+      add_dashed_line(draw, a, b, kPressureColour, 1.5f);
+    else
+      draw->AddLine(a, b, drawn_colour, 2.0f);
+    entry(l.label);
+  }
+  if (terrain) {
+    draw->AddRectFilled(ImVec2(left + pad, y + 3.0f), ImVec2(left + pad + swatch, y + row - 3.0f), kTerrainColour);
+    entry("terrain");
+  }
+}
+
 // Whether the last left press travelled past ImGui's drag threshold (still known after release).
 bool dragged() {
   const ImGuiIO& io = ImGui::GetIO();
@@ -80,7 +134,7 @@ std::optional<ChartExtent> chart_extent(const scene::Track& t, ChartAxis axis) {
     if (std::isnan(x)) continue;
     e.x_min = std::min(e.x_min, x);
     e.x_max = std::max(e.x_max, x);
-    for (double y : {t.altitude_m[i], t.ground_m[i]}) {
+    for (double y : {t.altitude_m[i], t.ground_m[i], t.pressure_altitude(i)}) {
       if (std::isnan(y)) continue;
       e.y_min = std::min(e.y_min, y);
       e.y_max = std::max(e.y_max, y);
@@ -92,6 +146,21 @@ std::optional<ChartExtent> chart_extent(const scene::Track& t, ChartAxis axis) {
     e.y_max += 1.0;
   }
   return e;
+}
+
+std::vector<AltitudeLine> altitude_lines(const scene::Track& t) {
+  const bool any_altitude =
+      std::any_of(t.altitude_m.begin(), t.altitude_m.end(), [](double a) { return !std::isnan(a); });
+  if (!t.has_pressure_altitude()) {
+    if (!any_altitude) return {};
+    return {AltitudeLine{false, true, "altitude"}};
+  }
+  // `--igc-altitude pressure` (or a file without a GNSS channel): the GNSS altitude was not kept.
+  if (t.altitude_is_pressure()) return {AltitudeLine{false, true, "pressure altitude (3D track)"}};
+  std::vector<AltitudeLine> lines;
+  if (any_altitude) lines.push_back(AltitudeLine{false, true, "GNSS altitude (3D track)"});
+  lines.push_back(AltitudeLine{true, false, any_altitude ? "pressure altitude" : "pressure altitude (not in 3D)"});
+  return lines;
 }
 
 double x_at_pixel(float pixel_x, float plot_left, float plot_width, const ChartExtent& e) {
@@ -216,9 +285,12 @@ void draw_profile_chart(ViewerModel& model) {
     draw->AddRectFilled(ImVec2(x_px(sel.first), top), ImVec2(std::max(x_px(sel.last), x_px(sel.first) + 1.0f), bottom),
                         IM_COL32(255, 255, 255, 40));
 
-  // Terrain and altitude, one vertex per pixel column at most (a million points stay cheap),
+  // Terrain and altitudes, one vertex per pixel column at most (a million points stay cheap),
   // never joined across a segment gap.
   const auto range = model.color_range();
+  const std::vector<AltitudeLine> lines = altitude_lines(t);
+  const bool pressure_line = std::any_of(lines.begin(), lines.end(), [](const AltitudeLine& l) { return l.pressure; });
+  bool terrain = false;
   for (std::size_t seg = 0; seg < t.segment_first.size(); ++seg) {
     const std::size_t first = t.segment_first[seg];
     const std::size_t end = seg + 1 < t.segment_first.size() ? t.segment_first[seg + 1] : t.point_count();
@@ -231,7 +303,11 @@ void draw_profile_chart(ViewerModel& model) {
         const double g0 = t.ground_m[*prev], g1 = t.ground_m[i];
         if (!std::isnan(g0) && !std::isnan(g1))
           draw->AddQuadFilled(ImVec2(x0, y_px(g0)), ImVec2(x1, y_px(g1)), ImVec2(x1, bottom), ImVec2(x0, bottom),
-                              IM_COL32(120, 100, 80, 200));
+                              kTerrainColour);
+        terrain = terrain || (!std::isnan(g0) && !std::isnan(g1));
+        const double p0 = t.pressure_altitude(*prev), p1 = t.pressure_altitude(i);
+        if (pressure_line && !std::isnan(p0) && !std::isnan(p1))
+          add_dashed_line(draw, ImVec2(x0, y_px(p0)), ImVec2(x1, y_px(p1)), kPressureColour, 1.5f);
         const double a0 = t.altitude_m[*prev], a1 = t.altitude_m[i];
         if (!std::isnan(a0) && !std::isnan(a1))
           draw->AddLine(ImVec2(x0, y_px(a0)), ImVec2(x1, y_px(a1)), to_imgui(point_color(t, settings, range, i)), 2.0f);
@@ -239,6 +315,11 @@ void draw_profile_chart(ViewerModel& model) {
       prev = i;
     }
   }
+
+  const ImU32 drawn_colour = settings.style.tracks.color_by == track::ColorMetric::solid || !t.by_value || !range
+                                 ? to_imgui(t.color_srgb)
+                                 : to_imgui(scene::colormap_color(settings.style.tracks.colormap, 0.5f));
+  draw_chart_legend(draw, lines, terrain, drawn_colour, left + plot_w, top);
 
   // Waypoints near the track: a small pin at their nearest point, with the name.
   for (const ChartWaypoint& c : chart_waypoints(t, model.waypoints)) {
@@ -265,6 +346,8 @@ void draw_profile_chart(ViewerModel& model) {
     draw->AddLine(ImVec2(x, top), ImVec2(x, bottom), IM_COL32(255, 255, 255, 200), 1.0f);
     const double a = t.altitude_m[model.hover.point];
     if (!std::isnan(a)) draw->AddCircleFilled(ImVec2(x, y_px(a)), 4.0f, IM_COL32(255, 255, 255, 255));
+    const double p = t.pressure_altitude(model.hover.point);
+    if (pressure_line && !std::isnan(p)) draw->AddCircle(ImVec2(x, y_px(p)), 4.0f, kPressureColour, 0, 1.5f);
   }
 
   // Drag: select from where the button went down to the mouse; a click without a drag clears.

@@ -33,7 +33,7 @@ std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
   if (i >= t.point_count()) return {};
   const double time = t.time_unix_s[i];
   const double agl = t.altitude_m[i] - t.ground_m[i];  // NaN when either is missing
-  return {
+  std::vector<std::string> lines{
       std::isfinite(time) ? fmt::format("time: {}", tooltip_time_text(time)) : fmt::format("time: {}", kMissingText),
       line("altitude", t.altitude_m[i], "{:.0f} m"),
       line("height above ground", agl, "{:.0f} m"),
@@ -41,6 +41,10 @@ std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
       line("vertical speed", t.vspeed_ms[i], "{:.1f} m/s"),
       line("heart rate", t.heart_rate_bpm[i], "{:.0f} bpm"),
   };
+  // Only flights with a barometer have it: other tracks' tooltips do not list it as missing.
+  const double pressure = t.pressure_altitude(i);
+  if (!std::isnan(pressure)) lines.insert(lines.begin() + 2, line("pressure altitude", pressure, "{:.0f} m"));
+  return lines;
 }
 
 }  // namespace trailray::app::view

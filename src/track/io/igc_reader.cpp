@@ -19,6 +19,9 @@
 //   Gnss:     GNSS altitude on every fix, except 'V' fixes whose GNSS altitude is 0 (no 3D
 //             solution); no elevation at all, with a warning, when the channel is absent.
 //   Pressure: pressure altitude on every fix; no elevation, with a warning, when absent.
+// Whichever of these `ele` gets, every fix also keeps its pressure altitude in
+// TrackPoint::pressure_altitude when the pressure channel is present (NaN when absent), so the
+// viewer can show both altitudes.
 //
 // Time rule: B times are UTC time of day on the HFDTE flight date. A time more than 12 hours
 // earlier than the previous fix's is a UTC midnight rollover (next day); smaller backward
@@ -100,6 +103,7 @@ void IgcParser::assign_elevation() {
         break;
     }
     pts[i].ele = ele;
+    if (pressure_present_) pts[i].pressure_altitude = static_cast<float>(a.pressure);
   }
 }
 
