@@ -34,6 +34,10 @@ packages=(
   libfreetype-dev        # the legend's text, rasterized on the CPU into the picture (render/legend)
   fonts-dejavu-core      # DejaVu Sans, embedded into the binary at build time for the legend
   libglfw3-dev           # the viewer's window: an OpenGL ES 3.0 context through EGL, input events (trailray view)
+  libavcodec-dev         # `trailray video`: H.264 (libx264) and VP9 (libvpx) encoders
+  libavformat-dev        # `trailray video`: MP4 (faststart) and WebM containers
+  libswscale-dev         # `trailray video`: sRGB RGBA frames to BT.709 YUV 4:2:0
+  libavutil-dev          # `trailray video`: frames, options, errors of the libraries above
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
@@ -41,6 +45,7 @@ packages=(
   libclang-rt-14-dev     # libFuzzer / sanitizer runtimes for clang 14
   python3-gdal           # conformance test: GDAL's own bilinear heights at track points
   sqlite3                # building MBTiles fixtures in tests
+  ffmpeg                 # ffprobe: the video tests read the films' codec, size and frame count
   xvfb                   # the viewer's tests run in a virtual X server (xvfb-run)
   # --- conformance and benchmarks (peers we compare against) ---
   python3-gpxpy          # conformance test: gpxpy's lengths and durations on every GPX in shared/data

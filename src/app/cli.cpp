@@ -13,6 +13,7 @@
 #include "app/stats_command.hpp"
 #include "app/task_command.hpp"
 #include "app/terminal_diagnostics.hpp"
+#include "app/video_command.hpp"
 #include "app/view_command.hpp"
 
 namespace trailray::app {
@@ -30,6 +31,7 @@ int run_cli(int argc, char** argv) {
   add_check_command(app, exit_code);
   add_render_command(app, exit_code);
   add_view_command(app, exit_code);
+  add_video_command(app, exit_code);
   add_score_command(app, exit_code);
   add_flight_command(app, exit_code);
   add_task_command(app, exit_code);

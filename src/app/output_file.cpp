@@ -67,6 +67,19 @@ void write_file_atomically(const std::string& output, const std::function<void(s
       stream.flush();
       if (!stream) throw failure(output, "cannot write (disk full?)", errno);
     }
+    replace_with_temporary(temporary.string(), output);
+  } catch (...) {
+    remove_temporary();
+    throw;
+  }
+}
+
+std::string temporary_path_next_to(const std::string& output) {
+  return temporary_path(std::filesystem::path(output)).string();
+}
+
+void replace_with_temporary(const std::string& temporary, const std::string& output) {
+  try {
     // The data on disk before the name points at it, so a crash cannot leave an empty file.
     const int sync_fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
     if (sync_fd < 0 || ::fsync(sync_fd) != 0) {
@@ -75,10 +88,10 @@ void write_file_atomically(const std::string& output, const std::function<void(s
       throw failure(output, "cannot flush the temporary file to disk", error);
     }
     ::close(sync_fd);
-    if (::rename(temporary.c_str(), target.c_str()) != 0)
+    if (::rename(temporary.c_str(), output.c_str()) != 0)
       throw failure(output, "cannot rename the temporary file over it", errno);
   } catch (...) {
-    remove_temporary();
+    ::unlink(temporary.c_str());
     throw;
   }
 }

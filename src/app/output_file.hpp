@@ -22,4 +22,10 @@ void check_output_path(const std::string& output, const std::vector<std::string>
 // the temporary file is removed on any failure, also when `write` throws.
 void write_file_atomically(const std::string& output, const std::function<void(std::ostream&)>& write);
 
+// For writers that open the file themselves (a video encoder): a free name in `output`'s folder,
+// and the flush to disk and rename that put such a file in place (throws std::runtime_error
+// naming `output`; the temporary file is then removed).
+std::string temporary_path_next_to(const std::string& output);
+void replace_with_temporary(const std::string& temporary, const std::string& output);
+
 }  // namespace trailray::app

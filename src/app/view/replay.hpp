@@ -6,31 +6,17 @@
 #include <cstddef>
 #include <optional>
 
+#include "scene/replay_position.hpp"
 #include "scene/track_set.hpp"
 
 namespace trailray::app::view {
 
 enum class FollowMode { off, chase, orbit };
 
-// Where a track is at a clock time: between points `point` and `point + 1` (fraction 0..1 of the
-// way), or on a point (fraction 0). Before the track's start it waits at its first timed point,
-// after its end at its last; across a segment gap it waits at the gap's start (never bridged).
-struct TrackPosition {
-  bool valid = false;     // false: the track has no timed point
-  bool active = false;    // the time lies within the track's start..end
-  std::size_t point = 0;  // flat index
-  double fraction = 0.0;
-  glm::dvec3 ecef{0.0};
-};
-// A binary search over the track's timed points (Track::timed_points) when their times rise, as
-// cleaned tracks' do; a scan in file order otherwise.
-TrackPosition position_at(const scene::Track& track, double time_unix_s);
-
-struct TimeSpan {
-  double start = 0.0, end = 0.0;  // unix seconds
-};
-// From the earliest start to the latest end of the tracks with times (nullopt: none has one).
-std::optional<TimeSpan> common_time_span(const scene::TrackSet& tracks);
+using scene::common_time_span;
+using scene::position_at;
+using scene::TimeSpan;
+using scene::TrackPosition;
 
 // One clock for all tracks: time runs at `speed` times the wall clock while playing, and stops
 // (pauses) at the span's end.

@@ -1,0 +1,95 @@
+#include "app/video_options.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "app/track_options.hpp"
+
+namespace trailray::app {
+
+void add_video_options(CLI::App& cmd, VideoArgs& args) {
+  cmd.footer(
+      "The replay runs from the tracks' first to their last time (--from/--to: a part), in --duration\n"
+      "(default 60s) or at --speed. The camera follows the first track (--follow N) from behind and above\n"
+      "(--distance, --pitch), circles the tracks (--camera-mode orbit), or stands still (--camera or\n"
+      "--look-at, as in `render`). Ctrl-C stops and leaves no broken file.\n"
+      "Exit status: 0 written, 1 a file, source, encoder or GL failed, 2 a usage error, 130 interrupted.");
+  cmd.add_option("TRACK", args.tracks, "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to replay")
+      ->type_name("FILE")
+      ->required();
+  cmd.add_option("-o,--output", args.output, "The film: .mp4 (H.264) or .webm (VP9), written atomically")
+      ->type_name("OUT.mp4");
+  cmd.add_option("--frames-dir", args.frames_dir, "Write the frames as PNGs (frame_000001.png, ...) into DIR instead")
+      ->type_name("DIR");
+  cmd.add_flag("--force", args.force, "Replace an existing output file");
+  cmd.add_option("--duration", args.duration, "Length of the film (default 60s)")->type_name("60s|1m30s");
+  cmd.add_option("--speed", args.speed, "Replay seconds per film second instead of --duration")->type_name("50x");
+  cmd.add_option("--fps", args.fps, "Frames per second (default 30)")->type_name("N");
+  cmd.add_option("--from", args.from, "Start of the part filmed: a fraction, +offset, UTC time or date-time")
+      ->type_name("WHEN");
+  cmd.add_option("--to", args.to, "End of the part filmed (same forms as --from)")->type_name("WHEN");
+  cmd.add_option("--camera-mode", args.mode, "follow (default), orbit, or fixed (with --camera/--look-at)")
+      ->type_name("MODE");
+  cmd.add_option("--follow", args.follow, "The track the camera follows, counted from 1 (default 1)")->type_name("N");
+  cmd.add_option("--trail", args.trail,
+                 "What of each track is drawn: all (the future ghosted, default), past, or a tail (10m)")
+      ->type_name("all|past|DURATION");
+  cmd.add_option("--align", args.align,
+                 "Several tracks: clock (their real times, default) or start (each from its own start)")
+      ->type_name("clock|start");
+  cmd.add_option("--crf", args.crf, "Quality: lower is better and larger (H.264 0..51, VP9 0..63; default 20)")
+      ->type_name("N");
+  cmd.add_option("--size", args.size, "Frame size in pixels, even numbers (default 1280x720)")->type_name("WxH");
+  cmd.add_option("--pixel-ratio", args.pixel_ratio, "Device pixels per pixel of the labels (default 1)")
+      ->type_name("R");
+  add_camera_options(cmd, args.camera);
+  cmd.add_option("--timeout", args.timeout_s, "Seconds to wait for the terrain tiles of a frame (default 120)")
+      ->type_name("S");
+  cmd.add_flag("--verbose", args.verbose, "Log the GL context, the cameras and the tiles");
+  add_shading_options(cmd, args.style);
+  add_terrain_options(cmd, args.terrain);
+  add_imagery_option(cmd, args.terrain);
+  add_track_style_options(cmd, args.style);
+  add_waypoint_options(cmd, args.waypoints);
+  add_label_options(cmd, args.style);
+  add_read_options(cmd, args.read);
+  add_cleaning_options(cmd, args.analysis);
+}
+
+FilmCameraMode check_video_args(const VideoArgs& a) {
+  if (a.output.empty() == a.frames_dir.empty())
+    throw CLI::ValidationError("-o/--frames-dir", "give one: a film file (-o OUT.mp4) or a folder of frames");
+  if (!a.duration.empty() && !a.speed.empty())
+    throw CLI::ValidationError("--duration", "and --speed exclude each other");
+  if (a.crf < 0 || a.crf > 63) throw CLI::ValidationError("--crf", fmt::format("'{}' is not in 0..63", a.crf));
+  if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
+    throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
+  if (!(a.pixel_ratio >= 0.25 && a.pixel_ratio <= 8.0))
+    throw CLI::ValidationError("--pixel-ratio", fmt::format("'{}' is not a ratio in 0.25..8", a.pixel_ratio));
+  if (a.align != "clock" && a.align != "start")
+    throw CLI::ValidationError("--align", fmt::format("'{}' is not clock or start", a.align));
+  if (a.follow < 1 || static_cast<std::size_t>(a.follow) > a.tracks.size())
+    throw CLI::ValidationError("--follow",
+                               fmt::format("'{}' is not a track number in 1..{}", a.follow, a.tracks.size()));
+  const bool placed = !a.camera.camera.empty() || !a.camera.look_at.empty();
+  FilmCameraMode mode = placed ? FilmCameraMode::fixed : FilmCameraMode::follow;
+  if (a.mode == "follow")
+    mode = FilmCameraMode::follow;
+  else if (a.mode == "orbit")
+    mode = FilmCameraMode::orbit;
+  else if (a.mode == "fixed")
+    mode = FilmCameraMode::fixed;
+  else if (!a.mode.empty())
+    throw CLI::ValidationError("--camera-mode", fmt::format("'{}' is not follow, orbit or fixed", a.mode));
+  if (mode != FilmCameraMode::fixed && placed)
+    throw CLI::ValidationError("--camera/--look-at", "place a fixed camera: they go with --camera-mode fixed");
+  if (mode != FilmCameraMode::fixed && a.camera.pitch_deg &&
+      !(*a.camera.pitch_deg < 0.0 && *a.camera.pitch_deg > -90.0))
+    throw CLI::ValidationError("--pitch", fmt::format("'{}' is not a downward pitch in (-90, 0)", *a.camera.pitch_deg));
+  if (mode != FilmCameraMode::fixed && a.camera.distance_m && !(*a.camera.distance_m > 0.0))
+    throw CLI::ValidationError("--distance", fmt::format("'{}' is not a positive distance", *a.camera.distance_m));
+  return mode;
+}
+
+}  // namespace trailray::app

@@ -1,0 +1,52 @@
+#pragma once
+// `trailray video`'s options: `render`'s (what to draw, the size, the camera as --camera/--look-at
+// for a fixed camera) added by the same functions, and the film's own: its length and frame
+// rate, the part of the tracks filmed, the camera's mode, the trail, the output.
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "app/camera_options.hpp"
+#include "app/style_options.hpp"
+#include "app/terrain_options.hpp"
+#include "app/waypoint_options.hpp"
+#include "track/io/load.hpp"
+#include "track/summary.hpp"
+
+namespace trailray::app {
+
+struct VideoArgs {
+  std::vector<std::string> tracks;
+  std::string output, frames_dir;
+  bool force = false;
+  std::string size = "1280x720";
+  double pixel_ratio = 1.0;
+  CameraArgs camera;
+  std::string mode;  // --camera-mode follow|orbit|fixed; empty: fixed with --camera/--look-at, else follow
+  int follow = 1;    // --follow N: the track the camera follows (1-based)
+  std::string duration, speed, from, to;
+  double fps = 30.0;
+  std::string trail = "all";
+  std::string align = "clock";
+  int crf = 20;
+  StyleArgs style;
+  double timeout_s = 120.0;
+  bool verbose = false;
+  track::ReadOptions read;
+  track::AnalysisOptions analysis;
+  TerrainOptions terrain;
+  WaypointArgs waypoints;
+};
+
+void add_video_options(CLI::App& command, VideoArgs& args);
+
+enum class FilmCameraMode { follow, orbit, fixed };
+
+// What CLI11 cannot check alone: -o or --frames-dir, the camera mode with its options, the CRF,
+// the timeout. Throws CLI::ValidationError naming the option.
+FilmCameraMode check_video_args(const VideoArgs& args);
+
+}  // namespace trailray::app
