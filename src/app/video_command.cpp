@@ -107,6 +107,10 @@ int run_video(const VideoArgs& a) {
   scene.sun_time_unix_s = sun_time(sun, loaded.recorded);
   scene.neutral_ground_m = loaded.recorded.lowest_m;
 
+  // The legend lists the tracks, not their trails and ghosted futures.
+  scene::Scene legend_scene = scene;
+  legend_scene.tracks = &loaded.tracks;
+
   render::GlContext gl = render::GlContext::create_headless();
   for (const std::string& line : gl.describe()) diagnostics.note(line);
   render::Renderer renderer;
@@ -133,7 +137,7 @@ int run_video(const VideoArgs& a) {
     scene.tracks = &film.tracks();
     scene.waypoints = &film.waypoints();
     renderer.draw(scene, cameras[i], picture);
-    scene::draw_scene_legend(picture.image, scene);
+    scene::draw_scene_legend(picture.image, legend_scene);
     writer->add(picture.image);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double rate = static_cast<double>(i + 1) / std::max(elapsed, 1e-9);

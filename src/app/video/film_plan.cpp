@@ -107,8 +107,12 @@ std::vector<scene::Camera> plan_film_cameras(const VideoArgs& a, FilmCameraMode 
   const Extent extent = extent_of(tracks);
   scene::FilmCameraSettings settings;
   const double fps = clock.timing.fps;
-  settings.position_window = frames_of(0.5, fps);
-  settings.heading_window = frames_of(2.0, fps);
+  // Smoothing in replay seconds: half a film second of travel for the point (at most 15 s: the
+  // marker stays near the middle), two for the direction (at least 30 s: a glider's circles do
+  // not spin the camera).
+  const double speed = clock.timing.speed();
+  settings.position_window_s = std::clamp(0.5 * speed, 1.0, 15.0);
+  settings.heading_window_s = std::max(2.0 * speed, 30.0);
   settings.raise_window = frames_of(1.0, fps);
   std::vector<scene::FilmLook> looks;
   if (mode == FilmCameraMode::follow) {
@@ -118,10 +122,10 @@ std::vector<scene::Camera> plan_film_cameras(const VideoArgs& a, FilmCameraMode 
     const scene::Track& t = tracks.at(followed);
     if (!t.start_time())
       throw CLI::ValidationError("--follow", fmt::format("track {} has no times to follow", a.follow));
-    std::vector<glm::dvec3> positions(frames);
-    for (std::size_t i = 0; i < frames; ++i)
-      positions[i] = scene::position_at(t, clock.timing.time_of(i) + clock.offsets[followed]).ecef;
-    looks = scene::follow_looks(positions, settings, ground);
+    std::vector<double> times(frames);
+    for (std::size_t i = 0; i < frames; ++i) times[i] = clock.timing.time_of(i) + clock.offsets[followed];
+    looks = scene::follow_looks(
+        times, [&t](double time) { return scene::position_at(t, time).ecef; }, settings, ground);
   } else {
     // Orbit at the distance that frames the tracks, around their middle.
     const scene::Camera framed = initial_camera({}, lens, tracks, neutral_ground_m, heights);

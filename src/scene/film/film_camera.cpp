@@ -15,7 +15,8 @@ constexpr double kSteepestPitchDeg = -88.0;
 constexpr double kRaiseStepDeg = 6.0;
 // Points along the line of sight from the camera to the target checked against the terrain
 // (fractions of the way); the last stops short of the target, which may lie on the ground.
-constexpr double kSightFractions[] = {0.0, 0.1, 0.2, 0.35, 0.5, 0.65, 0.8, 0.9};
+constexpr double kSightFractions[] = {0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45,
+                                      0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9};
 
 glm::dvec3 forward_at(const glm::dvec3& target, double heading_deg, double pitch_deg) {
   const geo::Geodetic g = geo::geodetic_from_ecef(target);
@@ -112,39 +113,41 @@ glm::dvec3 camera_position(const FilmLook& look) {
   return look.target - look.distance_m * forward_at(look.target, look.heading_deg, look.pitch_deg);
 }
 
-std::vector<FilmLook> follow_looks(std::span<const glm::dvec3> positions, const FilmCameraSettings& s,
-                                   const HeightBatch& heights) {
-  const std::vector<glm::dvec3> targets =
-      moving_average(std::vector<glm::dvec3>(positions.begin(), positions.end()), s.position_window);
-  const long n = static_cast<long>(targets.size());
-  // The direction of travel as a horizontal unit vector (east, north), from the smoothed path
-  // a little ahead minus a little behind; unwrapped into angles only after averaging vectors, so
-  // a turn through north does not spin the camera.
-  std::vector<glm::dvec2> along(targets.size(), glm::dvec2(0.0));
-  glm::dvec2 last(0.0, 1.0);
-  long first_move = -1;
-  const long reach = std::max(1, s.position_window);
-  for (long i = 0; i < n; ++i) {
-    const glm::dvec3 d = targets[static_cast<std::size_t>(std::min(n - 1, i + reach))] -
-                         targets[static_cast<std::size_t>(std::max(0L, i - reach))];
-    const geo::Geodetic g = geo::geodetic_from_ecef(targets[static_cast<std::size_t>(i)]);
+std::vector<FilmLook> follow_looks(std::span<const double> times, const PositionAt& position,
+                                   const FilmCameraSettings& s, const HeightBatch& heights) {
+  constexpr int kSamples = 8;  // each side of a frame's time, for both averages
+  const double step = std::max(s.position_window_s, 1e-3) / kSamples;
+  const double heading_step = std::max(s.heading_window_s, 1e-3) / kSamples;
+  const double reach = heading_step;  // the direction of travel: from `reach` before to `reach` after
+  std::vector<FilmLook> looks(times.size());
+  // The direction as a horizontal unit vector (east, north), averaged as vectors before it
+  // becomes an angle, so a turn through north does not spin the camera.
+  std::vector<glm::dvec2> along(times.size(), glm::dvec2(0.0));
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    glm::dvec3 sum(0.0);
+    for (int k = -kSamples; k <= kSamples; ++k) sum += position(times[i] + k * step);
+    const glm::dvec3 target = sum / static_cast<double>(2 * kSamples + 1);
+    const geo::Geodetic g = geo::geodetic_from_ecef(target);
     const EnuAxes enu = enu_axes_at(g.lat_deg, g.lon_deg);
-    const glm::dvec2 h(glm::dot(d, enu.east), glm::dot(d, enu.north));
-    if (glm::length(h) > 1e-3) {
-      last = glm::normalize(h);
-      if (first_move < 0) first_move = i;
+    glm::dvec2 direction(0.0);
+    for (int k = -kSamples; k <= kSamples; ++k) {
+      const double t = times[i] + k * heading_step;
+      const glm::dvec3 d = position(t + reach) - position(t - reach);
+      const glm::dvec2 h(glm::dot(d, enu.east), glm::dot(d, enu.north));
+      if (glm::length(h) > 1e-3) direction += glm::normalize(h);
     }
-    along[static_cast<std::size_t>(i)] = last;
+    along[i] = direction;
+    looks[i] = {target, 0.0, s.pitch_deg, s.distance_m};
   }
-  // Before the first move: the first direction the track takes.
-  for (long i = 0; i < first_move; ++i)
-    along[static_cast<std::size_t>(i)] = along[static_cast<std::size_t>(first_move)];
-  along = moving_average(along, s.heading_window);
-  std::vector<FilmLook> looks(targets.size());
-  double heading = 0.0;
-  for (std::size_t i = 0; i < targets.size(); ++i) {
+  // Where the track stands still over a whole window: the heading before, else the first known.
+  std::size_t first_known = along.size();
+  for (std::size_t i = 0; i < along.size() && first_known == along.size(); ++i)
+    if (glm::length(along[i]) > 1e-6) first_known = i;
+  double heading =
+      first_known < along.size() ? std::atan2(along[first_known].x, along[first_known].y) / kRadPerDeg : 0.0;
+  for (std::size_t i = 0; i < looks.size(); ++i) {
     if (glm::length(along[i]) > 1e-6) heading = std::atan2(along[i].x, along[i].y) / kRadPerDeg;
-    looks[i] = {targets[i], std::fmod(heading + 360.0, 360.0), s.pitch_deg, s.distance_m};
+    looks[i].heading_deg = std::fmod(heading + 360.0, 360.0);
   }
   raise_over_terrain(looks, s, heights);
   return looks;

@@ -23,10 +23,10 @@ struct FilmCameraSettings {
   double distance_m = 800.0;  // from the camera to the point it looks at
   double pitch_deg = -25.0;   // as seen at that point, before raising (negative looks down)
   double clearance_m = 25.0;  // the camera stays at least this high over the terrain
-  // Half-widths of the centred moving averages, in frames: the followed point, the heading and
-  // the raise.
-  int position_window = 8;
-  int heading_window = 45;
+  // Half-widths of the centred moving averages: of the followed point and of its direction of
+  // travel in replay seconds (so they do not depend on the frame rate), of the raise in frames.
+  double position_window_s = 5.0;
+  double heading_window_s = 60.0;
   int raise_window = 30;
 };
 
@@ -36,11 +36,15 @@ struct FilmLook {
   double heading_deg = 0.0, pitch_deg = 0.0, distance_m = 0.0;
 };
 
-// `follow`: the looks at `positions` (the followed track's position at each frame's time, ECEF),
-// smoothed, the heading along the direction of travel (where the track will be minus where it
-// was; kept while it stands still), raised over `heights` (empty function: no terrain).
-std::vector<FilmLook> follow_looks(std::span<const glm::dvec3> positions, const FilmCameraSettings& settings,
-                                   const HeightBatch& heights);
+// Where the followed track is at a replay time (ECEF).
+using PositionAt = std::function<glm::dvec3(double time_unix_s)>;
+
+// `follow`: a look per frame time (`times`): at the followed position averaged over the position
+// window, along the direction of travel (where the track will be minus where it was) averaged
+// over the heading window (kept while it stands still), raised over `heights` (empty function:
+// no terrain).
+std::vector<FilmLook> follow_looks(std::span<const double> times, const PositionAt& position,
+                                   const FilmCameraSettings& settings, const HeightBatch& heights);
 
 // `orbit`: `frames` looks at `centre` turning once around it clockwise from `start_heading_deg`.
 std::vector<FilmLook> orbit_looks(const glm::dvec3& centre, std::size_t frames, double start_heading_deg,
