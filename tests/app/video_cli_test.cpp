@@ -146,7 +146,7 @@ bool marker_red(const Picture::Rgb& p) { return p.r > 120 && p.g < 80 && p.b < 1
 bool marker_above(const Picture& picture, const terrain::ScreenPoint& at) {
   for (int dy = -34; dy <= 4; ++dy)
     for (int dx = -6; dx <= 6; ++dx) {
-      const double x = std::round(at.x) + dx, y = std::round(at.y) + dy;
+      const double x = std::round(at.x_px) + dx, y = std::round(at.y_px) + dy;
       if (picture.inside(x, y) && marker_red(picture.at(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))))
         return true;
     }
@@ -175,7 +175,7 @@ TEST(VideoCli, TheMarkerStandsWhereTheTrackIsAtTheFramesTime) {
     const GpxPoint& here = points[static_cast<std::size_t>((k - 1) * 15)];
     const auto at = camera.value->project(scene::ecef_from({here.lat, here.lon, here.ele}));
     ASSERT_TRUE(at.has_value());
-    EXPECT_TRUE(marker_above(picture, *at)) << "frame " << k << " at " << at->x << "," << at->y;
+    EXPECT_TRUE(marker_above(picture, *at)) << "frame " << k << " at " << at->x_px << "," << at->y_px;
     // ... and not where the track is at another frame's time.
     const GpxPoint& elsewhere = points[k == 1 ? 60 : 0];
     const auto away = camera.value->project(scene::ecef_from({elsewhere.lat, elsewhere.lon, elsewhere.ele}));
