@@ -16,6 +16,7 @@
 #include "app/video_options.hpp"
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
+#include "scene/film/film_overlay.hpp"
 #include "scene/film/film_tracks.hpp"
 #include "scene/legend_content.hpp"
 #include "scene/terrain_view.hpp"
@@ -71,6 +72,11 @@ int run_video(const VideoArgs& a) {
     if (!parsed.ok()) throw CLI::ValidationError("--trail", parsed.error);
     return *parsed.value;
   }();
+  const scene::OverlayLevel overlay = [&] {
+    auto parsed = scene::parse_overlay_level(a.overlay);
+    if (!parsed.ok()) throw CLI::ValidationError("--overlay", parsed.error);
+    return *parsed.value;
+  }();
   const std::optional<double> sun = parse_sun_time(a.style.time);
   if (!a.output.empty()) {
     check_output_path(a.output, a.tracks, a.force);
@@ -111,6 +117,15 @@ int run_video(const VideoArgs& a) {
   scene::Scene legend_scene = scene;
   legend_scene.tracks = &loaded.tracks;
 
+  // The gauges: of the followed track, else of every recorded track with times.
+  std::vector<std::size_t> gauged;
+  for (std::size_t i = 0; i < loaded.tracks.size(); ++i) {
+    const scene::Track& t = loaded.tracks[i];
+    const bool followed = static_cast<int>(i) + 1 == a.follow;
+    if (mode == FilmCameraMode::follow ? followed : (!t.is_route && t.start_time())) gauged.push_back(i);
+  }
+  scene::TextRasterizer text;
+
   render::GlContext gl = render::GlContext::create_headless();
   for (const std::string& line : gl.describe()) diagnostics.note(line);
   render::Renderer renderer;
@@ -133,11 +148,16 @@ int run_video(const VideoArgs& a) {
                                     a.output.empty() ? "the film" : a.output));
       return 130;
     }
-    film.set_time(clock.timing.time_of(i));
+    const double time = clock.timing.time_of(i);
+    film.set_time(time);
     scene.tracks = &film.tracks();
     scene.waypoints = &film.waypoints();
+    std::vector<scene::GaugeReadings> gauges;
+    for (std::size_t k : gauged) gauges.push_back(scene::gauge_readings(loaded.tracks[k], film.positions()[k]));
+    scene.label_keep_out = scene::film_overlay_panels(lens.width_px, lens.height_px, text, overlay, gauges);
     renderer.draw(scene, cameras[i], picture);
     scene::draw_scene_legend(picture.image, legend_scene);
+    scene::draw_film_overlay(picture.image, text, overlay, time, gauges);
     writer->add(picture.image);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double rate = static_cast<double>(i + 1) / std::max(elapsed, 1e-9);

@@ -38,6 +38,10 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
   cmd.add_option("--align", args.align,
                  "Several tracks: clock (their real times, default) or start (each from its own start)")
       ->type_name("clock|start");
+  cmd.add_option("--overlay", args.overlay,
+                 "What is painted over the film: none, minimal (the clock) or full (the clock and gauges of "
+                 "the followed track: altitude, height above ground, speed, vario, glide; default)")
+      ->type_name("none|minimal|full");
   cmd.add_option("--crf", args.crf, "Quality: lower is better and larger (H.264 0..51, VP9 0..63; default 20)")
       ->type_name("N");
   cmd.add_option("--size", args.size, "Frame size in pixels, even numbers (default 1280x720)")->type_name("WxH");

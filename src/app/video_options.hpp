@@ -31,6 +31,7 @@ struct VideoArgs {
   double fps = 30.0;
   std::string trail = "all";
   std::string align = "clock";
+  std::string overlay = "full";
   int crf = 20;
   StyleArgs style;
   double timeout_s = 120.0;
