@@ -64,6 +64,7 @@ void check_frames_dir(const std::string& dir, bool force) {
 }
 
 int run_video(const VideoArgs& a) {
+  InterruptGuard guard;  // from the start: Ctrl-C while the tracks load stops before the first frame too
   const FilmCameraMode mode = check_video_args(a);
   const scene::Lens lens = parse_lens(a.size, a.camera.fov_deg);
   const scene::Style style = parse_style(a.style);
@@ -135,7 +136,6 @@ int run_video(const VideoArgs& a) {
   diagnostics.note(
       fmt::format("film: {} frames at {} fps, replay {:.1f}x", frames, clock.timing.fps, clock.timing.speed()));
 
-  InterruptGuard guard;
   std::unique_ptr<FilmWriter> writer =
       a.output.empty() ? open_frames_folder(a.frames_dir)
                        : open_video_file(a.output, {lens.width_px, lens.height_px, clock.timing.fps, a.crf});

@@ -153,35 +153,102 @@ bool marker_above(const Picture& picture, const terrain::ScreenPoint& at) {
   return false;
 }
 
+// The frames of a film of `gpx` seen by a fixed camera 3 km south of (lat, lon) at 1000 m, pitch
+// -40 (no overlay, tracks blue: the only red is the markers'); and that camera.
+struct FixedFilm {
+  std::vector<Picture> frames;
+  scene::Camera camera;
+};
+FixedFilm fixed_film(const RenderEnv& env, const std::string& tracks, double lat, double lon, const std::string& args) {
+  const std::string folder = env.file("frames");
+  std::filesystem::remove_all(folder);
+  const auto r = run_command(video(env) + tracks + kFilm + " --overlay none --size 320x180 --color '#0000ff' " +
+                             "--camera-mode fixed --look-at " + fmt::format("{:.6f},{:.6f},1000", lat, lon) +
+                             " --distance 3000 --heading 0 --pitch -40 --frames-dir " + shell_quote(folder) + " " +
+                             args + " 2>&1");
+  EXPECT_EQ(r.status, 0) << r.out;
+  auto camera = scene::camera_looking_at({{lat, lon, 1000.0}, 3000.0, 0.0, -40.0},
+                                         {scene::kDefaultVerticalFovDeg, 320, 180}, 1000.0);
+  if (!camera.ok()) throw std::runtime_error(camera.error);
+  FixedFilm film{{}, *camera.value};
+  for (int k = 1; std::filesystem::exists(std::filesystem::path(folder) / fmt::format("frame_{:06d}.png", k)); ++k)
+    film.frames.push_back(read_picture((std::filesystem::path(folder) / fmt::format("frame_{:06d}.png", k)).string()));
+  return film;
+}
+
+// Whether a marker stands at point `p` in a frame.
+bool marker_at(const FixedFilm& film, std::size_t frame, const GpxPoint& p) {
+  const auto at = film.camera.project(scene::ecef_from({p.lat, p.lon, p.ele}));
+  return at.has_value() && frame < film.frames.size() && marker_above(film.frames[frame], *at);
+}
+
 TEST(VideoCli, TheMarkerStandsWhereTheTrackIsAtTheFramesTime) {
   RenderEnv env;
   const auto points = straight_hike();
   const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {points}}});
-  const std::string frames = env.file("frames");
-  // A fixed camera south of the middle of the hike; 5 frames over its 600 s: every 150 s.
-  const GpxPoint middle = points[30];
-  const std::string look_at = fmt::format("{:.6f},{:.6f},1000", middle.lat, middle.lon);
-  const auto r =
-      run_command(video(env) + shell_quote(gpx) + kFilm +
-                  " --size 320x180 --duration 1s --fps 5 --color '#0000ff' --camera-mode fixed --look-at " + look_at +
-                  " --distance 2500 --heading 0 --pitch -40 --frames-dir " + shell_quote(frames) + " 2>&1");
-  ASSERT_EQ(r.status, 0) << r.out;
-  const auto camera = scene::camera_looking_at({{middle.lat, middle.lon, 1000.0}, 2500.0, 0.0, -40.0},
-                                               {scene::kDefaultVerticalFovDeg, 320, 180}, 1000.0);
-  ASSERT_TRUE(camera.ok()) << camera.error;
-  // Frame k (1-based) shows the time k-1 quarters through: points 0, 15, 30, 45, 60.
-  for (int k : {1, 3, 5}) {
-    const Picture picture = read_picture((std::filesystem::path(frames) / fmt::format("frame_{:06d}.png", k)).string());
-    const GpxPoint& here = points[static_cast<std::size_t>((k - 1) * 15)];
-    const auto at = camera.value->project(scene::ecef_from({here.lat, here.lon, here.ele}));
-    ASSERT_TRUE(at.has_value());
-    EXPECT_TRUE(marker_above(picture, *at)) << "frame " << k << " at " << at->x_px << "," << at->y_px;
+  // 5 frames over the hike's 600 s: every 150 s, points 0, 15, 30, 45, 60.
+  const FixedFilm film = fixed_film(env, shell_quote(gpx), points[30].lat, points[30].lon, "--duration 1s --fps 5");
+  ASSERT_EQ(film.frames.size(), 5u);
+  for (std::size_t k : {0u, 2u, 4u}) {
+    EXPECT_TRUE(marker_at(film, k, points[k * 15])) << "frame " << k;
     // ... and not where the track is at another frame's time.
-    const GpxPoint& elsewhere = points[k == 1 ? 60 : 0];
-    const auto away = camera.value->project(scene::ecef_from({elsewhere.lat, elsewhere.lon, elsewhere.ele}));
-    ASSERT_TRUE(away.has_value());
-    EXPECT_FALSE(marker_above(picture, *away)) << "frame " << k;
+    EXPECT_FALSE(marker_at(film, k, points[k == 0 ? 60 : 0])) << "frame " << k;
   }
+}
+
+TEST(VideoCli, SeveralTracksOnOneClockOrEachFromItsStart) {
+  RenderEnv env;
+  // Two hikes side by side, the second 600 m north and 300 m east of the first (so no marker
+  // stands in the column above another's point), starting 300 s after it.
+  const auto first = straight_hike();
+  const GpxPoint north = offset_point(kLat, kLon, 300.0, 600.0);
+  const auto second = east_line(north.lat, north.lon, 0.0, 61, 25.0, kT0 + 300.0, 10.0, 1000.0);
+  const std::string tracks = shell_quote(env.write_gpx("a.gpx", {{"A", {first}}})) + " " +
+                             shell_quote(env.write_gpx("b.gpx", {{"B", {second}}}));
+  const GpxPoint middle = offset_point(kLat, kLon, 900.0, 300.0);
+  // On one clock: 4 frames over 900 s, at 0, 300, 600, 900 s. At 300 s A is halfway and B starts.
+  const FixedFilm clock = fixed_film(env, tracks, middle.lat, middle.lon, "--duration 1s --fps 4 --align clock");
+  ASSERT_EQ(clock.frames.size(), 4u);
+  EXPECT_TRUE(marker_at(clock, 1, first[30]));
+  EXPECT_TRUE(marker_at(clock, 1, second[0]));
+  EXPECT_FALSE(marker_at(clock, 1, second[30]));
+  EXPECT_TRUE(marker_at(clock, 2, first[60]));
+  EXPECT_TRUE(marker_at(clock, 2, second[30]));
+  // Each from its own start: 3 frames over 600 s; halfway, both are halfway.
+  const FixedFilm start = fixed_film(env, tracks, middle.lat, middle.lon, "--duration 1s --fps 3 --align start");
+  ASSERT_EQ(start.frames.size(), 3u);
+  EXPECT_TRUE(marker_at(start, 1, first[30]));
+  EXPECT_TRUE(marker_at(start, 1, second[30]));
+  EXPECT_FALSE(marker_at(start, 1, second[0]));
+}
+
+TEST(VideoCli, TheSameInputsGiveTheSameFilm) {
+  RenderEnv env;
+  const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {straight_hike()}}});
+  const std::string command = video(env) + shell_quote(gpx) + kFilm + " --size 64x48 --duration 1s --fps 6 -o ";
+  ASSERT_EQ(run_command(command + shell_quote(env.file("a.mp4")) + " 2>&1").status, 0);
+  ASSERT_EQ(run_command(command + shell_quote(env.file("b.mp4")) + " 2>&1").status, 0);
+  const auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string a = bytes(env.file("a.mp4"));
+  EXPECT_GT(a.size(), 100u);
+  EXPECT_TRUE(a == bytes(env.file("b.mp4")));
+}
+
+TEST(VideoCli, CtrlCLeavesNoFile) {
+  RenderEnv env;
+  const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {straight_hike()}}});
+  const std::string out = env.file("long.mp4");
+  // A film far longer than the 2 s it is given.
+  const auto r = run_command("timeout --preserve-status -s INT 2 env " + video(env) + shell_quote(gpx) + kFilm +
+                             " --size 160x90 --duration 10m --fps 30 -o " + shell_quote(out) + " 2>&1");
+  EXPECT_EQ(r.status, 130) << r.out;
+  EXPECT_NE(r.out.find("interrupted"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  for (const auto& entry : std::filesystem::directory_iterator(env.home.path()))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
 }
 
 }  // namespace

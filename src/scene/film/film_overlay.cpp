@@ -67,7 +67,7 @@ std::vector<Panel> layout(std::uint32_t width, std::uint32_t height, TextRasteri
           text.ellipsize(g.name, kMaxNameCodePoints, static_cast<int>(width) / 3, f, FontWeight::bold)};
       for (std::string& l : gauge_lines(g)) lines.push_back(std::move(l));
       Panel p = panel_of(std::move(lines), true, static_cast<int>(width) - margin, true, y);
-      if (p.rect.bottom() > static_cast<int>(height) / 2) break;  // no more room
+      if (p.rect.bottom() > static_cast<int>(height) - margin) break;  // no more room
       y = p.rect.bottom() + pad;
       panels.push_back(std::move(p));
     }

@@ -1,0 +1,89 @@
+// The film's overlay (scene/film/film_overlay): the clock's text, the gauges read at a position
+// between two points, the glide ratio only while sinking, panels painted where they are said to
+// be and nothing painted with `none`.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/film/film_overlay.hpp"
+
+namespace trailray::scene {
+namespace {
+
+TEST(FilmOverlay, ClockTextIsUtc) {
+  EXPECT_EQ(film_clock_text(1718704800.0), "2024-06-18 10:00:00 UTC");
+  EXPECT_EQ(film_clock_text(1718704800.0 + 3600 * 14 + 61.7), "2024-06-19 00:01:01 UTC");
+  EXPECT_EQ(film_clock_text(951782400.0), "2000-02-29 00:00:00 UTC");
+}
+
+TEST(FilmOverlay, GaugesAreInterpolatedAtThePosition) {
+  Track t;
+  t.name = "Glider";
+  t.altitude_m = {1000.0, 900.0};
+  t.ground_m = {500.0, 600.0};
+  t.speed_kmh = {36.0, 36.0};
+  t.vspeed_ms = {-1.0, -1.0};
+  t.heart_rate_bpm = {std::nan(""), std::nan("")};
+  const GaugeReadings g = gauge_readings(t, {true, true, 0, 0.25, {}});
+  EXPECT_DOUBLE_EQ(g.altitude_m, 975.0);
+  EXPECT_DOUBLE_EQ(g.ground_m, 525.0);
+  const std::vector<std::string> lines = gauge_lines(g);
+  const std::vector<std::string> expected{"Alt 975 m", "AGL 450 m", "Speed 36 km/h", "Vario -1.0 m/s", "Glide 10.0"};
+  EXPECT_EQ(lines, expected);
+  // Climbing: no glide ratio; no heart rate where none was recorded.
+  t.vspeed_ms = {2.0, 2.0};
+  const auto climbing = gauge_lines(gauge_readings(t, {true, true, 0, 0.0, {}}));
+  for (const std::string& l : climbing) {
+    EXPECT_EQ(l.find("Glide"), std::string::npos) << l;
+    EXPECT_EQ(l.find("HR"), std::string::npos) << l;
+  }
+}
+
+std::size_t changed_pixels(const RgbaImage& a, const RgbaImage& b, const PixelRect& inside) {
+  std::size_t n = 0;
+  for (std::uint32_t y = 0; y < a.height; ++y)
+    for (std::uint32_t x = 0; x < a.width; ++x)
+      if (inside.contains(static_cast<int>(x), static_cast<int>(y)) && a.pixel(x, y) != b.pixel(x, y)) ++n;
+  return n;
+}
+
+TEST(FilmOverlay, PanelsArePaintedWhereTheySayAndNoneIsNothing) {
+  RgbaImage blank{320, 180, std::vector<std::uint8_t>(320 * 180 * 4, 200)};
+  TextRasterizer text;
+  const std::vector<GaugeReadings> gauges{{"Glider", 975.0, 500.0, 36.0, -1.0, std::nan("")}};
+  RgbaImage none = blank;
+  EXPECT_TRUE(draw_film_overlay(none, text, OverlayLevel::none, 1718704800.0, gauges).empty());
+  EXPECT_EQ(none.rgba, blank.rgba);
+
+  RgbaImage full = blank;
+  const auto rects = draw_film_overlay(full, text, OverlayLevel::full, 1718704800.0, gauges);
+  ASSERT_EQ(rects.size(), 2u);  // the clock, one gauge panel
+  const auto measured = film_overlay_panels(320, 180, text, OverlayLevel::full, gauges);
+  ASSERT_EQ(measured.size(), rects.size());
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    EXPECT_EQ(measured[i].x, rects[i].x);
+    EXPECT_EQ(measured[i].y, rects[i].y);
+    EXPECT_EQ(measured[i].width, rects[i].width);
+    EXPECT_EQ(measured[i].height, rects[i].height);
+  }
+  EXPECT_LT(rects[0].x, 160);  // the clock top left
+  EXPECT_GT(rects[1].x, 160);  // the gauges top right
+  for (const PixelRect& r : rects)
+    EXPECT_GT(changed_pixels(full, blank, r), static_cast<std::size_t>(r.width * r.height / 2));
+  // Nothing outside the panels changed.
+  std::size_t outside = 0;
+  for (std::uint32_t y = 0; y < 180; ++y)
+    for (std::uint32_t x = 0; x < 320; ++x) {
+      const bool in = rects[0].contains(static_cast<int>(x), static_cast<int>(y)) ||
+                      rects[1].contains(static_cast<int>(x), static_cast<int>(y));
+      if (!in && full.pixel(x, y) != blank.pixel(x, y)) ++outside;
+    }
+  EXPECT_EQ(outside, 0u);
+
+  RgbaImage minimal = blank;
+  EXPECT_EQ(draw_film_overlay(minimal, text, OverlayLevel::minimal, 1718704800.0, gauges).size(), 1u);
+}
+
+}  // namespace
+}  // namespace trailray::scene
