@@ -29,8 +29,13 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
   cmd.add_option("--from", args.from, "Start of the part filmed: a fraction, +offset, UTC time or date-time")
       ->type_name("WHEN");
   cmd.add_option("--to", args.to, "End of the part filmed (same forms as --from)")->type_name("WHEN");
-  cmd.add_option("--camera-mode", args.mode, "follow (default), orbit, or fixed (with --camera/--look-at)")
+  cmd.add_option("--camera-mode", args.mode,
+                 "follow (default), orbit, fixed (with --camera/--look-at) or path (with --camera-path)")
       ->type_name("MODE");
+  cmd.add_option("--camera-path", args.camera_path,
+                 "Keyframes of the camera: lines 'WHEN camera LAT,LON,ALT,HEADING,PITCH' or 'WHEN look-at "
+                 "LAT,LON,ALT DISTANCE HEADING PITCH' (WHEN: 0, 12s, 1m30s of film), interpolated smoothly")
+      ->type_name("FILE");
   cmd.add_option("--follow", args.follow, "The track the camera follows, counted from 1 (default 1)")->type_name("N");
   cmd.add_option("--trail", args.trail,
                  "What of each track is drawn: all (the future ghosted, default), past, or a tail (10m)")
@@ -77,15 +82,21 @@ FilmCameraMode check_video_args(const VideoArgs& a) {
     throw CLI::ValidationError("--follow",
                                fmt::format("'{}' is not a track number in 1..{}", a.follow, a.tracks.size()));
   const bool placed = !a.camera.camera.empty() || !a.camera.look_at.empty();
-  FilmCameraMode mode = placed ? FilmCameraMode::fixed : FilmCameraMode::follow;
-  if (a.mode == "follow")
+  FilmCameraMode mode = placed                   ? FilmCameraMode::fixed
+                        : !a.camera_path.empty() ? FilmCameraMode::path
+                                                 : FilmCameraMode::follow;
+  if (a.mode == "path")
+    mode = FilmCameraMode::path;
+  else if (a.mode == "follow")
     mode = FilmCameraMode::follow;
   else if (a.mode == "orbit")
     mode = FilmCameraMode::orbit;
   else if (a.mode == "fixed")
     mode = FilmCameraMode::fixed;
   else if (!a.mode.empty())
-    throw CLI::ValidationError("--camera-mode", fmt::format("'{}' is not follow, orbit or fixed", a.mode));
+    throw CLI::ValidationError("--camera-mode", fmt::format("'{}' is not follow, orbit, fixed or path", a.mode));
+  if ((mode == FilmCameraMode::path) != !a.camera_path.empty())
+    throw CLI::ValidationError("--camera-path", "a camera path goes with --camera-mode path (or none)");
   if (mode != FilmCameraMode::fixed && placed)
     throw CLI::ValidationError("--camera/--look-at", "place a fixed camera: they go with --camera-mode fixed");
   if (mode != FilmCameraMode::fixed && a.camera.pitch_deg &&

@@ -25,8 +25,9 @@ struct VideoArgs {
   std::string size = "1280x720";
   double pixel_ratio = 1.0;
   CameraArgs camera;
-  std::string mode;  // --camera-mode follow|orbit|fixed; empty: fixed with --camera/--look-at, else follow
-  int follow = 1;    // --follow N: the track the camera follows (1-based)
+  std::string mode;         // --camera-mode follow|orbit|fixed|path; empty: from the other options, else follow
+  std::string camera_path;  // --camera-path FILE
+  int follow = 1;           // --follow N: the track the camera follows (1-based)
   std::string duration, speed, from, to;
   double fps = 30.0;
   std::string trail = "all";
@@ -44,7 +45,7 @@ struct VideoArgs {
 
 void add_video_options(CLI::App& command, VideoArgs& args);
 
-enum class FilmCameraMode { follow, orbit, fixed };
+enum class FilmCameraMode { follow, orbit, fixed, path };
 
 // What CLI11 cannot check alone: -o or --frames-dir, the camera mode with its options, the CRF,
 // the timeout. Throws CLI::ValidationError naming the option.

@@ -251,5 +251,22 @@ TEST(VideoCli, CtrlCLeavesNoFile) {
     EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
 }
 
+TEST(VideoCli, ACameraPathFilmsAndABrokenOneNamesFileAndLine) {
+  RenderEnv env;
+  const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {straight_hike()}}});
+  const std::string path = env.file("path.txt");
+  std::ofstream(path) << "0s look-at 46.70,7.86,1000 3000 0 -40\n1s look-at 46.70,7.86,1000 2000 90 -30\n";
+  const std::string out = env.file("path.mp4");
+  const std::string common = video(env) + shell_quote(gpx) + kFilm + " --size 64x48 --duration 1s --fps 4 ";
+  const auto r = run_command(common + "--camera-path " + shell_quote(path) + " -o " + shell_quote(out) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(probe(out).frames, 4);
+  std::ofstream(path) << "0s look-at 46.70,7.86,1000 3000 0 -40\n\n1s look-at 46.70,7.86 2000 90 -30\n";
+  const auto broken =
+      run_command(common + "--camera-path " + shell_quote(path) + " --force -o " + shell_quote(out) + " 2>&1");
+  EXPECT_EQ(broken.status, 1) << broken.out;
+  EXPECT_NE(broken.out.find(path + ":3:"), std::string::npos) << broken.out;
+}
+
 }  // namespace
 }  // namespace trailray::test

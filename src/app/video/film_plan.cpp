@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "app/scene_setup.hpp"
 #include "geo/wgs84.hpp"
+#include "scene/film/camera_path.hpp"
 #include "scene/replay_position.hpp"
 #include "terrain/height_sampler.hpp"
 
@@ -41,6 +44,21 @@ Extent extent_of(const scene::TrackSet& tracks) {
   if (lat0 > lat1) return {};
   const glm::dvec3 a = geo::ecef_from_geodetic(lat0, lon0, h0), b = geo::ecef_from_geodetic(lat1, lon1, h1);
   return {geo::ecef_from_geodetic((lat0 + lat1) / 2, (lon0 + lon1) / 2, (h0 + h1) / 2), glm::length(b - a)};
+}
+
+// The cameras of the looks, their depth ranges from the ground below each.
+std::vector<scene::Camera> cameras_of(const std::vector<scene::FilmLook>& looks, const scene::Lens& lens,
+                                      const scene::HeightBatch& ground) {
+  std::vector<geo::LatLon> below(looks.size());
+  for (std::size_t i = 0; i < looks.size(); ++i) {
+    const geo::Geodetic g = geo::geodetic_from_ecef(scene::camera_position(looks[i]));
+    below[i] = {g.lat_deg, g.lon_deg};
+  }
+  const std::vector<double> ground_below = ground(below);
+  std::vector<scene::Camera> cameras;
+  cameras.reserve(looks.size());
+  for (std::size_t i = 0; i < looks.size(); ++i) cameras.push_back(scene::camera_of(looks[i], lens, ground_below[i]));
+  return cameras;
 }
 
 }  // namespace
@@ -104,6 +122,18 @@ std::vector<scene::Camera> plan_film_cameras(const VideoArgs& a, FilmCameraMode 
     return std::vector<scene::Camera>(frames, initial_camera(request, lens, tracks, neutral_ground_m, heights));
   }
   const scene::HeightBatch ground = film_heights(heights, neutral_ground_m);
+  if (mode == FilmCameraMode::path) {
+    std::ifstream in(a.camera_path, std::ios::binary);
+    if (!in) throw std::runtime_error(a.camera_path + ": cannot read the camera path");
+    std::stringstream text;
+    text << in.rdbuf();
+    const auto keys = scene::parse_camera_path(text.str(), a.camera_path);
+    if (!keys.ok()) throw std::runtime_error(keys.error);
+    std::vector<scene::FilmLook> looks(frames);
+    for (std::size_t i = 0; i < frames; ++i)
+      looks[i] = scene::camera_path_look(*keys.value, static_cast<double>(i) / clock.timing.fps);
+    return cameras_of(looks, lens, ground);
+  }
   const Extent extent = extent_of(tracks);
   scene::FilmCameraSettings settings;
   const double fps = clock.timing.fps;
@@ -134,16 +164,7 @@ std::vector<scene::Camera> plan_film_cameras(const VideoArgs& a, FilmCameraMode 
     looks = scene::orbit_looks(extent.centre, frames, a.camera.heading_deg.value_or(framed.heading_deg()), settings,
                                ground);
   }
-  std::vector<geo::LatLon> below(looks.size());
-  for (std::size_t i = 0; i < looks.size(); ++i) {
-    const geo::Geodetic g = geo::geodetic_from_ecef(scene::camera_position(looks[i]));
-    below[i] = {g.lat_deg, g.lon_deg};
-  }
-  const std::vector<double> ground_below = ground(below);
-  std::vector<scene::Camera> cameras;
-  cameras.reserve(looks.size());
-  for (std::size_t i = 0; i < looks.size(); ++i) cameras.push_back(scene::camera_of(looks[i], lens, ground_below[i]));
-  return cameras;
+  return cameras_of(looks, lens, ground);
 }
 
 }  // namespace trailray::app
