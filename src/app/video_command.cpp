@@ -46,6 +46,18 @@ class InterruptGuard {
   void (*previous_term_)(int) = SIG_DFL;
 };
 
+// Every camera is known before the first frame: while a frame is drawn, the tiles of one a little
+// later are already loading (the frame itself still waits for all of its own).
+constexpr std::size_t kPrefetchFrames = 10;
+void prefetch_tiles(scene::TerrainView& terrain, const scene::Camera& later, double neutral_ground_m) {
+  if (terrain.heights() == nullptr && terrain.imagery() == nullptr) return;
+  scene::TileLoadPolicy waiting = terrain.policy(), asking = waiting;
+  asking.wait = false;
+  terrain.set_policy(asking);
+  terrain.tiles_for(later, neutral_ground_m);
+  terrain.set_policy(std::move(waiting));
+}
+
 std::string clock_text(double seconds) {
   const long s = std::lround(std::max(0.0, seconds));
   return s >= 3600 ? fmt::format("{}:{:02d}:{:02d}", s / 3600, (s / 60) % 60, s % 60)
@@ -67,7 +79,9 @@ int run_video(const VideoArgs& a) {
   InterruptGuard guard;  // from the start: Ctrl-C while the tracks load stops before the first frame too
   const FilmCameraMode mode = check_video_args(a);
   const scene::Lens lens = parse_lens(a.size, a.camera.fov_deg);
-  const scene::Style style = parse_style(a.style);
+  StyleArgs style_args = a.style;
+  if (a.fast) style_args.no_shadows = style_args.no_ssao = true;  // two thirds of a frame on llvmpipe
+  const scene::Style style = parse_style(style_args);
   const scene::TrailMode trail = [&] {
     auto parsed = scene::parse_trail_mode(a.trail);
     if (!parsed.ok()) throw CLI::ValidationError("--trail", parsed.error);
@@ -155,6 +169,7 @@ int run_video(const VideoArgs& a) {
     std::vector<scene::GaugeReadings> gauges;
     for (std::size_t k : gauged) gauges.push_back(scene::gauge_readings(loaded.tracks[k], film.positions()[k]));
     scene.label_keep_out = scene::film_overlay_panels(lens.width_px, lens.height_px, text, overlay, gauges);
+    prefetch_tiles(terrain, cameras[std::min(frames - 1, i + kPrefetchFrames)], scene.neutral_ground_m);
     renderer.draw(scene, cameras[i], picture);
     scene::draw_scene_legend(picture.image, legend_scene);
     scene::draw_film_overlay(picture.image, text, overlay, time, gauges);

@@ -34,6 +34,7 @@ struct VideoArgs {
   std::string align = "clock";
   std::string overlay = "full";
   int crf = 20;
+  bool fast = false;  // --fast: no shadows, no SSAO
   StyleArgs style;
   double timeout_s = 120.0;
   bool verbose = false;
