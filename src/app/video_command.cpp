@@ -17,6 +17,7 @@
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/film/film_overlay.hpp"
+#include "scene/film/film_profile.hpp"
 #include "scene/film/film_tracks.hpp"
 #include "scene/legend_content.hpp"
 #include "scene/terrain_view.hpp"
@@ -140,6 +141,14 @@ int run_video(const VideoArgs& a) {
     if (mode == FilmCameraMode::follow ? followed : (!t.is_route && t.start_time())) gauged.push_back(i);
   }
   scene::TextRasterizer text;
+  // The mini profile (full overlay): the first gauged track's, over the part filmed.
+  scene::FilmProfile profile;
+  if (overlay == scene::OverlayLevel::full && !gauged.empty()) {
+    const std::size_t k = gauged.front();
+    const scene::TimeSpan own{clock.timing.span.start + clock.offsets[k], clock.timing.span.end + clock.offsets[k]};
+    profile =
+        scene::film_profile(loaded.tracks[k], own, scene::film_profile_panel(lens.width_px, lens.height_px).width - 8);
+  }
 
   render::GlContext gl = render::GlContext::create_headless();
   for (const std::string& line : gl.describe()) diagnostics.note(line);
@@ -169,10 +178,13 @@ int run_video(const VideoArgs& a) {
     std::vector<scene::GaugeReadings> gauges;
     for (std::size_t k : gauged) gauges.push_back(scene::gauge_readings(loaded.tracks[k], film.positions()[k]));
     scene.label_keep_out = scene::film_overlay_panels(lens.width_px, lens.height_px, text, overlay, gauges);
+    if (!profile.altitude_m.empty())
+      scene.label_keep_out.push_back(scene::film_profile_panel(lens.width_px, lens.height_px));
     prefetch_tiles(terrain, cameras[std::min(frames - 1, i + kPrefetchFrames)], scene.neutral_ground_m);
     renderer.draw(scene, cameras[i], picture);
     scene::draw_scene_legend(picture.image, legend_scene);
     scene::draw_film_overlay(picture.image, text, overlay, time, gauges);
+    if (!gauged.empty()) scene::draw_film_profile(picture.image, profile, time + clock.offsets[gauged.front()]);
     writer->add(picture.image);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double rate = static_cast<double>(i + 1) / std::max(elapsed, 1e-9);

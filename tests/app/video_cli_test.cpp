@@ -225,13 +225,22 @@ TEST(VideoCli, SeveralTracksOnOneClockOrEachFromItsStart) {
 TEST(VideoCli, TheSameInputsGiveTheSameFilm) {
   RenderEnv env;
   const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {straight_hike()}}});
-  const std::string command = video(env) + shell_quote(gpx) + kFilm + " --size 64x48 --duration 1s --fps 6 -o ";
-  ASSERT_EQ(run_command(command + shell_quote(env.file("a.mp4")) + " 2>&1").status, 0);
-  ASSERT_EQ(run_command(command + shell_quote(env.file("b.mp4")) + " 2>&1").status, 0);
+  const std::string command = video(env) + shell_quote(gpx) + kFilm + " --size 64x48 --duration 1s --fps 6 ";
   const auto bytes = [](const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
+  // The frames first (the renderer), then the films (the encoder too).
+  for (const char* folder : {"frames_a", "frames_b"})
+    ASSERT_EQ(run_command(command + "--frames-dir " + shell_quote(env.file(folder)) + " 2>&1").status, 0);
+  for (int k = 1; k <= 6; ++k) {
+    const std::string name = fmt::format("frame_{:06d}.png", k);
+    const std::string a = bytes((std::filesystem::path(env.file("frames_a")) / name).string());
+    EXPECT_GT(a.size(), 100u);
+    EXPECT_TRUE(a == bytes((std::filesystem::path(env.file("frames_b")) / name).string())) << name;
+  }
+  ASSERT_EQ(run_command(command + "-o " + shell_quote(env.file("a.mp4")) + " 2>&1").status, 0);
+  ASSERT_EQ(run_command(command + "-o " + shell_quote(env.file("b.mp4")) + " 2>&1").status, 0);
   const std::string a = bytes(env.file("a.mp4"));
   EXPECT_GT(a.size(), 100u);
   EXPECT_TRUE(a == bytes(env.file("b.mp4")));

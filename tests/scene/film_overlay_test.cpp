@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "scene/film/film_overlay.hpp"
+#include "scene/film/film_profile.hpp"
 
 namespace trailray::scene {
 namespace {
@@ -83,6 +84,64 @@ TEST(FilmOverlay, PanelsArePaintedWhereTheySayAndNoneIsNothing) {
 
   RgbaImage minimal = blank;
   EXPECT_EQ(draw_film_overlay(minimal, text, OverlayLevel::minimal, 1718704800.0, gauges).size(), 1u);
+}
+
+TEST(FilmProfile, ClimbsWithTheTrackAndMarksNow) {
+  // 11 points 10 s apart climbing from 1000 m to 2000 m over flat ground at 900 m.
+  Track t;
+  t.geometry.segments.resize(1);
+  for (int i = 0; i <= 10; ++i) {
+    t.geometry.segments[0].points_ecef.push_back(glm::dvec3(6.4e6, i * 100.0, 0.0));
+    t.distance_m.push_back(i * 100.0);
+    t.time_unix_s.push_back(1718704800.0 + i * 10.0);
+    t.timed_points.push_back(static_cast<std::size_t>(i));
+    t.altitude_m.push_back(1000.0 + i * 100.0);
+    t.ground_m.push_back(900.0);
+  }
+  t.segment_first = {0};
+  const TimeSpan span{1718704800.0, 1718704900.0};
+  const FilmProfile p = film_profile(t, span, 50);
+  ASSERT_EQ(p.altitude_m.size(), 50u);
+  EXPECT_DOUBLE_EQ(p.altitude_m.front(), 1000.0);
+  EXPECT_DOUBLE_EQ(p.altitude_m.back(), 2000.0);
+  EXPECT_LT(p.low_m, 900.0);
+  EXPECT_GT(p.high_m, 2000.0);
+
+  RgbaImage image{320, 180, std::vector<std::uint8_t>(320 * 180 * 4, 200)};
+  const PixelRect panel = draw_film_profile(image, p, span.start + 25.0);  // a quarter through
+  ASSERT_FALSE(panel.empty());
+  EXPECT_GT(panel.x, 160);  // bottom right
+  EXPECT_GT(panel.y, 90);
+  // The red "now" line stands a quarter of the way across; no red column elsewhere.
+  const auto red_rows = [&](int x) {
+    int n = 0;
+    for (int y = panel.y; y < panel.bottom(); ++y) {
+      const auto px = image.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+      n += px[0] > 200 && px[1] < 100 && px[2] < 100 ? 1 : 0;
+    }
+    return n;
+  };
+  int best = 0, best_x = 0;
+  for (int x = panel.x; x < panel.right(); ++x)
+    if (red_rows(x) > best) best = red_rows(x), best_x = x;
+  EXPECT_GT(best, panel.height / 2);
+  EXPECT_NEAR(best_x, panel.x + 4 + 0.25 * (panel.width - 9), 2.0);
+  // The line climbs: white higher at the right end than at the left.
+  const auto white_row = [&](int x) {
+    for (int y = panel.y; y < panel.bottom(); ++y) {
+      const auto px = image.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+      if (px[0] > 240 && px[1] > 240 && px[2] > 240) return y;
+    }
+    return -1;
+  };
+  const int left = white_row(panel.x + 4), right = white_row(panel.right() - 5);  // the first and last columns
+  ASSERT_GE(left, 0);
+  ASSERT_GE(right, 0);
+  EXPECT_LT(right, left - panel.height / 3);
+  // Without altitudes: nothing drawn.
+  RgbaImage untouched{320, 180, std::vector<std::uint8_t>(320 * 180 * 4, 200)};
+  EXPECT_TRUE(draw_film_profile(untouched, FilmProfile{}, span.start).empty());
+  EXPECT_EQ(untouched.rgba, std::vector<std::uint8_t>(320 * 180 * 4, 200));
 }
 
 }  // namespace

@@ -104,7 +104,11 @@ scene::HeightBatch film_heights(terrain::HeightSource* heights, double neutral_g
   return [heights, neutral_ground_m](std::span<const geo::LatLon> points) {
     std::vector<double> out(points.size(), neutral_ground_m);
     if (heights != nullptr) {
-      terrain::HeightSampler sampler(*heights);
+      // Clearance needs no finer heights than about 20 m apart (zoom 13), and the lines of sight
+      // of a whole film cover much ground: a tile source's finest level would load far more.
+      terrain::HeightSamplerOptions options;
+      options.zoom = std::min(heights->info().max_zoom, 13);
+      terrain::HeightSampler sampler(*heights, options);
       out = sampler.sample(points);
       for (double& h : out)
         if (std::isnan(h)) h = neutral_ground_m;

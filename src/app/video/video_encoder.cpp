@@ -95,6 +95,9 @@ class VideoFile final : public FilmWriter {
     codec_->color_primaries = AVCOL_PRI_BT709;
     codec_->color_trc = AVCOL_TRC_IEC61966_2_1;  // the frames are sRGB encoded
     codec_->flags |= AV_CODEC_FLAG_BITEXACT;
+    // The encoders' output depends on their thread count, which by default follows the machine's
+    // cores: a fixed count gives the same file on every machine.
+    codec_->thread_count = 4;
     if ((format_->oformat->flags & AVFMT_GLOBALHEADER) != 0) codec_->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     AVDictionary* options = nullptr;
     av_dict_set(&options, "crf", std::to_string(settings_.crf).c_str(), 0);
