@@ -6,6 +6,7 @@
 #include <csignal>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "app/output_file.hpp"
 #include "app/render_report.hpp"
@@ -65,15 +66,18 @@ std::string clock_text(double seconds) {
                    : fmt::format("{}:{:02d}", s / 60, s % 60);
 }
 
-// A folder of frames: an earlier film's frames are replaced only with --force.
+// A folder of frames: an earlier film's frames are replaced (all of them) only with --force.
 void check_frames_dir(const std::string& dir, bool force) {
   std::error_code error;
   if (!std::filesystem::exists(dir, error)) return;
   if (!std::filesystem::is_directory(dir, error)) throw std::runtime_error(dir + ": is not a folder");
-  if (force) return;
+  std::vector<std::filesystem::path> earlier;
   for (const auto& entry : std::filesystem::directory_iterator(dir, error))
-    if (entry.path().filename().string().rfind("frame_", 0) == 0)
-      throw std::runtime_error(dir + ": already holds frames (--force replaces them)");
+    if (entry.path().filename().string().rfind("frame_", 0) == 0 && entry.path().extension() == ".png")
+      earlier.push_back(entry.path());
+  if (!earlier.empty() && !force) throw std::runtime_error(dir + ": already holds frames (--force replaces them)");
+  // A shorter film must not leave the earlier one's last frames behind.
+  for (const auto& path : earlier) std::filesystem::remove(path, error);
 }
 
 int run_video(const VideoArgs& a) {

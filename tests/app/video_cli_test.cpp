@@ -108,6 +108,28 @@ TEST(VideoCli, AnExistingFilmIsReplacedOnlyWithForce) {
   EXPECT_GT(std::filesystem::file_size(out), 100u);
 }
 
+TEST(VideoCli, AFolderOfFramesIsReplacedWholeOnlyWithForce) {
+  RenderEnv env;
+  const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {straight_hike()}}});
+  const std::string folder = env.file("frames");
+  const std::string command =
+      video(env) + shell_quote(gpx) + kFilm + " --size 64x48 --fps 4 --frames-dir " + shell_quote(folder);
+  ASSERT_EQ(run_command(command + " --duration 2s 2>&1").status, 0);
+  const auto count = [&] {
+    std::size_t n = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) n += entry.path().extension() == ".png";
+    return n;
+  };
+  EXPECT_EQ(count(), 8u);
+  const auto refused = run_command(command + " --duration 1s 2>&1");
+  EXPECT_EQ(refused.status, 1) << refused.out;
+  EXPECT_NE(refused.out.find("--force"), std::string::npos) << refused.out;
+  EXPECT_EQ(count(), 8u);
+  // A shorter film replaces all of the earlier one's frames.
+  ASSERT_EQ(run_command(command + " --duration 1s --force 2>&1").status, 0);
+  EXPECT_EQ(count(), 4u);
+}
+
 TEST(VideoCli, WrongFilmOptionsAreUsageErrorsNamingTheOption) {
   RenderEnv env;
   const std::string gpx = env.write_gpx("hike.gpx", {{"Hike", {straight_hike()}}});
