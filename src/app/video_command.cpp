@@ -145,6 +145,12 @@ int run_video(const VideoArgs& a) {
     if (mode == FilmCameraMode::follow ? followed : (!t.is_route && t.start_time())) gauged.push_back(i);
   }
   scene::TextRasterizer text;
+  // The map data's credits, as the sources give them.
+  std::string attribution;
+  for (const std::string& credit : {sources.heights ? sources.heights->info().attribution : std::string(),
+                                    sources.imagery ? sources.imagery->info().attribution : std::string()})
+    if (!credit.empty() && attribution.find(credit) == std::string::npos)
+      attribution += (attribution.empty() ? "" : " | ") + credit;
   // The mini profile (full overlay): the first gauged track's, over the part filmed.
   scene::FilmProfile profile;
   if (overlay == scene::OverlayLevel::full && !gauged.empty()) {
@@ -181,13 +187,14 @@ int run_video(const VideoArgs& a) {
     scene.waypoints = &film.waypoints();
     std::vector<scene::GaugeReadings> gauges;
     for (std::size_t k : gauged) gauges.push_back(scene::gauge_readings(loaded.tracks[k], film.positions()[k]));
-    scene.label_keep_out = scene::film_overlay_panels(lens.width_px, lens.height_px, text, overlay, gauges);
+    scene.label_keep_out =
+        scene::film_overlay_panels(lens.width_px, lens.height_px, text, overlay, gauges, attribution);
     if (!profile.altitude_m.empty())
       scene.label_keep_out.push_back(scene::film_profile_panel(lens.width_px, lens.height_px));
     prefetch_tiles(terrain, cameras[std::min(frames - 1, i + kPrefetchFrames)], scene.neutral_ground_m);
     renderer.draw(scene, cameras[i], picture);
     scene::draw_scene_legend(picture.image, legend_scene);
-    scene::draw_film_overlay(picture.image, text, overlay, time, gauges);
+    scene::draw_film_overlay(picture.image, text, overlay, time, gauges, attribution);
     if (!gauged.empty()) scene::draw_film_profile(picture.image, profile, time + clock.offsets[gauged.front()]);
     writer->add(picture.image);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -84,6 +84,14 @@ TEST(FilmOverlay, PanelsArePaintedWhereTheySayAndNoneIsNothing) {
 
   RgbaImage minimal = blank;
   EXPECT_EQ(draw_film_overlay(minimal, text, OverlayLevel::minimal, 1718704800.0, gauges).size(), 1u);
+  // The map data's credits: one more panel, bottom right.
+  RgbaImage credited = blank;
+  const auto with_credits =
+      draw_film_overlay(credited, text, OverlayLevel::minimal, 1718704800.0, gauges, "DEM: swisstopo");
+  ASSERT_EQ(with_credits.size(), 2u);
+  EXPECT_GT(with_credits[1].y, 120);
+  EXPECT_GT(with_credits[1].x, 160);
+  EXPECT_GT(changed_pixels(credited, blank, with_credits[1]), 10u);
 }
 
 TEST(FilmProfile, ClimbsWithTheTrackAndMarksNow) {

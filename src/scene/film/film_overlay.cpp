@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/film/film_profile.hpp"
 #include "scene/legend.hpp"
 
 namespace trailray::scene {
@@ -42,11 +43,13 @@ struct Panel {
   PixelRect rect;
   std::vector<std::string> lines;  // the first in bold
   bool bold_first = false;
+  int font_px = 0, pad = 0;
 };
 
 // Where everything goes: the clock top left, the gauge panels stacked top right.
 std::vector<Panel> layout(std::uint32_t width, std::uint32_t height, TextRasterizer& text, OverlayLevel level,
-                          double time_unix_s, const std::vector<GaugeReadings>& gauges) {
+                          double time_unix_s, const std::vector<GaugeReadings>& gauges,
+                          const std::string& attribution) {
   std::vector<Panel> panels;
   if (level == OverlayLevel::none) return panels;
   const int f = legend_font_px(height), pad = std::max(4, f / 2), margin = f;
@@ -57,7 +60,7 @@ std::vector<Panel> layout(std::uint32_t width, std::uint32_t height, TextRasteri
       w = std::max(w, text.measure(lines[i], f, bold_first && i == 0 ? FontWeight::bold : FontWeight::regular).width);
     const int pw = w + 2 * pad, ph = static_cast<int>(lines.size()) * line + 2 * pad - f / 4;
     const int x = right ? x_right_or_left - pw : x_right_or_left;
-    return Panel{{x, y, pw, ph}, std::move(lines), bold_first};
+    return Panel{{x, y, pw, ph}, std::move(lines), bold_first, f, pad};
   };
   panels.push_back(panel_of({film_clock_text(time_unix_s)}, false, margin, false, margin));
   if (level == OverlayLevel::full) {
@@ -71,6 +74,16 @@ std::vector<Panel> layout(std::uint32_t width, std::uint32_t height, TextRasteri
       y = p.rect.bottom() + pad;
       panels.push_back(std::move(p));
     }
+  }
+  if (!attribution.empty()) {
+    // Small, bottom right (the legend takes the bottom left), above the profile where there is one.
+    const int small = std::max(9, f * 3 / 4), small_pad = std::max(2, small / 3);
+    const std::string line_text = text.ellipsize(attribution, 200, static_cast<int>(width) * 2 / 3, small);
+    const int w = text.measure(line_text, small).width + 2 * small_pad;
+    const int h = text.measure(line_text, small).height() + 2 * small_pad;
+    int bottom = static_cast<int>(height) - small_pad;
+    if (level == OverlayLevel::full && !gauges.empty()) bottom = film_profile_panel(width, height).y - small_pad;
+    panels.push_back({{static_cast<int>(width) - margin - w, bottom - h, w, h}, {line_text}, false, small, small_pad});
   }
   return panels;
 }
@@ -119,12 +132,12 @@ std::string film_clock_text(double t) {
 }
 
 std::vector<PixelRect> draw_film_overlay(RgbaImage& image, TextRasterizer& text, OverlayLevel level, double time_unix_s,
-                                         const std::vector<GaugeReadings>& gauges) {
+                                         const std::vector<GaugeReadings>& gauges, const std::string& attribution) {
   std::vector<PixelRect> covered;
-  const int f = legend_font_px(image.height), pad = std::max(4, f / 2);
-  const int line = text.measure("Ag", f).height() + f / 4;
-  for (const Panel& p : layout(image.width, image.height, text, level, time_unix_s, gauges)) {
-    fill_rounded_rect(image, p.rect, pad / 2, kPanelColor);
+  for (const Panel& p : layout(image.width, image.height, text, level, time_unix_s, gauges, attribution)) {
+    const int f = p.font_px, pad = p.pad;
+    const int line = text.measure("Ag", f).height() + f / 4;
+    fill_rounded_rect(image, p.rect, std::max(2, pad / 2), kPanelColor);
     int baseline = p.rect.y + pad + text.measure("Ag", f).ascent;
     for (std::size_t i = 0; i < p.lines.size(); ++i, baseline += line)
       text.draw(image, p.lines[i], p.rect.x + pad, baseline,
@@ -135,9 +148,10 @@ std::vector<PixelRect> draw_film_overlay(RgbaImage& image, TextRasterizer& text,
 }
 
 std::vector<PixelRect> film_overlay_panels(std::uint32_t width, std::uint32_t height, TextRasterizer& text,
-                                           OverlayLevel level, const std::vector<GaugeReadings>& gauges) {
+                                           OverlayLevel level, const std::vector<GaugeReadings>& gauges,
+                                           const std::string& attribution) {
   std::vector<PixelRect> rects;
-  for (const Panel& p : layout(width, height, text, level, 0.0, gauges)) rects.push_back(p.rect);
+  for (const Panel& p : layout(width, height, text, level, 0.0, gauges, attribution)) rects.push_back(p.rect);
   return rects;
 }
 

@@ -35,13 +35,15 @@ std::vector<std::string> gauge_lines(const GaugeReadings& readings);
 // "2024-06-18 10:15:42 UTC".
 std::string film_clock_text(double time_unix_s);
 
-// Paints the clock (`minimal`, `full`) and the gauge panels (`full`) into `image`; returns the
+// Paints the clock (`minimal`, `full`), the gauge panels (`full`) and the map data's
+// `attribution` (`minimal`, `full`; bottom right, when not empty) into `image`; returns the
 // rectangles it covered (labels keep out of them).
 std::vector<PixelRect> draw_film_overlay(RgbaImage& image, TextRasterizer& text, OverlayLevel level, double time_unix_s,
-                                         const std::vector<GaugeReadings>& gauges);
+                                         const std::vector<GaugeReadings>& gauges, const std::string& attribution = {});
 
 // The rectangles draw_film_overlay would cover, without drawing.
 std::vector<PixelRect> film_overlay_panels(std::uint32_t width, std::uint32_t height, TextRasterizer& text,
-                                           OverlayLevel level, const std::vector<GaugeReadings>& gauges);
+                                           OverlayLevel level, const std::vector<GaugeReadings>& gauges,
+                                           const std::string& attribution = {});
 
 }  // namespace trailray::scene
