@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "scene/scored_route.hpp"
+#include "scene/thermal_markers.hpp"
 #include "scene/waypoint_building.hpp"
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
@@ -33,13 +36,24 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
   out.recorded = scene::recorded_points(files);
   scene::TrackBuildOptions build = options;
   build.neutral_ground_m = out.recorded.lowest_or_sea_level();
+  const bool thermals = waypoints.thermals_for(style.color_by);
+  build.analyse_flights = build.analyse_flights || thermals;
   for (scene::Track& t : scene::build_tracks(files, style, build, diagnostics)) out.tracks.add(std::move(t));
   const scene::WaypointBuildOptions placing{options.heights, build.neutral_ground_m};
   out.waypoints.points = scene::file_waypoints(files, placing);
   for (scene::Waypoint& w : scene::read_place_labels(waypoints.label_files, read, placing, diagnostics))
     out.waypoints.points.push_back(std::move(w));
   if (waypoints.no_waypoints) scene::set_waypoints_visible(out.waypoints, false);
-  // After --no-waypoints: the score's turnpoints were asked for explicitly.
+  // After --no-waypoints: the thermals and the score's turnpoints have options of their own.
+  if (thermals) {
+    std::size_t marked = 0;
+    for (const scene::Track& t : out.tracks.tracks())
+      for (scene::Waypoint& w : scene::thermal_markers(t)) {
+        out.waypoints.points.push_back(std::move(w));
+        ++marked;
+      }
+    diagnostics.note(fmt::format("{} thermal marker{}", marked, marked == 1 ? "" : "s"));
+  }
   if (waypoints.score) {
     scene::ScoredRouteDrawing drawing =
         scored_route_of(paths, waypoints.score_rules, style, build, placing, diagnostics);

@@ -29,12 +29,14 @@ void add_track_style_options(CLI::App& command, StyleArgs& args) {
   command
       .add_option("--color-by", args.color_by,
                   "Colour tracks by a per-point metric: speed km/h, vspeed m/s, slope %, altitude m, agl m "
-                  "(height above the terrain), hr bpm, cadence rpm, power W, time (elapsed); default solid")
+                  "(height above the terrain), hr bpm, cadence rpm, power W, time (elapsed), phase (flights: the climb "
+                  "in m/s where circling in thermals, gliding in blue, the ground grey); default solid")
       ->type_name(metrics);
   command
       .add_option("--colormap", args.colormap,
-                  "Colormap for --color-by (default turbo; diverging for vspeed: sink blue, zero white, climb red)")
-      ->type_name("turbo|viridis|magma|cividis|diverging");
+                  "Colormap for --color-by (default turbo; diverging for vspeed: sink blue, zero white, climb red; "
+                  "warm for phase: weak climb yellow, strong dark red)")
+      ->type_name("turbo|viridis|magma|cividis|diverging|warm");
   command
       .add_option("--range", args.range,
                   "Colour scale range in the metric's unit (default: 2nd to 98th percentile of the values)")
@@ -101,12 +103,12 @@ scene::Style parse_style(const StyleArgs& args) {
     throw CLI::ValidationError("--color-by", fmt::format("'{}' is not one of {}", args.color_by,
                                                          fmt::join(track::color_metric_names(), ", ")));
   style.color_by = *metric;
-  style.colormap = track::color_metric_is_signed(*metric) ? scene::Colormap::diverging : scene::Colormap::turbo;
+  style.colormap = scene::default_colormap(*metric);
   if (!args.colormap.empty()) {
     const auto map = scene::parse_colormap(args.colormap);
     if (!map)
       throw CLI::ValidationError(
-          "--colormap", fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging", args.colormap));
+          "--colormap", fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging, warm", args.colormap));
     style.colormap = *map;
   }
   if (!args.range.empty()) {

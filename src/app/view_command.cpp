@@ -58,6 +58,7 @@ int run_view(const ViewArgs& a) {
   o.score_rules = a.waypoints.score_rules;
   o.task_file = a.waypoints.task_file;
   o.airspace_files = a.airspace.files;
+  o.thermals = a.waypoints.thermals_for(o.style.tracks.color_by);
   return view::run_viewer(o);
 }
 

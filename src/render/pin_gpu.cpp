@@ -30,15 +30,18 @@ CapsuleShape ball_shape(double px, double m, double lift_px, double lift_m) {
 
 PinGeometry pin_geometry(const scene::WaypointSet& set) {
   PinGeometry out;
-  for (scene::TrackGeometry* g : {&out.waypoint_stems, &out.waypoint_balls, &out.place_stems, &out.place_balls})
+  for (scene::TrackGeometry* g : {&out.waypoint_stems, &out.waypoint_balls, &out.place_stems, &out.place_balls,
+                                   &out.thermal_stems, &out.thermal_balls})
     g->segments.resize(1);
   for (const scene::Waypoint& w : set.points) {
     if (!w.visible) continue;
-    const bool place = w.kind == scene::WaypointKind::Place;
-    auto& stems = (place ? out.place_stems : out.waypoint_stems).segments.front().points_ecef;
-    stems.push_back(w.ground_ecef);
-    stems.push_back(w.marker_ecef);
-    (place ? out.place_balls : out.waypoint_balls).segments.front().points_ecef.push_back(w.marker_ecef);
+    const bool place = w.kind == scene::WaypointKind::Place, thermal = w.kind == scene::WaypointKind::Thermal;
+    auto& stems = (place ? out.place_stems : thermal ? out.thermal_stems : out.waypoint_stems).segments.front();
+    stems.points_ecef.push_back(w.ground_ecef);
+    stems.points_ecef.push_back(w.marker_ecef);
+    (place ? out.place_balls : thermal ? out.thermal_balls : out.waypoint_balls)
+        .segments.front()
+        .points_ecef.push_back(w.marker_ecef);
   }
   return out;
 }
@@ -52,6 +55,8 @@ std::vector<TrackDraw> PinGpu::draws(const scene::WaypointSet* set, const scene:
     waypoint_balls_ = buffer_of(geometry.waypoint_balls);
     place_stems_ = buffer_of(geometry.place_stems);
     place_balls_ = buffer_of(geometry.place_balls);
+    thermal_stems_ = buffer_of(geometry.thermal_stems);
+    thermal_balls_ = buffer_of(geometry.thermal_balls);
   }
   std::vector<TrackDraw> out;
   const auto add = [&](const std::optional<TrackBuffer>& buffer, const glm::vec3& color, const CapsuleShape& shape) {
@@ -62,6 +67,9 @@ std::vector<TrackDraw> PinGpu::draws(const scene::WaypointSet* set, const scene:
       ball_shape(style.place_marker_px, style.place_marker_m, style.place_lift_px, style.place_lift_m));
   add(waypoint_stems_, style.stem_color, stem_shape(style, style.lift_px, style.lift_m));
   add(waypoint_balls_, style.waypoint_color, ball_shape(style.marker_px, style.marker_m, style.lift_px, style.lift_m));
+  // Thermal markers stand on the track in the air: waypoints' sizes, their own colour.
+  add(thermal_stems_, style.stem_color, stem_shape(style, style.lift_px, style.lift_m));
+  add(thermal_balls_, style.thermal_color, ball_shape(style.marker_px, style.marker_m, style.lift_px, style.lift_m));
   return out;
 }
 

@@ -129,6 +129,11 @@ constexpr PackedTable kCividis{{
 constexpr std::array<std::uint32_t, 9> kDivergingKnots{0x2166ac, 0x4393c3, 0x92c5de, 0xd1e5f0, 0xf7f7f7,
                                                        0xfddbc7, 0xf4a582, 0xd6604d, 0xb2182b};
 
+// The climb in thermals (`--color-by phase`): pale yellow for a weak climb through orange to a
+// deep red for the best, every step warm so that no climb is mistaken for the gliding colour
+// (kCategoryColorSrgb, a cool blue) or the grey of no value.
+constexpr std::array<std::uint32_t, 5> kWarmKnots{0xffe45c, 0xfdb338, 0xf46d2a, 0xd7301f, 0x8c0a1e};
+
 constexpr glm::u8vec3 unpack(std::uint32_t rgb) {
   return {static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8), static_cast<std::uint8_t>(rgb)};
 }
@@ -178,9 +183,10 @@ glm::u8vec3 lab_to_srgb8(const glm::dvec3& lab) {
 
 // The knots spread evenly over the 256 entries, interpolated in CIELAB: straight lines in a
 // perceptual space keep the lightness steps even where sRGB interpolation would bulge.
-ColormapTable diverging_table() {
-  std::array<glm::dvec3, kDivergingKnots.size()> knots{};
-  std::transform(kDivergingKnots.begin(), kDivergingKnots.end(), knots.begin(),
+template <std::size_t N>
+ColormapTable lab_table(const std::array<std::uint32_t, N>& packed_knots) {
+  std::array<glm::dvec3, N> knots{};
+  std::transform(packed_knots.begin(), packed_knots.end(), knots.begin(),
                  [](std::uint32_t rgb) { return srgb8_to_lab(unpack(rgb)); });
   ColormapTable table{};
   const double last_knot = static_cast<double>(knots.size() - 1);
@@ -211,11 +217,12 @@ struct ColormapInfo {
   Colormap map;
   std::string_view name;
 };
-constexpr std::array<ColormapInfo, 5> kColormaps{{{Colormap::turbo, "turbo"},
+constexpr std::array<ColormapInfo, 6> kColormaps{{{Colormap::turbo, "turbo"},
                                                   {Colormap::viridis, "viridis"},
                                                   {Colormap::magma, "magma"},
                                                   {Colormap::cividis, "cividis"},
-                                                  {Colormap::diverging, "diverging"}}};
+                                                  {Colormap::diverging, "diverging"},
+                                                  {Colormap::warm, "warm"}}};
 
 glm::vec3 to_unit(glm::u8vec3 c) { return glm::vec3(c) / 255.0f; }
 
@@ -235,7 +242,8 @@ const ColormapTable& colormap_table(Colormap map) {
   static const ColormapTable viridis = unpack_table(kViridis);
   static const ColormapTable magma = unpack_table(kMagma);
   static const ColormapTable cividis = unpack_table(kCividis);
-  static const ColormapTable diverging = diverging_table();
+  static const ColormapTable diverging = lab_table(kDivergingKnots);
+  static const ColormapTable warm = lab_table(kWarmKnots);
   switch (map) {
     case Colormap::turbo:
       return turbo;
@@ -247,6 +255,8 @@ const ColormapTable& colormap_table(Colormap map) {
       return cividis;
     case Colormap::diverging:
       return diverging;
+    case Colormap::warm:
+      return warm;
   }
   return turbo;
 }

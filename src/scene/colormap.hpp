@@ -15,7 +15,7 @@
 
 namespace trailray::scene {
 
-enum class Colormap { turbo, viridis, magma, cividis, diverging };
+enum class Colormap { turbo, viridis, magma, cividis, diverging, warm };
 
 inline constexpr std::size_t kColormapSize = 256;
 
@@ -29,12 +29,17 @@ const ColormapTable& colormap_table(Colormap map);
 // clamped outside 0..1. NaN gives kMissingValueColorSrgb.
 glm::vec3 colormap_color(Colormap map, float position);
 
-// "turbo", "viridis", "magma", "cividis", "diverging".
+// "turbo", "viridis", "magma", "cividis", "diverging", "warm" (pale yellow to deep red: the
+// climb in thermals of `--color-by phase`).
 std::string_view colormap_name(Colormap map);
 std::optional<Colormap> parse_colormap(std::string_view name);  // exact lower-case names
 
 // Points without a value (no time, no heart rate): a neutral mid grey, sRGB.
 inline constexpr glm::vec3 kMissingValueColorSrgb{0.62f, 0.62f, 0.62f};
+
+// Points of a category rather than a value (track::kCategoryValue: gliding, for `--color-by
+// phase`): a cool blue, unlike every warm climb colour and unlike the grey of no value, sRGB.
+inline constexpr glm::vec3 kCategoryColorSrgb{0.16f, 0.47f, 0.86f};
 
 // Qualitative palette for several solid tracks: distinct, colour-blind-safe hues that stand
 // out on imagery and on the hypsometric tint; index wraps around.

@@ -39,8 +39,9 @@
 
 namespace trailray::scene {
 
-// In priority order: a track's name wins over a waypoint's, which wins over a place's.
-enum class LabelKind { track, waypoint, place };
+// In priority order: a track's name wins over a waypoint's, which wins over a thermal's, which
+// wins over a place's.
+enum class LabelKind { track, waypoint, thermal, place };
 
 struct LabelCandidate {
   std::string text;  // UTF-8, one line

@@ -47,6 +47,9 @@ std::optional<ColorLegend> color_legend_for(const TrackStyle& style, const std::
 
 std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet& tracks) {
   std::vector<TrackKeyEntry> key;
+  // Phase: the colours that are not on the climb's bar.
+  if (style.color_by == track::ColorMetric::phase)
+    return {{"gliding", kCategoryColorSrgb}, {"ground, gaps", kMissingValueColorSrgb}};
   if (style.color_by != track::ColorMetric::solid) return key;
   for (const Track& t : tracks.tracks())
     if (t.visible) key.push_back({t.is_route ? t.name + " (route)" : t.name, t.color_srgb});
@@ -68,9 +71,14 @@ void draw_scene_legend(RgbaImage& image, const Scene& scene) {
   const auto airspaces = airspace_key_for(scene);
   if (!legend && key.empty() && airspaces.empty()) return;
   TextRasterizer text;
+  // Stacked bottom up: the key (several solid tracks' names, or for phase the gliding and no-value
+  // colours), the colour bar, the airspaces' classes.
   PixelRect below;
-  if (legend) below = draw_color_legend(image, text, *legend).panel;
-  if (!key.empty()) below = draw_track_key(image, text, key).panel;
+  const auto stack = [&below](const LegendLayout& drawn) {
+    if (drawn.drawn) below = united(below, drawn.panel);
+  };
+  if (!key.empty()) stack(draw_track_key(image, text, key));
+  if (legend) stack(draw_color_legend(image, text, *legend, {0, rows_taken(below, image.height)}));
   if (!airspaces.empty()) draw_track_key(image, text, airspaces, {0, rows_taken(below, image.height)});
 }
 
@@ -85,13 +93,10 @@ PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Sc
   const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
   const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
   const auto airspaces = airspace_key_for(scene);
-  // As draw_scene_legend: a colour bar or a key, never both (one is for a metric, the other for
-  // solid colours); the airspaces' key above either.
+  // As draw_scene_legend: the key, the colour bar above it, the airspaces' classes above both.
   PixelRect below;
-  if (legend)
-    below = color_legend_panel(width, height, text, *legend);
-  else if (!key.empty())
-    below = track_key_panel(width, height, text, key);
+  if (!key.empty()) below = track_key_panel(width, height, text, key);
+  if (legend) below = united(below, color_legend_panel(width, height, text, *legend, {0, rows_taken(below, height)}));
   if (airspaces.empty()) return below;
   return united(below, track_key_panel(width, height, text, airspaces, {0, rows_taken(below, height)}));
 }

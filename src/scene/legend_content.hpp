@@ -2,8 +2,9 @@
 // What the legend says about a scene: for tracks coloured by a metric, a colour bar titled with
 // the metric's name and unit ("Speed (km/h)", "Elapsed time (h:mm)"), its range's ends as the
 // metric prints them, and a "0" tick for signed metrics; for several solid tracks, a key of their
-// names and colours; the airspace classes drawn, as a key of their own above it. Drawing is scene/legend.hpp's; this
-// file decides the content.
+// names and colours; for flight phases both: the climb in thermals as a bar over a key of the
+// gliding and no-value colours; the airspace classes drawn, as a key of their own above it.
+// Drawing is scene/legend.hpp's; this file decides the content.
 
 #include <cstdint>
 #include <optional>
@@ -20,6 +21,7 @@ namespace trailray::scene {
 std::optional<ColorLegend> color_legend_for(const TrackStyle& style, const std::optional<track::ValueRange>& range);
 
 // The key of the visible tracks' names: only for several solid tracks (one track needs no key).
+// For --color-by phase instead the colours off the climb's bar: "gliding" and "ground, gaps".
 std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet& tracks);
 
 // The key of the airspace classes drawn (airspace_volumes.hpp), stacked above the other legend:

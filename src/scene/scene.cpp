@@ -1,5 +1,7 @@
 #include "scene/scene.hpp"
 
+#include <algorithm>
+
 #include "scene/sun_position.hpp"
 
 namespace trailray::scene {
@@ -14,7 +16,14 @@ std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style
     for (const TrackPolyline& line : t.geometry.segments)
       if (!line.values.empty()) values.push_back(line.values);
   }
-  return track::robust_range(values, track::color_metric_is_signed(metric));
+  const auto range = track::robust_range(values, track::color_metric_is_signed(metric));
+  if (metric != track::ColorMetric::phase) return range;
+  // The climb in thermals starts at zero (a circle that loses height is as good as none) and
+  // shows at least 1 m/s; gliding alone (no circling value) still gets a scale for the legend.
+  if (range) return track::ValueRange{0.0, std::max(range->max, 1.0)};
+  for (const auto& v : values)
+    if (std::any_of(v.begin(), v.end(), track::is_category_value)) return track::ValueRange{0.0, 3.0};
+  return std::nullopt;
 }
 
 glm::dvec3 sun_direction(const Scene& scene) {

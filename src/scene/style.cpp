@@ -8,6 +8,11 @@
 
 namespace trailray::scene {
 
+Colormap default_colormap(track::ColorMetric metric) {
+  if (metric == track::ColorMetric::phase) return Colormap::warm;
+  return track::color_metric_is_signed(metric) ? Colormap::diverging : Colormap::turbo;
+}
+
 Result<TrackWidth> parse_track_width(std::string_view text) {
   const auto fail = [&] {
     return Result<TrackWidth>{std::nullopt, fmt::format("--width: '{}' is not a width: a positive number of metres "

@@ -54,6 +54,7 @@ struct TrackStyle {
 struct PinStyle {
   glm::vec3 waypoint_color{0.89f, 0.0f, 0.17f};  // sRGB: the markers of the files' waypoints
   glm::vec3 place_color{0.96f, 0.96f, 0.96f};    // and of place labels
+  glm::vec3 thermal_color{1.0f, 0.55f, 0.1f};    // and of thermal markers (`--thermals`)
   glm::vec3 stem_color{0.16f, 0.16f, 0.16f};
   double marker_px = 13.0, place_marker_px = 8.0;  // the ball's diameter
   double marker_m = 6.0, place_marker_m = 4.0;     // ... at least
@@ -87,6 +88,10 @@ struct LabelStyle {
   float ghost_alpha = 0.3f;
 };
 inline constexpr int kMinLabelSizePx = 6, kMaxLabelSizePx = 96;
+
+// The colormap a metric gets unless one is asked for: diverging for signed metrics (vspeed),
+// warm for the climb in thermals (phase), turbo for the rest.
+Colormap default_colormap(track::ColorMetric metric);
 
 struct Style {
   TrackStyle tracks;

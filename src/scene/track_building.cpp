@@ -13,6 +13,7 @@
 #include "scene/colormap.hpp"
 #include "terrain/height_sampler.hpp"
 #include "track/clean.hpp"
+#include "track/flight/phase_values.hpp"
 
 namespace trailray::scene {
 namespace {
@@ -89,6 +90,15 @@ void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
     if (!values.empty()) line.values = values[s];
     t.geometry.segments.push_back(std::move(line));
   }
+}
+
+// The colour values of a recorded track for a metric: phase from its flight analysis, the others
+// from its points and metrics.
+std::vector<std::vector<float>> values_for(const Track& t, track::ColorMetric metric,
+                                           const std::vector<std::vector<double>>* ground) {
+  if (metric != track::ColorMetric::phase) return track::color_values(t.cleaned, t.metrics, metric, ground);
+  if (!t.flights) throw std::invalid_argument("track '" + t.name + "' has no flight analysis to colour by phase");
+  return track::flight::phase_color_values(t.cleaned, *t.flights);
 }
 
 // Recorded tracks from --color or the palette; routes in the route colour (not counted).
@@ -202,11 +212,14 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
         ground = sample_ground_heights(t.cleaned, options.heights);
       t.is_route = named.is_route();
       t.by_value = !t.is_route;
+      if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase))
+        t.flights = std::make_shared<const track::flight::FlightAnalysis>(
+            track::flight::analyse_flights(named.raw()));
       std::vector<std::vector<float>> values;
       if (t.is_route)
         values = distances_along(t.metrics);
       else if (by_value)
-        values = track::color_values(t.cleaned, t.metrics, style.color_by, ground.empty() ? nullptr : &ground);
+        values = values_for(t, style.color_by, ground.empty() ? nullptr : &ground);
       fill_geometry(t, ground, values, style, options.neutral_ground_m);
       if (!t.is_route) points_with_value += t.points_with_value();
       // Ground heights are kept only where they were sampled for every point of a source.
@@ -219,9 +232,10 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
   assign_colors(tracks, style, first_palette_index);
   if (by_value && !style.range && points_with_value == 0)
     diagnostics.warning(
-        fmt::format("no point has a value for --color-by {} (e.g. no times, or no such sensor): the "
-                    "tracks are drawn in the neutral colour",
-                    track::color_metric_name(style.color_by)));
+        fmt::format("no point has a value for --color-by {} ({}): the tracks are drawn in the neutral colour",
+                    track::color_metric_name(style.color_by),
+                    style.color_by == track::ColorMetric::phase ? "no flight with a thermal was found"
+                                                                : "e.g. no times, or no such sensor"));
   return tracks;
 }
 
@@ -241,7 +255,7 @@ void apply_color_metric(Track& t, track::ColorMetric metric) {
       for (std::size_t i = 0; i < s.points.size(); ++i) ground.back().push_back(t.ground_m.at(flat++));
     }
   }
-  const auto values = track::color_values(t.cleaned, t.metrics, metric, ground.empty() ? nullptr : &ground);
+  const auto values = values_for(t, metric, ground.empty() ? nullptr : &ground);
   std::size_t line = 0;
   for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
     if (t.cleaned.segments[s].points.empty()) continue;

@@ -23,6 +23,10 @@ struct TrackBuildOptions {
   // the terrain under every point when there are heights. Without it only what is drawn: the
   // terrain where the style needs it (agl, curtains, points without elevation), no summary.
   bool inspect = false;
+  // Each recorded track's flight analysis (Track::flights): also done for inspect and for
+  // --color-by phase, which read it.
+  // (with the default FlightOptions, as `trailray flight`).
+  bool analyse_flights = false;
 };
 
 // The tracks of the files, in order (each file's tracks, then its routes), with colours from
@@ -46,7 +50,8 @@ std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, te
 void set_ground_heights(Track& track, terrain::HeightSource& heights);
 
 // Replaces the colour values in the track's geometry by `metric`'s (none for solid) and bumps its
-// revision; a route keeps its values (metres along it) and revision. Throws std::invalid_argument for agl on a track without ground heights.
+// revision; a route keeps its values (metres along it) and revision. Throws std::invalid_argument
+// for agl on a track without ground heights, and for phase on a track without its flight analysis.
 void apply_color_metric(Track& track, track::ColorMetric metric);
 
 // Curtains (walls down to the ground) on or off: each line's heights above the ground from

@@ -17,12 +17,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/track_geometry.hpp"
 #include "track/color_values.hpp"
+#include "track/flight/flight_analysis.hpp"
 #include "track/metrics.hpp"
 #include "track/model.hpp"
 #include "track/summary.hpp"
@@ -40,6 +42,10 @@ struct Track {
   track::Track cleaned;         // after clean_track: what is drawn and measured
   track::TrackMetrics metrics;  // compute_metrics(cleaned)
   track::TrackSummary summary;  // raw and clean statistics, as `trailray stats` prints them
+  // The flight analysis of the track as read (before cleaning, as `trailray flight` sees it);
+  // nullptr where it was not asked for (TrackBuildOptions) or for a route. Shared: copies of a
+  // track need not copy it.
+  std::shared_ptr<const track::flight::FlightAnalysis> flights;
 
   // Per flat point (NaN where a point has no such value).
   std::vector<std::size_t> segment_first;   // flat index of each non-empty segment's first point

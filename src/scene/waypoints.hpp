@@ -17,6 +17,7 @@ namespace trailray::scene {
 enum class WaypointKind {
   Waypoint,  // carried by a track file: a pin and a label
   Place,     // a place label from a points file (--labels): a label, and a smaller pin
+  Thermal,   // a thermal of a flight (--thermals, scene/thermal_markers.hpp): a pin at its top
 };
 
 struct Waypoint {

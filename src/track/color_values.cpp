@@ -21,7 +21,7 @@ struct MetricInfo {
 };
 
 // One row per enum value, in enum order (color_metric_names relies on it).
-constexpr std::array<MetricInfo, 10> kMetrics{{
+constexpr std::array<MetricInfo, 11> kMetrics{{
     {ColorMetric::solid, "solid", "", ""},
     {ColorMetric::speed, "speed", "Speed", "km/h"},
     {ColorMetric::vspeed, "vspeed", "Vertical speed", "m/s"},
@@ -32,6 +32,7 @@ constexpr std::array<MetricInfo, 10> kMetrics{{
     {ColorMetric::cadence, "cadence", "Cadence", "rpm"},
     {ColorMetric::power, "power", "Power", "W"},
     {ColorMetric::time, "time", "Elapsed time", ""},
+    {ColorMetric::phase, "phase", "Climb in thermals", "m/s"},
 }};
 
 const MetricInfo& info(ColorMetric metric) {
@@ -198,6 +199,7 @@ std::string format_color_value(ColorMetric metric, double value) {
       // 99.95 and above would print as "100.0": from there on whole km/h.
       return fixed(value, std::abs(value) < 99.95 ? 1 : 0);
     case ColorMetric::vspeed:
+    case ColorMetric::phase:
       return fixed(value, 1);
     case ColorMetric::time:
       return hours_minutes(value);
@@ -245,7 +247,7 @@ std::optional<ValueRange> robust_range(std::span<const std::vector<float>> value
   std::vector<double> finite;
   for (const std::vector<float>& v : values) {
     for (float x : v) {
-      if (std::isfinite(x)) finite.push_back(x);
+      if (std::isfinite(x) && !is_category_value(x)) finite.push_back(x);
     }
   }
   if (finite.empty()) return std::nullopt;

@@ -18,16 +18,25 @@
 
 namespace trailray::track {
 
-enum class ColorMetric { solid, speed, vspeed, slope, altitude, agl, hr, cadence, power, time };
+enum class ColorMetric { solid, speed, vspeed, slope, altitude, agl, hr, cadence, power, time, phase };
 
-// "solid", "speed", "vspeed", "slope", "altitude", "agl", "hr", "cadence", "power", "time".
+// Flight phases (`phase`, track/flight/phase_values.hpp): circling points carry their climb in
+// m/s, gliding points this marker value (a category drawn in one fixed colour, not a number on
+// the scale), ground and unknown points NaN. Finite and far below any measurement, and above the
+// renderer's own "no value" code (-3e38), so it survives the upload and the shader can tell it
+// apart; robust_range leaves it out.
+inline constexpr float kCategoryValue = -1.0e30f;
+inline bool is_category_value(float v) { return v <= -1.0e29f && v >= -1.0e31f; }
+
+// "solid", "speed", "vspeed", "slope", "altitude", "agl", "hr", "cadence", "power", "time", "phase".
 std::string_view color_metric_name(ColorMetric metric);
 std::optional<ColorMetric> parse_color_metric(std::string_view name);  // exact lower-case names
 std::vector<std::string_view> color_metric_names();                    // every name, in enum order
 
 // What the legend prints: "Speed", "Vertical speed", "Steepness", "Altitude", "Height above
 // ground", "Heart rate", "Cadence", "Power", "Elapsed time"; and the unit: "km/h", "m/s", "%",
-// "m", "m", "bpm", "rpm", "W", "" (time is printed as h:mm, see format_color_value).
+// "m", "m", "bpm", "rpm", "W", "" (time is printed as h:mm, see format_color_value); phase:
+// "Climb in thermals", "m/s".
 std::string_view color_metric_label(ColorMetric metric);
 std::string_view color_metric_unit(ColorMetric metric);
 
@@ -46,7 +55,8 @@ std::string format_color_value(ColorMetric metric, double value);
 // point from the cleaned track and its metrics (compute_metrics of that same track).
 // `ground_heights_m` (only for agl): per segment and point, the terrain height below the point
 // (NaN where unknown); agl = ele - ground. solid gives an all-NaN vector per segment.
-// Elapsed time counts from the track's first timestamp.
+// Elapsed time counts from the track's first timestamp. phase needs the flight analysis and
+// gives all-NaN here: its values come from flight::phase_color_values.
 // Throws std::invalid_argument when the shapes do not match the track (metrics only checked for
 // the metrics that read them: speed, vspeed, slope, time), or for agl without ground heights.
 std::vector<std::vector<float>> color_values(const Track& track, const TrackMetrics& metrics, ColorMetric metric,
@@ -58,7 +68,7 @@ struct ValueRange {
 
 // The robust automatic range over every finite value given (several tracks together): from the
 // `low_percentile` to the `high_percentile` (linear interpolation between order statistics), so
-// one GPS spike does not flatten the colours. Signed metrics get a range symmetric about 0 (the
+// one GPS spike does not flatten the colours. Category values (kCategoryValue) are left out. Signed metrics get a range symmetric about 0 (the
 // larger magnitude of the two percentiles). A range of zero width is widened to
 // +-max(0.5, 1% of |value|) so that a colour scale can still be made. nullopt when there is no
 // finite value; std::invalid_argument unless 0 <= low_percentile <= high_percentile <= 100.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <exception>
 
+#include "scene/thermal_markers.hpp"
 #include "scene/waypoint_building.hpp"
 
 namespace trailray::app::view {
@@ -33,6 +34,9 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
     try {
       out.tracks = scene::build_tracks(files, style, options, diagnostics, inputs.tracks_open);
       out.waypoints = scene::file_waypoints(files, {inputs.heights, options.neutral_ground_m});
+      if (inputs.thermals)
+        for (const scene::Track& t : out.tracks)
+          for (scene::Waypoint& w : scene::thermal_markers(t)) out.waypoints.push_back(std::move(w));
     } catch (const std::exception& e) {
       out.errors.emplace_back(e.what());
     }

@@ -32,6 +32,7 @@ struct TrackLoadInputs {
   // Tracks already open: a new file continues the palette after them and, when --color gave
   // one colour per track, gets the palette's colour.
   std::size_t tracks_open = 0;
+  bool thermals = false;  // a marker per thermal of the flights (--thermals) among the waypoints
 };
 
 LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs);

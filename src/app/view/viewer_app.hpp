@@ -32,16 +32,17 @@ struct ViewerOptions {
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
   bool verbose = false;
-  int frames = 0;                        // > 0: render this many frames, then (screenshot and) exit
-  std::string script;                    // commands to run, then exit
-  std::string screenshot;                // written at the end of a scripted run
-  double timeout_s = 120.0;              // for a scripted picture's tiles
-  std::vector<std::string> label_files;  // --labels: place labels
-  bool no_waypoints = false;             // --no-waypoints: pins and labels hidden (the panel shows them again)
-  bool score = false;                    // --score: the first IGC track's XC score drawn
-  std::string score_rules = "xcontest";  // --score-rules
-  std::string task_file;                 // --task: a task drawn
+  int frames = 0;                           // > 0: render this many frames, then (screenshot and) exit
+  std::string script;                       // commands to run, then exit
+  std::string screenshot;                   // written at the end of a scripted run
+  double timeout_s = 120.0;                 // for a scripted picture's tiles
+  std::vector<std::string> label_files;     // --labels: place labels
+  bool no_waypoints = false;                // --no-waypoints: pins and labels hidden (the panel shows them again)
+  bool score = false;                       // --score: the first IGC track's XC score drawn
+  std::string score_rules = "xcontest";     // --score-rules
+  std::string task_file;                    // --task: a task drawn
   std::vector<std::string> airspace_files;  // --airspace: OpenAir files drawn as volumes
+  bool thermals = false;                    // --thermals (resolved: on by default with --color-by phase)
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when

@@ -55,6 +55,9 @@ void colour_scale_controls(ViewerModel& model) {
       apply_color_metric(model.tracks, static_cast<track::ColorMetric>(metric));
       s.color_by = static_cast<track::ColorMetric>(metric);
       s.range.reset();  // another metric's range means nothing for this one
+      // Into or out of phase: its own warm map, which means little for other metrics.
+      if (previous == track::ColorMetric::phase || s.color_by == track::ColorMetric::phase)
+        s.colormap = scene::default_colormap(s.color_by);
     } catch (const std::exception& e) {
       model.errors.push_back(
           fmt::format("colour by {}: {}", track::color_metric_name(static_cast<track::ColorMetric>(metric)), e.what()));
@@ -62,7 +65,7 @@ void colour_scale_controls(ViewerModel& model) {
     }
   }
   if (s.color_by == track::ColorMetric::solid) return;
-  static constexpr const char* kColormaps[] = {"turbo", "viridis", "magma", "cividis", "diverging"};
+  static constexpr const char* kColormaps[] = {"turbo", "viridis", "magma", "cividis", "diverging", "warm"};
   int map = static_cast<int>(s.colormap);
   if (name_combo("colormap", map, std::vector<std::string>(std::begin(kColormaps), std::end(kColormaps))))
     s.colormap = static_cast<scene::Colormap>(map);

@@ -81,6 +81,7 @@ void set_color_uniforms(const ShaderProgram& program, const TrackDraw& draw, con
   program.set_int("u_by_value", draw.by_value && draw.buffer->has_values() ? 1 : 0);
   set_vec3(program, "u_color", srgb_to_linear(draw.color_srgb));
   set_vec3(program, "u_missing_color", srgb_to_linear(scene::kMissingValueColorSrgb));
+  set_vec3(program, "u_category_color", srgb_to_linear(scene::kCategoryColorSrgb));
   program.set_vec2("u_value_range", settings.value_min, settings.value_max);
 }
 

@@ -16,6 +16,8 @@ uniform int u_block_shift;       // log2 of the points per block origin (TrackBu
 uniform int u_first_block;       // the segment's first block (TrackBuffer::Range::first_block)
 
 const float kMissingValueBelow = -1.0e38;  // track_buffer.cpp stores -3e38 for "no value"
+// A category (track::kCategoryValue, -1e30: gliding) is drawn in u_category_color, not on the scale.
+const float kCategoryValueBelow = -1.0e29;
 
 vec4 fetch_texel(highp sampler2D texture_2d, int index) {
   int width = textureSize(texture_2d, 0).x;

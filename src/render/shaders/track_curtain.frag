@@ -12,6 +12,7 @@ uniform bool u_packed_distance;
 uniform bool u_by_value;
 uniform vec3 u_color;          // linear
 uniform vec3 u_missing_color;  // linear
+uniform vec3 u_category_color;  // linear: track::kCategoryValue (-1e30), e.g. gliding
 uniform highp sampler2D u_colormap;
 uniform vec2 u_value_range;
 uniform float u_curtain_alpha;
@@ -30,9 +31,12 @@ void main() {
   if (terrain > 0.0 && length(v_position) > terrain + 0.5) discard;
   vec3 albedo = u_color;
   if (u_by_value) {
-    // v_value interpolates across the segment; a missing end drags it far below any real value.
+    // v_value interpolates across the segment; a missing end drags it far below any real value,
+    // a category end (-1e30) below any measurement.
     if (v_value < -1.0e30) {
       albedo = u_missing_color;
+    } else if (v_value < -1.0e29) {
+      albedo = u_category_color;
     } else {
       float span = u_value_range.y - u_value_range.x;
       float position = span > 0.0 ? clamp((v_value - u_value_range.x) / span, 0.0, 1.0) : 0.5;

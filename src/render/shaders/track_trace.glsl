@@ -221,25 +221,28 @@ float window_depth(vec3 p) {
 uniform bool u_by_value;
 uniform vec3 u_color;          // linear: the solid colour
 uniform vec3 u_missing_color;  // linear: a point without a value
+uniform vec3 u_category_color;  // linear: a point of the category (kCategoryValueBelow)
 uniform highp sampler2D u_colormap;  // 256x1 sRGB texture: sampled as linear
 uniform vec2 u_value_range;    // min, max of the colour scale
 
-// The value at a point of the segment: interpolated between the ends; where one end has no
-// value, the nearer end decides.
+// The value at a point of the segment: interpolated between the ends; where an end has no
+// value or a category instead, the nearer end decides (a category is never blended into the scale).
 vec3 track_albedo(vec3 p) {
   if (!u_by_value) return u_color;
   vec3 ab = v_x2 - v_x1;
   float length2 = dot(ab, ab);
   float s = length2 > 0.0 ? clamp(dot(p - v_x1, ab) / length2, 0.0, 1.0) : 0.0;
-  bool missing_a = v_values.x < kMissingValueBelow;
-  bool missing_b = v_values.y < kMissingValueBelow;
+  bool special_a = v_values.x < kCategoryValueBelow;
+  bool special_b = v_values.y < kCategoryValueBelow;
   float value;
-  if (!missing_a && !missing_b)
+  if (!special_a && !special_b) {
     value = mix(v_values.x, v_values.y, s);
-  else if (missing_a != missing_b && (missing_a ? s >= 0.5 : s < 0.5))
-    value = missing_a ? v_values.y : v_values.x;
-  else
-    return u_missing_color;
+  } else {
+    float nearer = s < 0.5 ? v_values.x : v_values.y;
+    if (nearer < kMissingValueBelow) return u_missing_color;
+    if (nearer < kCategoryValueBelow) return u_category_color;
+    value = nearer;
+  }
   float span = u_value_range.y - u_value_range.x;
   float position = span > 0.0 ? clamp((value - u_value_range.x) / span, 0.0, 1.0) : 0.5;
   return texture(u_colormap, vec2((position * 255.0 + 0.5) / 256.0, 0.5)).rgb;
