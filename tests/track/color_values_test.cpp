@@ -328,9 +328,9 @@ TEST(ColorValueFormat, ElapsedTimeAsHoursAndWholeMinutes) {
 
 TEST(ColorMetricNames, RoundTripAndLabels) {
   const auto names = color_metric_names();
-  ASSERT_EQ(names.size(), 10u);
+  ASSERT_EQ(names.size(), 11u);
   EXPECT_EQ(names.front(), "solid");
-  EXPECT_EQ(names.back(), "time");
+  EXPECT_EQ(names.back(), "phase");
   for (std::string_view name : names) {
     const auto m = parse_color_metric(name);
     ASSERT_TRUE(m) << name;
