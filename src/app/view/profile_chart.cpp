@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/view/flight_panel.hpp"
 #include "app/view/waypoint_view.hpp"
 #include "scene/colormap.hpp"
 #include "scene/track_building.hpp"
@@ -200,6 +201,7 @@ glm::vec3 point_color(const scene::Track& t, const ViewerSettings& settings,
   if (settings.style.tracks.color_by == track::ColorMetric::solid || !t.by_value || !range) return t.color_srgb;
   const float v = point_value(t, point);
   if (std::isnan(v)) return scene::kMissingValueColorSrgb;
+  if (track::is_category_value(v)) return scene::kCategoryColorSrgb;
   const double span = range->max - range->min;
   const double f = span > 0.0 ? (v - range->min) / span : 0.5;
   return scene::colormap_color(settings.style.tracks.colormap, static_cast<float>(f));
@@ -284,6 +286,8 @@ void draw_profile_chart(ViewerModel& model) {
   if (sel.track == ti && sel.last < t.point_count())
     draw->AddRectFilled(ImVec2(x_px(sel.first), top), ImVec2(std::max(x_px(sel.last), x_px(sel.first) + 1.0f), bottom),
                         IM_COL32(255, 255, 255, 40));
+
+  shade_thermals(draw, t, x_px, top, bottom);
 
   // Terrain and altitudes, one vertex per pixel column at most (a million points stay cheap),
   // never joined across a segment gap.

@@ -15,6 +15,7 @@
 #include "app/view/viewer_overlay.hpp"
 #include "app/view/viewer_panels.hpp"
 #include "app/view/viewer_shell.hpp"
+#include "app/view/waypoint_view.hpp"
 #include "scene/legend_content.hpp"
 #include "scene/waypoint_building.hpp"
 
@@ -170,6 +171,10 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   if (actions.fly_to_waypoint >= 0) fly_to_waypoint(actions.fly_to_waypoint);
+  if (actions.fly_to_point) {
+    const scene::LookAt& now = controller_.view();
+    controller_.fly_to(look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
+  }
   const scene::Camera camera = controller_.camera();
   if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/view/flight_panel.hpp"
 #include "app/view/panel_layout.hpp"
 #include "app/view/profile_chart.hpp"
 #include "app/view/viewer_panels.hpp"
@@ -130,11 +131,11 @@ void waypoint_list(const ViewerModel& model, const std::string& source, scene::W
     if (model.waypoints.points[w].source == source && model.waypoints.points[w].kind == kind) of_source.push_back(w);
   if (of_source.empty()) return;
   const bool place = kind == scene::WaypointKind::Place;
-  std::string title =
-      fmt::format("{} {}{}", of_source.size(), place ? "place" : "waypoint", of_source.size() == 1 ? "" : "s");
+  const char* what = place ? "place" : kind == scene::WaypointKind::Thermal ? "thermal" : "waypoint";
+  std::string title = fmt::format("{} {}{}", of_source.size(), what, of_source.size() == 1 ? "" : "s");
   if (name_file) title += ": " + std::filesystem::path(source).filename().string();
   ImGui::PushID(source.c_str());
-  ImGui::PushID(place ? 1 : 0);
+  ImGui::PushID(static_cast<int>(kind));
   if (ImGui::TreeNode("##waypoints", "%s", title.c_str())) {
     for (const std::size_t w : of_source) {
       const scene::Waypoint& p = model.waypoints.points[w];
@@ -183,13 +184,14 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
     if (i + 1 == model.tracks.size() || model.tracks[i + 1].source != t.source) {
       ImGui::Indent();
       waypoint_list(model, t.source, scene::WaypointKind::Waypoint, false, actions);
+      waypoint_list(model, t.source, scene::WaypointKind::Thermal, false, actions);
       ImGui::Unindent();
     }
   }
   // Files of waypoints alone, then the places of --labels, each file once.
   std::vector<std::pair<std::string, scene::WaypointKind>> files;
   for (const scene::Waypoint& w : model.waypoints.points) {
-    const bool under_a_track = w.kind == scene::WaypointKind::Waypoint &&
+    const bool under_a_track = w.kind != scene::WaypointKind::Place &&
                                std::any_of(model.tracks.tracks().begin(), model.tracks.tracks().end(),
                                            [&](const scene::Track& t) { return t.source == w.source; });
     const std::pair<std::string, scene::WaypointKind> file{w.source, w.kind};
@@ -218,7 +220,7 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
   ImGui::End();
 }
 
-void statistics_window(ViewerModel& model) {
+void statistics_window(ViewerModel& model, PanelActions& actions) {
   place(layout_now(model).statistics);
   if (!ImGui::Begin("Statistics", &model.settings.show_statistics)) {
     ImGui::End();
@@ -232,6 +234,7 @@ void statistics_window(ViewerModel& model) {
     const scene::Track& t = model.tracks[static_cast<std::size_t>(selected)];
     ImGui::TextDisabled("%s", t.source.c_str());
     for (const std::string& line : statistics_lines(t.summary.clean)) ImGui::TextUnformatted(line.c_str());
+    flight_statistics(t, actions);
   }
   ImGui::End();
 }
@@ -409,7 +412,7 @@ PanelActions draw_panels(ViewerModel& model, double wall_seconds) {
   ViewerSettings& s = model.settings;
   if (s.show_menu) window_menu(s);
   if (s.show_tracks) track_list_window(model, actions);
-  if (s.show_statistics) statistics_window(model);
+  if (s.show_statistics) statistics_window(model, actions);
   if (s.show_shading) shading_window(model);
   if (s.show_occlusion) occlusion_window(model);
   if (s.show_profiler) profiler_window(model);

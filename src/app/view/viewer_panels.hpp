@@ -2,7 +2,10 @@
 // The viewer's windows (ImGui): track list, statistics, shading, occlusion, profiler, profile
 // chart, replay, errors. Each edits the model in place.
 
+#include <optional>
+
 #include "app/view/viewer_model.hpp"
+#include "scene/waypoints.hpp"
 
 namespace trailray::app::view {
 
@@ -10,6 +13,7 @@ namespace trailray::app::view {
 struct PanelActions {
   int fly_to_track = -1;     // "fly to" pressed on a track (-1: none)
   int fly_to_waypoint = -1;  // a waypoint clicked in the track list (index into the model's waypoints)
+  std::optional<scene::Waypoint> fly_to_point;  // a thermal clicked in the statistics (its marker)
 };
 
 // Draws every open window and applies their edits to the model. Call each frame between

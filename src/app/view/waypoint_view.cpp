@@ -23,7 +23,8 @@ std::vector<ChartWaypoint> chart_waypoints(const scene::Track& track, const scen
   std::vector<ChartWaypoint> out;
   for (std::size_t w = 0; w < waypoints.points.size(); ++w) {
     const scene::Waypoint& p = waypoints.points[w];
-    if (!p.visible) continue;
+    // Thermal markers: the chart shades the thermals instead (flight_panel.hpp).
+    if (!p.visible || p.kind == scene::WaypointKind::Thermal) continue;
     // Measured at the ground, so a waypoint recorded high above a flight's track still finds it.
     std::optional<std::size_t> best;
     double best_m = reach_m;
