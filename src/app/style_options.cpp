@@ -108,7 +108,8 @@ scene::Style parse_style(const StyleArgs& args) {
     const auto map = scene::parse_colormap(args.colormap);
     if (!map)
       throw CLI::ValidationError(
-          "--colormap", fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging, warm", args.colormap));
+          "--colormap",
+          fmt::format("'{}' is not one of turbo, viridis, magma, cividis, diverging, warm", args.colormap));
     style.colormap = *map;
   }
   if (!args.range.empty()) {

@@ -32,7 +32,8 @@ void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
       "Mark each thermal of the flights (climbing circles, see `trailray flight`) with a pin at its top labelled "
       "with its mean climb and its entry and exit altitudes, '+2.4 m/s \u00b7 1650\u21922380 m' (default: on with "
       "--color-by phase)");
-  CLI::Option* off = command.add_flag("--no-thermals", args.no_thermals, "No thermal markers, also with --color-by phase");
+  CLI::Option* off =
+      command.add_flag("--no-thermals", args.no_thermals, "No thermal markers, also with --color-by phase");
   on->excludes(off);
 }
 

@@ -19,9 +19,9 @@ namespace trailray::app {
 struct WaypointArgs {
   std::vector<std::string> label_files;  // --labels
   bool no_waypoints = false;
-  bool score = false;                    // --score: the first IGC track's XC score drawn
-  std::string score_rules = "xcontest";  // --score-rules
-  std::string task_file;                 // --task: a task drawn (empty: none)
+  bool score = false;                          // --score: the first IGC track's XC score drawn
+  std::string score_rules = "xcontest";        // --score-rules
+  std::string task_file;                       // --task: a task drawn (empty: none)
   bool thermals = false, no_thermals = false;  // --thermals, --no-thermals
   // Whether thermal markers are drawn for tracks coloured by `color_by`.
   bool thermals_for(track::ColorMetric color_by) const {

@@ -31,7 +31,7 @@ CapsuleShape ball_shape(double px, double m, double lift_px, double lift_m) {
 PinGeometry pin_geometry(const scene::WaypointSet& set) {
   PinGeometry out;
   for (scene::TrackGeometry* g : {&out.waypoint_stems, &out.waypoint_balls, &out.place_stems, &out.place_balls,
-                                   &out.thermal_stems, &out.thermal_balls})
+                                  &out.thermal_stems, &out.thermal_balls})
     g->segments.resize(1);
   for (const scene::Waypoint& w : set.points) {
     if (!w.visible) continue;
@@ -39,7 +39,9 @@ PinGeometry pin_geometry(const scene::WaypointSet& set) {
     auto& stems = (place ? out.place_stems : thermal ? out.thermal_stems : out.waypoint_stems).segments.front();
     stems.points_ecef.push_back(w.ground_ecef);
     stems.points_ecef.push_back(w.marker_ecef);
-    (place ? out.place_balls : thermal ? out.thermal_balls : out.waypoint_balls)
+    (place     ? out.place_balls
+     : thermal ? out.thermal_balls
+               : out.waypoint_balls)
         .segments.front()
         .points_ecef.push_back(w.marker_ecef);
   }

@@ -27,7 +27,7 @@ glm::u8vec3 track_label_color(const glm::vec3& srgb) {
 }
 
 constexpr glm::u8vec3 kWaypointColor{255, 255, 255};
-constexpr glm::u8vec3 kPlaceColor{255, 240, 200};  // warm: a place is not one of the files' points
+constexpr glm::u8vec3 kPlaceColor{255, 240, 200};    // warm: a place is not one of the files' points
 constexpr glm::u8vec3 kThermalColor{255, 205, 140};  // the thermal markers' orange, lifted to read on the halo
 
 struct Projected {
@@ -97,9 +97,15 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
       if (!w.visible || w.name.empty()) continue;
       const bool place = w.kind == WaypointKind::Place, thermal = w.kind == WaypointKind::Thermal;
       const PinClearance pin = pin_clearance(w.kind, scene.style.pins);
-      out.push_back({w.name, place ? LabelKind::place : thermal ? LabelKind::thermal : LabelKind::waypoint, w.priority,
-                     w.marker_ecef, place ? kPlaceColor : thermal ? kThermalColor : kWaypointColor, pin.px, pin.m,
-                     pin.width_px, pin.width_m});
+      out.push_back({w.name,
+                     place     ? LabelKind::place
+                     : thermal ? LabelKind::thermal
+                               : LabelKind::waypoint,
+                     w.priority, w.marker_ecef,
+                     place     ? kPlaceColor
+                     : thermal ? kThermalColor
+                               : kWaypointColor,
+                     pin.px, pin.m, pin.width_px, pin.width_m});
     }
   // Airspaces' names after every point's (as places of the lowest priority), in their class's
   // colour: where the volume's middle is, halfway up.

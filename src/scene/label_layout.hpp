@@ -14,7 +14,7 @@
 //      distance, the median distance of the candidates in view (what the picture is about), so
 //      a close-up keeps its labels and a view to the horizon thins out the far ones. A label
 //      faded below 2 % is dropped;
-//   4. sorted by priority: the kind first (track names, then waypoints, then places), then the
+//   4. sorted by priority: the kind first (track names, then waypoints, thermals, places), then the
 //      waypoint's own priority (higher first), then the nearer first;
 //   5. placed greedily: each label tries a few boxes around its anchor (above, above right,
 //      above left, right, left, below) and takes the first that lies inside the picture, keeps a

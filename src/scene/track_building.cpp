@@ -213,8 +213,7 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
       t.is_route = named.is_route();
       t.by_value = !t.is_route;
       if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase))
-        t.flights = std::make_shared<const track::flight::FlightAnalysis>(
-            track::flight::analyse_flights(named.raw()));
+        t.flights = std::make_shared<const track::flight::FlightAnalysis>(track::flight::analyse_flights(named.raw()));
       std::vector<std::vector<float>> values;
       if (t.is_route)
         values = distances_along(t.metrics);

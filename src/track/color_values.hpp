@@ -68,8 +68,8 @@ struct ValueRange {
 
 // The robust automatic range over every finite value given (several tracks together): from the
 // `low_percentile` to the `high_percentile` (linear interpolation between order statistics), so
-// one GPS spike does not flatten the colours. Category values (kCategoryValue) are left out. Signed metrics get a range symmetric about 0 (the
-// larger magnitude of the two percentiles). A range of zero width is widened to
+// one GPS spike does not flatten the colours. Category values (kCategoryValue) are left out. Signed metrics get a range
+// symmetric about 0 (the larger magnitude of the two percentiles). A range of zero width is widened to
 // +-max(0.5, 1% of |value|) so that a colour scale can still be made. nullopt when there is no
 // finite value; std::invalid_argument unless 0 <= low_percentile <= high_percentile <= 100.
 std::optional<ValueRange> robust_range(std::span<const std::vector<float>> values, bool symmetric_about_zero,

@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "scene/colormap.hpp"
-#include "track/color_values.hpp"
 #include "gl_test_support.hpp"
 #include "render/renderer.hpp"
+#include "scene/colormap.hpp"
 #include "scene_test_support.hpp"
+#include "track/color_values.hpp"
 #include "track_test_support.hpp"
 
 namespace trailray::render {
@@ -57,7 +57,8 @@ TEST_F(TrackPhaseColorsTest, CirclingGlidingAndNoValueEachGetTheirColour) {
   const std::vector<std::pair<double, glm::vec3>> expected{
       {-60.0, climb}, {0.0, scene::kCategoryColorSrgb}, {60.0, scene::kMissingValueColorSrgb}};
   for (const auto& [east, colour] : expected) {
-    const scene::TrackSet plain = test::track_set({test::track_of(test::geometry_of({polyline(frame, points)}), colour)});
+    const scene::TrackSet plain =
+        test::track_set({test::track_of(test::geometry_of({polyline(frame, points)}), colour)});
     options.tracks = &plain;
     const scene::RgbaImage solid = renderer.draw(camera, options).image;
     std::uint32_t x = 0, y = 0;

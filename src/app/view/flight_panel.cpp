@@ -51,15 +51,14 @@ std::vector<std::string> flight_summary_lines(const fl::Flight& f) {
     out.push_back("best glide -");
   }
   for (const fl::WindBand& b : f.wind)
-    out.push_back(fmt::format("wind {:.0f}-{:.0f} m: {:.1f} m/s from {:.0f}\u00b0 ({} thermal{})", b.floor_m, b.ceiling_m,
-                              b.speed_ms, b.from_deg, b.thermals, b.thermals == 1 ? "" : "s"));
+    out.push_back(fmt::format("wind {:.0f}-{:.0f} m: {:.1f} m/s from {:.0f}\u00b0 ({} thermal{})", b.floor_m,
+                              b.ceiling_m, b.speed_ms, b.from_deg, b.thermals, b.thermals == 1 ? "" : "s"));
   return out;
 }
 
 std::vector<std::string> thermal_row(const fl::Thermal& th) {
-  return {utc_clock(th.start.time), climb(th.mean_climb_ms),
-          fmt::format("{:.0f}->{:.0f} m", th.start.alt, th.end.alt), fmt::format("{:+.0f} m", th.gain_m),
-          minutes(th.duration_s)};
+  return {utc_clock(th.start.time), climb(th.mean_climb_ms), fmt::format("{:.0f}->{:.0f} m", th.start.alt, th.end.alt),
+          fmt::format("{:+.0f} m", th.gain_m), minutes(th.duration_s)};
 }
 
 std::optional<std::pair<std::size_t, std::size_t>> points_between(const scene::Track& track, double t0, double t1) {
@@ -68,10 +67,10 @@ std::optional<std::pair<std::size_t, std::size_t>> points_between(const scene::T
   if (timed.empty() || !(t0 <= t1)) return std::nullopt;
   std::size_t first = timed.size(), last = 0;
   if (track.times_rise) {
-    const auto lo = std::lower_bound(timed.begin(), timed.end(), t0,
-                                     [&](std::size_t i, double t) { return time[i] < t; });
-    const auto hi = std::upper_bound(timed.begin(), timed.end(), t1,
-                                     [&](double t, std::size_t i) { return t < time[i]; });
+    const auto lo =
+        std::lower_bound(timed.begin(), timed.end(), t0, [&](std::size_t i, double t) { return time[i] < t; });
+    const auto hi =
+        std::upper_bound(timed.begin(), timed.end(), t1, [&](double t, std::size_t i) { return t < time[i]; });
     if (lo >= hi) return std::nullopt;
     return std::pair{*lo, *std::prev(hi)};
   }
@@ -92,8 +91,8 @@ void flight_statistics(const scene::Track& track, PanelActions& actions) {
     const fl::Flight& f = flights[k];
     ImGui::PushID(static_cast<int>(k));
     ImGui::Separator();
-    const std::string title = flights.size() == 1 ? std::string("Flight")
-                                                  : fmt::format("Flight {} of {}", k + 1, flights.size());
+    const std::string title =
+        flights.size() == 1 ? std::string("Flight") : fmt::format("Flight {} of {}", k + 1, flights.size());
     if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
       for (const std::string& line : flight_summary_lines(f)) ImGui::TextUnformatted(line.c_str());
       if (!f.thermals.empty() &&

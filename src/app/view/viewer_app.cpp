@@ -95,7 +95,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
 }
 
 TrackLoadInputs ViewerApp::load_inputs(double neutral) const {
-  return {options_.read, options_.analysis, options_.style.tracks, sources_.heights.get(), neutral, 0,
+  return {options_.read,    options_.analysis, options_.style.tracks, sources_.heights.get(), neutral, 0,
           options_.thermals};
 }
 

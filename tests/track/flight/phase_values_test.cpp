@@ -28,7 +28,8 @@ TEST(PhaseValues, PointsOfAThinnedTrackTakeThePhaseOfTheirTime) {
   // Every third point, plus one without a time: what the analysis never saw.
   tr::Track thinned;
   thinned.segments.emplace_back();
-  for (std::size_t i = 0; i < raw.segments[0].points.size(); i += 3) thinned.segments[0].points.push_back(raw.segments[0].points[i]);
+  for (std::size_t i = 0; i < raw.segments[0].points.size(); i += 3)
+    thinned.segments[0].points.push_back(raw.segments[0].points[i]);
   tr::TrackPoint untimed = thinned.segments[0].points[100];
   untimed.time = tr::kMissing;
   thinned.segments[0].points.insert(thinned.segments[0].points.begin() + 100, untimed);
