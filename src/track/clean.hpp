@@ -30,8 +30,8 @@
 //        (geo::local_mean_offset: within 0.1 mm of the exact 3D mean); a window reaching
 //        further than geo::kLocalMeanMaxOffsetDeg, or near a pole, averages ECEF coordinates;
 //      - elevation (the "up" axis) averaged over the neighbours that have one; a point without
-//        elevation stays without; the IGC pressure altitude likewise, on its own (so a flight's
-//        two altitudes stay comparable, and equal where `ele` is the pressure altitude);
+//        elevation stays without; the IGC pressure and GNSS altitudes likewise, each on its own
+//        (so a flight's two altitudes stay comparable, and equal `ele` where it is one of them);
 //      - near a segment end the kernel is truncated symmetrically to the neighbours that exist
 //        on both sides (half-width min(N, i, n-1-i)) and renormalised (divided by the sum of
 //        the weights used), so ends are not pulled inward: a segment's first and last points

@@ -1,10 +1,11 @@
 // Cleaning step 4 (clean.hpp): Gaussian smoothing of positions and elevations (the elevation and
-// the IGC pressure altitude, each over the neighbours that have one), stretch by stretch between
-// pauses.
+// the IGC pressure and GNSS altitudes, each over the neighbours that have one), stretch by stretch
+// between pauses.
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <vector>
 
 #include "geo/local_frame.hpp"
@@ -28,6 +29,16 @@ namespace {
 // window sees original points. Elevations are summed in window order, as a plain loop would.
 constexpr std::size_t kSmoothBlock = 1024;
 
+// The IGC altitudes kept beside `ele` (TrackPoint::pressure_altitude, gnss_altitude), each smoothed
+// on its own like `ele`, over the neighbours that have one.
+constexpr float TrackPoint::*kAltitudeChannels[] = {&TrackPoint::pressure_altitude, &TrackPoint::gnss_altitude};
+constexpr std::size_t kChannels = std::size(kAltitudeChannels);
+
+// One such channel's copied values and mask (like e, m below) and their convolutions.
+struct ChannelScratch {
+  std::vector<double> e, m, fe, fm;
+};
+
 struct SmoothScratch {
   std::vector<double> weight;          // w[j] = exp(-j^2 / (2 sigma^2)), j = 0..h
   std::vector<double> window_weight;   // the full kernel in window order: w[|t - h|], t = 0..2h
@@ -36,14 +47,15 @@ struct SmoothScratch {
   // A block's originals, [g0, g1) of the stretch. a, b in degrees (b across the antimeridian);
   // e = elevation, 0 where missing, m = 1 where present, else 0; reach = prefix sums of
   // max(|da|, |db|) per step, bounding every offset within a window.
-  // pe, pm: the pressure altitude and its mask like e, m (filled only when a point has one).
-  std::vector<double> lat, lon, a, b, aa, bb, ab, e, m, reach, pe, pm;
-  std::vector<double> fa, fb, faa, fbb, fab, fe, fm, fpe, fpm;  // convolutions, one per full-kernel point
-  std::vector<glm::dvec3> ecef;                                 // originals in ECEF, filled when needed
+  std::vector<double> lat, lon, a, b, aa, bb, ab, e, m, reach;
+  std::vector<double> fa, fb, faa, fbb, fab, fe, fm;  // convolutions, one per full-kernel point
+  ChannelScratch channel[kChannels];                  // filled only when a copied point has one
+  std::vector<glm::dvec3> ecef;                       // originals in ECEF, filled when needed
   std::vector<unsigned char> has_ecef;
   struct Results {
     std::size_t first = 0;
-    std::vector<double> lat, lon, ele, pressure;
+    std::vector<double> lat, lon, ele;
+    std::vector<double> channel[kChannels];
   };
   Results results[2];  // the current block's smoothed points and the previous block's
 };
@@ -150,54 +162,60 @@ class StretchSmoother {
       x_.reach[j] = j == 0 ? 0.0 : x_.reach[j - 1] + std::max(std::abs(a - x_.a[j - 1]), std::abs(b - x_.b[j - 1]));
     }
     ecef_cleared_ = false;
-    gather_pressure(g0, len);
+    for (std::size_t c = 0; c < kChannels; ++c) gather_channel(c, g0, len);
   }
 
-  // Only IGC files have a pressure altitude: other tracks skip its arrays and convolutions.
-  void gather_pressure(std::size_t g0, std::size_t len) {
-    any_pressure_ = false;
-    all_pressure_ = true;
+  // Only IGC files have these altitudes: other tracks skip their arrays and convolutions.
+  void gather_channel(std::size_t c, std::size_t g0, std::size_t len) {
+    const auto field = kAltitudeChannels[c];
+    bool any = false, all = true;
     for (std::size_t j = 0; j < len; ++j) {
-      const bool has = s_[g0 + j].has_pressure_altitude();
-      any_pressure_ = any_pressure_ || has;
-      all_pressure_ = all_pressure_ && has;
+      const bool has = !std::isnan(s_[g0 + j].*field);
+      any = any || has;
+      all = all && has;
     }
-    if (!any_pressure_) return;
-    x_.pe.resize(len);
-    x_.pm.resize(len);
+    any_[c] = any;
+    all_[c] = all;
+    if (!any) return;
+    ChannelScratch& x = x_.channel[c];
+    x.e.resize(len);
+    x.m.resize(len);
     for (std::size_t j = 0; j < len; ++j) {
-      const float v = s_[g0 + j].pressure_altitude;
+      const float v = s_[g0 + j].*field;
       const bool has = !std::isnan(v);
-      x_.pe[j] = has ? static_cast<double>(v) : 0.0;
-      x_.pm[j] = has ? 1.0 : 0.0;
+      x.e[j] = has ? static_cast<double>(v) : 0.0;
+      x.m[j] = has ? 1.0 : 0.0;
     }
   }
 
-  // The pressure altitude of the full-kernel points [f0, f0 + count), x0 their window's first
-  // copied index, into out (NaN where the point has none).
-  void smooth_pressure_full(std::size_t f0, std::size_t count, std::size_t x0, double* out) {
-    if (!any_pressure_) {
-      for (std::size_t c = 0; c < count; ++c) out[c] = static_cast<double>(s_[f0 + c].pressure_altitude);
+  // Channel c of the full-kernel points [f0, f0 + count), x0 their window's first copied index,
+  // into out (NaN where the point has none).
+  void smooth_channel_full(std::size_t c, std::size_t f0, std::size_t count, std::size_t x0, double* out) {
+    const auto field = kAltitudeChannels[c];
+    if (!any_[c]) {
+      for (std::size_t i = 0; i < count; ++i) out[i] = static_cast<double>(s_[f0 + i].*field);
       return;
     }
-    convolve(&x_.pe[x0], x_.window_weight, count, x_.fpe);
-    if (all_pressure_) {
-      x_.fpm.assign(count, x_.window_weight_sum);
+    ChannelScratch& x = x_.channel[c];
+    convolve(&x.e[x0], x_.window_weight, count, x.fe);
+    if (all_[c]) {
+      x.fm.assign(count, x_.window_weight_sum);
     } else {
-      convolve(&x_.pm[x0], x_.window_weight, count, x_.fpm);
+      convolve(&x.m[x0], x_.window_weight, count, x.fm);
     }
-    for (std::size_t c = 0; c < count; ++c)
-      out[c] = x_.pm[x0 + h_ + c] == 0.0 ? static_cast<double>(s_[f0 + c].pressure_altitude) : x_.fpe[c] / x_.fpm[c];
+    for (std::size_t i = 0; i < count; ++i)
+      out[i] = x.m[x0 + h_ + i] == 0.0 ? static_cast<double>(s_[f0 + i].*field) : x.fe[i] / x.fm[i];
   }
 
-  // One point's pressure altitude (copied index l, kernel half-width k).
-  double smooth_pressure_point(std::size_t l, std::size_t k) const {
-    if (!any_pressure_ || x_.pm[l] == 0.0) return static_cast<double>(s_[g0_ + l].pressure_altitude);
+  // One point's channel c (copied index l, kernel half-width k).
+  double smooth_channel_point(std::size_t c, std::size_t l, std::size_t k) const {
+    const ChannelScratch& x = x_.channel[c];
+    if (!any_[c] || x.m[l] == 0.0) return static_cast<double>(s_[g0_ + l].*kAltitudeChannels[c]);
     double e = 0.0, we = 0.0;
     for (std::size_t j = l - k; j <= l + k; ++j) {
       const double wj = x_.weight[j > l ? j - l : l - j];
-      e += wj * x_.pe[j];
-      we += wj * x_.pm[j];
+      e += wj * x.e[j];
+      we += wj * x.m[j];
     }
     return e / we;
   }
@@ -216,7 +234,7 @@ class StretchSmoother {
     r.lat.resize(len);
     r.lon.resize(len);
     r.ele.resize(len);
-    r.pressure.resize(len);
+    for (auto& v : r.channel) v.resize(len);
     // Points with the full kernel: [f0, f1).
     const std::size_t f0 = std::max(start, h_), f1 = std::min(end, n_ - h_);
     if (f0 < f1) {
@@ -249,7 +267,7 @@ class StretchSmoother {
         if (x_.m[l] == 0.0) out_ele[c] = s_[f0 + c].ele;
         if (!closed_form(l, h_)) exact_position(l, h_, out_lat[c], out_lon[c]);
       }
-      smooth_pressure_full(f0, count, x0, &r.pressure[o0]);
+      for (std::size_t c = 0; c < kChannels; ++c) smooth_channel_full(c, f0, count, x0, &r.channel[c][o0]);
     }
     // The others: the stretch's end points stay, truncated kernels one by one.
     for (std::size_t i = start; i < end; ++i) {
@@ -259,12 +277,12 @@ class StretchSmoother {
         r.lat[o] = s_[i].lat;
         r.lon[o] = s_[i].lon;
         r.ele[o] = s_[i].ele;
-        r.pressure[o] = static_cast<double>(s_[i].pressure_altitude);
+        for (std::size_t c = 0; c < kChannels; ++c) r.channel[c][o] = static_cast<double>(s_[i].*kAltitudeChannels[c]);
       } else {
         const std::size_t k = std::min({h_, i, n_ - 1 - i});
         smooth_point(i - g0_, k, r.lat[o], r.lon[o], r.ele[o]);
         if (!s_[i].has_ele()) r.ele[o] = s_[i].ele;
-        r.pressure[o] = smooth_pressure_point(i - g0_, k);
+        for (std::size_t c = 0; c < kChannels; ++c) r.channel[c][o] = smooth_channel_point(c, i - g0_, k);
       }
     }
   }
@@ -330,7 +348,7 @@ class StretchSmoother {
       p.lat = r.lat[o];
       p.lon = r.lon[o];
       p.ele = r.ele[o];
-      p.pressure_altitude = static_cast<float>(r.pressure[o]);
+      for (std::size_t c = 0; c < kChannels; ++c) p.*kAltitudeChannels[c] = static_cast<float>(r.channel[c][o]);
     }
   }
 
@@ -338,9 +356,9 @@ class StretchSmoother {
   std::size_t n_, h_;
   std::size_t block_;  // at least h_: a block's window never reaches back beyond the previous block
   SmoothScratch& x_;
-  std::size_t g0_ = 0;                                // stretch index of the first copied point
-  bool all_ele_ = true;                               // every copied point has an elevation
-  bool any_pressure_ = false, all_pressure_ = false;  // some, every copied point has a pressure altitude
+  std::size_t g0_ = 0;                              // stretch index of the first copied point
+  bool all_ele_ = true;                             // every copied point has an elevation
+  bool any_[kChannels] = {}, all_[kChannels] = {};  // some, every copied point has channel c
   bool ecef_cleared_ = false;
 };
 

@@ -20,8 +20,9 @@
 //             solution); no elevation at all, with a warning, when the channel is absent.
 //   Pressure: pressure altitude on every fix; no elevation, with a warning, when absent.
 // Whichever of these `ele` gets, every fix also keeps its pressure altitude in
-// TrackPoint::pressure_altitude when the pressure channel is present (NaN when absent), so the
-// viewer can show both altitudes.
+// TrackPoint::pressure_altitude when the pressure channel is present (NaN when absent), and its
+// GNSS altitude in TrackPoint::gnss_altitude by the Gnss rule above (NaN when the channel is
+// absent, or on a 'V' fix whose GNSS altitude is 0), so the viewer can show both altitudes.
 //
 // Time rule: B times are UTC time of day on the HFDTE flight date. A time more than 12 hours
 // earlier than the previous fix's is a UTC midnight rollover (next day); smaller backward
@@ -104,6 +105,7 @@ void IgcParser::assign_elevation() {
     }
     pts[i].ele = ele;
     if (pressure_present_) pts[i].pressure_altitude = static_cast<float>(a.pressure);
+    if (gnss_present_ && (a.fix_3d || a.gnss != 0)) pts[i].gnss_altitude = static_cast<float>(a.gnss);
   }
 }
 

@@ -1,5 +1,6 @@
 // IGC reader: both altitudes of a fix are kept, the GNSS or pressure one in `ele` (as
-// ReadOptions::igc_altitude picks) and the pressure one always in TrackPoint::pressure_altitude.
+// ReadOptions::igc_altitude picks) and each always in TrackPoint::gnss_altitude and
+// TrackPoint::pressure_altitude.
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,9 @@ TEST(IgcAltitudes, BothChannelsAreKeptWhateverEleHolds) {
     EXPECT_EQ(p[0].pressure_altitude, 1000.0f);
     EXPECT_EQ(p[1].pressure_altitude, 1001.0f);
     EXPECT_EQ(p[2].pressure_altitude, -12.0f);
+    EXPECT_EQ(p[0].gnss_altitude, 1100.0f);
+    EXPECT_FALSE(p[1].has_gnss_altitude());  // a 'V' fix's GNSS 0: no 3D solution
+    EXPECT_EQ(p[2].gnss_altitude, 1090.0f);
   }
   // `ele` is the chosen one: GNSS, pressure where a 'V' fix has no GNSS altitude (auto).
   const auto a = read_alt(kBoth, Alt::Auto);
@@ -80,6 +84,35 @@ TEST(IgcAltitudes, AnAllZeroPressureChannelIsNotRecorded) {
   EXPECT_DOUBLE_EQ(points(read_alt(no_baro, Alt::Auto))[1].ele, 520.0);
 }
 
+TEST(IgcAltitudes, AnAllZeroGnssChannelIsNotRecorded) {
+  const std::string no_gnss = igc(b("100000", 'A', "00400", "00000") + b("100001", 'A', "00410", "00000"));
+  for (Alt alt : {Alt::Auto, Alt::Gnss, Alt::Pressure}) {
+    const auto r = read_alt(no_gnss, alt);
+    ASSERT_EQ(points(r).size(), 2u);
+    for (const TrackPoint& q : points(r)) EXPECT_FALSE(q.has_gnss_altitude());
+  }
+}
+
+TEST(IgcAltitudes, AVFixWithAGnssAltitudeKeepsItInEveryMode) {
+  // The Gnss rule: a 'V' fix's GNSS altitude counts unless it is 0. Auto still draws pressure there.
+  const std::string text = igc(b("100000", 'A', "01000", "01100") + b("100001", 'V', "01001", "01105"));
+  for (Alt alt : {Alt::Auto, Alt::Gnss, Alt::Pressure}) {
+    const auto r = read_alt(text, alt);
+    ASSERT_EQ(points(r).size(), 2u);
+    EXPECT_EQ(points(r)[1].gnss_altitude, 1105.0f);
+    EXPECT_EQ(points(r)[1].pressure_altitude, 1001.0f);
+  }
+  EXPECT_DOUBLE_EQ(points(read_alt(text, Alt::Auto))[1].ele, 1001.0);
+  EXPECT_DOUBLE_EQ(points(read_alt(text, Alt::Gnss))[1].ele, 1105.0);
+}
+
+TEST(IgcAltitudes, ASingleGnssZeroOnAnAFixIsSeaLevel) {
+  const auto r = read_alt(igc(b("100000", 'A', "00100", "00010") + b("100001", 'A', "00090", "00000")), Alt::Pressure);
+  ASSERT_EQ(points(r).size(), 2u);
+  EXPECT_EQ(points(r)[1].gnss_altitude, 0.0f);
+  EXPECT_DOUBLE_EQ(points(r)[1].ele, 90.0);
+}
+
 TEST(IgcAltitudes, ASinglePressureZeroInARecordedChannelIsSeaLevel) {
   const auto r = read_alt(igc(b("100000", 'A', "00010", "00100") + b("100001", 'A', "00000", "00090")), Alt::Gnss);
   ASSERT_EQ(points(r).size(), 2u);
@@ -93,7 +126,14 @@ TEST(IgcAltitudes, OnlyPressureRecordedLeavesGnssModeWithoutElevationButKeepsPre
   EXPECT_EQ(points(r)[0].pressure_altitude, 400.0f);
 }
 
-TEST(IgcAltitudes, OtherFormatsHaveNoPressureAltitude) {
+TEST(IgcAltitudes, OnlyGnssRecordedLeavesPressureModeWithoutElevationButKeepsGnss) {
+  const auto r = read_alt(igc(b("100000", 'A', "00000", "00512")), Alt::Pressure);
+  ASSERT_EQ(points(r).size(), 1u);
+  EXPECT_FALSE(points(r)[0].has_ele());
+  EXPECT_EQ(points(r)[0].gnss_altitude, 512.0f);
+}
+
+TEST(IgcAltitudes, OtherFormatsHaveNoIgcAltitudes) {
   auto src = ByteSource::from_memory(
       "<gpx version=\"1.1\"><trk><trkseg><trkpt lat=\"47\" lon=\"8\"><ele>500</ele></trkpt></trkseg></trk></gpx>",
       "t.gpx");
@@ -101,6 +141,7 @@ TEST(IgcAltitudes, OtherFormatsHaveNoPressureAltitude) {
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(points(r).size(), 1u);
   EXPECT_FALSE(points(r)[0].has_pressure_altitude());
+  EXPECT_FALSE(points(r)[0].has_gnss_altitude());
 }
 
 // Every real IGC file: the pressure altitudes kept in auto mode are exactly the elevations that
@@ -139,6 +180,49 @@ TEST(IgcAltitudesRealFiles, PressureAltitudeIsThePressureModesElevation) {
   EXPECT_GT(with_baro, 5u);
 }
 
+// Likewise the GNSS altitudes kept in pressure mode are exactly the elevations of
+// --igc-altitude gnss, fix by fix, and auto keeps the same.
+TEST(IgcAltitudesRealFiles, GnssAltitudeIsTheGnssModesElevation) {
+  TRAILRAY_REQUIRE_DATA(dir, "igc");
+  std::size_t files = 0, with_gnss = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string ext = e.path().extension().string();
+    if (ext != ".igc" && ext != ".IGC") continue;
+    SCOPED_TRACE(e.path().filename().string());
+    ++files;
+    ReadOptions pressure, gnss;
+    pressure.igc_altitude = Alt::Pressure;
+    gnss.igc_altitude = Alt::Gnss;
+    const auto p = load_track_file(e.path().string(), pressure);
+    const auto g = load_track_file(e.path().string(), gnss);
+    const auto a = load_track_file(e.path().string());
+    ASSERT_TRUE(p.ok() && g.ok() && a.ok());
+    const auto& pp = points(p);
+    const auto& pg = points(g);
+    const auto& pa = points(a);
+    ASSERT_EQ(pp.size(), pg.size());
+    ASSERT_EQ(pa.size(), pg.size());
+    bool any = false;
+    for (std::size_t i = 0; i < pp.size(); ++i) {
+      if (pg[i].has_ele()) {
+        ASSERT_EQ(static_cast<double>(pp[i].gnss_altitude), pg[i].ele) << "fix " << i;
+        any = true;
+      } else {
+        ASSERT_FALSE(pp[i].has_gnss_altitude()) << "fix " << i;
+      }
+      // The chosen altitude does not change the GNSS channel.
+      ASSERT_EQ(pa[i].has_gnss_altitude(), pp[i].has_gnss_altitude()) << "fix " << i;
+      if (pp[i].has_gnss_altitude()) {
+        ASSERT_EQ(pa[i].gnss_altitude, pp[i].gnss_altitude) << "fix " << i;
+      }
+    }
+    with_gnss += any ? 1 : 0;
+  }
+  EXPECT_GT(files, 10u);
+  EXPECT_GT(with_gnss, 5u);
+}
+
 TEST(IgcAltitudesRealFiles, InterlakenHasBothAltitudes) {
   TRAILRAY_REQUIRE_DATA(path, "igc/goigc_0100_interlaken.igc");
   const auto r = load_track_file(path.string());
@@ -159,4 +243,29 @@ TEST(IgcAltitudesRealFiles, InterlakenHasBothAltitudes) {
   EXPECT_EQ(gnss_hi, 1596.0);
   EXPECT_EQ(baro_lo, 486.0);
   EXPECT_EQ(baro_hi, 1462.0);
+}
+
+// `--igc-altitude pressure` draws the pressure altitude and still keeps the GNSS one, with the
+// ranges of MANIFEST.md.
+TEST(IgcAltitudesRealFiles, InterlakenInPressureModeKeepsTheGnssAltitude) {
+  TRAILRAY_REQUIRE_DATA(path, "igc/goigc_0100_interlaken.igc");
+  ReadOptions pressure;
+  pressure.igc_altitude = Alt::Pressure;
+  const auto r = load_track_file(path.string(), pressure);
+  ASSERT_TRUE(r.ok());
+  const auto& p = points(r);
+  ASSERT_EQ(p.size(), 1149u);
+  double gnss_lo = 1e9, gnss_hi = -1e9, ele_lo = 1e9, ele_hi = -1e9;
+  for (const TrackPoint& q : p) {
+    ASSERT_TRUE(q.has_gnss_altitude());
+    ASSERT_EQ(q.ele, static_cast<double>(q.pressure_altitude));
+    gnss_lo = std::min(gnss_lo, static_cast<double>(q.gnss_altitude));
+    gnss_hi = std::max(gnss_hi, static_cast<double>(q.gnss_altitude));
+    ele_lo = std::min(ele_lo, q.ele);
+    ele_hi = std::max(ele_hi, q.ele);
+  }
+  EXPECT_EQ(gnss_lo, 568.0);
+  EXPECT_EQ(gnss_hi, 1596.0);
+  EXPECT_EQ(ele_lo, 486.0);
+  EXPECT_EQ(ele_hi, 1462.0);
 }
