@@ -24,7 +24,7 @@ void add_read_options(CLI::App& cmd, track::ReadOptions& read) {
            read.igc_altitude = altitudes.at(key);
          },
          "IGC altitude used as elevation (the 3D track's, the statistics'): auto (GNSS when the fix is valid, "
-         "else pressure), gnss, pressure. The viewer's chart shows the pressure altitude too")
+         "else pressure), gnss, pressure. The viewer's chart shows both whichever is picked")
       ->check(CLI::IsMember({"auto", "gnss", "pressure"}, CLI::ignore_case))
       ->type_name("auto|gnss|pressure");
 }

@@ -133,8 +133,8 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
                                             ground.size(), t.cleaned.segments.size()));
   const std::size_t n = t.cleaned.point_count();
   t.segment_first.clear();
-  for (auto* v : {&t.distance_m, &t.time_unix_s, &t.elapsed_s, &t.altitude_m, &t.pressure_altitude_m, &t.ground_m,
-                  &t.speed_kmh, &t.vspeed_ms, &t.heart_rate_bpm}) {
+  for (auto* v : {&t.distance_m, &t.time_unix_s, &t.elapsed_s, &t.altitude_m, &t.pressure_altitude_m,
+                  &t.gnss_altitude_m, &t.ground_m, &t.speed_kmh, &t.vspeed_ms, &t.heart_rate_bpm}) {
     v->clear();
     v->reserve(n);
   }
@@ -156,6 +156,7 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
       t.elapsed_s.push_back(m.elapsed_s[i]);
       t.altitude_m.push_back(p.ele);
       t.pressure_altitude_m.push_back(as_double(p.pressure_altitude));
+      t.gnss_altitude_m.push_back(as_double(p.gnss_altitude));
       t.ground_m.push_back(ground.empty() ? kNaN : ground[s][i]);
       t.speed_kmh.push_back(m.speed_ms[i] * 3.6);
       t.vspeed_ms.push_back(m.vspeed_ms[i]);

@@ -39,23 +39,30 @@ double Track::lowest_altitude() const {
   return lowest;
 }
 
-bool Track::has_pressure_altitude() const {
-  return std::any_of(pressure_altitude_m.begin(), pressure_altitude_m.end(), [](double h) { return !std::isnan(h); });
+namespace {
+
+bool any_value(const std::vector<double>& v) {
+  return std::any_of(v.begin(), v.end(), [](double h) { return !std::isnan(h); });
 }
 
-// Cleaning smooths both alike, so where `ele` was the pressure altitude the two differ only by
-// the float the pressure altitude is kept in (well under 1 cm); a GNSS altitude differs from it by
-// metres somewhere.
-bool Track::altitude_is_pressure() const {
+}  // namespace
+
+bool Track::has_pressure_altitude() const { return any_value(pressure_altitude_m); }
+bool Track::has_gnss_altitude() const { return any_value(gnss_altitude_m); }
+
+// The float the IGC altitudes are kept in differs from the drawn double by well under 1 cm; the
+// GNSS and pressure altitudes of a fix differ by metres almost everywhere.
+Track::AltitudeSource Track::altitude_source() const {
   constexpr double kSame = 0.01;  // metres
-  bool any = false;
+  std::size_t gnss = 0, pressure = 0;
   for (std::size_t i = 0; i < altitude_m.size(); ++i) {
-    const double p = pressure_altitude(i);
-    if (std::isnan(p) || std::isnan(altitude_m[i])) continue;
-    if (std::fabs(altitude_m[i] - p) > kSame) return false;
-    any = true;
+    const double a = altitude_m[i];
+    if (std::isnan(a)) continue;
+    if (std::fabs(a - gnss_altitude(i)) <= kSame) ++gnss;
+    if (std::fabs(a - pressure_altitude(i)) <= kSame) ++pressure;
   }
-  return any;
+  if (gnss == 0 && pressure == 0) return AltitudeSource::none;
+  return gnss >= pressure ? AltitudeSource::gnss : AltitudeSource::pressure;
 }
 
 std::size_t Track::points_with_value() const {

@@ -54,6 +54,7 @@ struct Track {
   std::vector<double> elapsed_s;            // since the track's first timestamp
   std::vector<double> altitude_m;           // recorded elevation (what the 3D track is drawn at)
   std::vector<double> pressure_altitude_m;  // IGC pressure altitude (against 1013.25 hPa)
+  std::vector<double> gnss_altitude_m;      // IGC GNSS altitude
   std::vector<double> ground_m;             // terrain height below (NaN: no terrain, or not sampled yet)
   std::vector<double> speed_kmh;            // windowed horizontal speed
   std::vector<double> vspeed_ms;            // windowed vertical speed, positive climbing
@@ -85,11 +86,20 @@ struct Track {
   double pressure_altitude(std::size_t point) const {
     return point < pressure_altitude_m.size() ? pressure_altitude_m[point] : track::kMissing;
   }
+  // A point's GNSS altitude (NaN: none, or no such array).
+  double gnss_altitude(std::size_t point) const {
+    return point < gnss_altitude_m.size() ? gnss_altitude_m[point] : track::kMissing;
+  }
   // Some point has a pressure altitude (an IGC file with a barometer).
   bool has_pressure_altitude() const;
-  // The altitude drawn is the pressure altitude (`--igc-altitude pressure`, or a file whose GNSS
-  // channel is empty): every point with both has the same two altitudes. False without one.
-  bool altitude_is_pressure() const;
+  // Some point has a GNSS altitude (an IGC file whose GNSS channel is recorded).
+  bool has_gnss_altitude() const;
+  // Which IGC altitude the drawn one (altitude_m) is: `--igc-altitude` put it into `ele`, and
+  // cleaning smooths all three alike, so it equals that one (to well under 1 cm). In auto mode a
+  // 'V' fix takes the pressure altitude: the one it equals at most points. None: not an IGC
+  // flight, or no drawn altitude.
+  enum class AltitudeSource { none, gnss, pressure };
+  AltitudeSource altitude_source() const;
   // Points with a colour value.
   std::size_t points_with_value() const;
   void bump_revision() { ++revision; }

@@ -259,8 +259,8 @@ std::string igc_hike(const ViewEnv& env, const std::vector<GpxPoint>& points) {
   return env.script("hike.igc", text);
 }
 
-// Both altitudes reach the viewer, and --igc-altitude picks the one the 3D track is drawn at
-// (the hover finds the point where that altitude projects).
+// Both altitudes reach the viewer whichever --igc-altitude picks for the 3D track (the hover
+// finds the point where that altitude projects; print-hover lists both).
 TEST(ViewCli, AnIgcFlightHasBothAltitudesAndIgcAltitudePicksTheDrawnOne) {
   ViewEnv env;
   const auto points = bent_hike();
@@ -286,6 +286,7 @@ TEST(ViewCli, AnIgcFlightHasBothAltitudesAndIgcAltitudePicksTheDrawnOne) {
     EXPECT_NE(r.out.find("\n  altitude: " + std::to_string(pressure ? gnss - 100 : gnss) + " m"), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("\n  pressure altitude: " + std::to_string(gnss - 100) + " m"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\n  GNSS altitude: " + std::to_string(gnss) + " m"), std::string::npos) << r.out;
   }
 }
 

@@ -1,5 +1,5 @@
-// A scene track keeps an IGC flight's pressure altitude per flat point beside the altitude it is
-// drawn at, and tells whether that drawn altitude is the pressure one (`--igc-altitude`).
+// A scene track keeps an IGC flight's GNSS and pressure altitudes per flat point beside the
+// altitude it is drawn at, and tells which of them that drawn altitude is (`--igc-altitude`).
 
 #include <gtest/gtest.h>
 
@@ -16,9 +16,13 @@
 namespace trailray::scene {
 namespace {
 
+using Source = Track::AltitudeSource;
+
 // Two segments of 12 points heading north, 20 m and 1 s apart; elevation 1000 + i, pressure
-// altitude `offset` below it (NaN offset: none), except point 3 of the first when `hole`.
-LoadedTrackFile flight(double offset, bool hole = false) {
+// altitude `pressure` below it and GNSS altitude `gnss` below it (NaN: none), except point 3 of
+// the first segment (no pressure altitude) and point 7 of the second (no GNSS altitude) when
+// `holes`.
+LoadedTrackFile flight(double pressure, double gnss = std::nan(""), bool holes = false) {
   LoadedTrackFile f;
   f.path = "flight.igc";
   f.file.format = track::Format::Igc;
@@ -31,7 +35,9 @@ LoadedTrackFile flight(double offset, bool hole = false) {
       p.lon = 7.85;
       p.time = 1.7e9 + i + 100 * s;
       p.ele = 1000.0 + i;
-      if (!std::isnan(offset) && !(hole && s == 0 && i == 3)) p.pressure_altitude = static_cast<float>(p.ele - offset);
+      if (!std::isnan(pressure) && !(holes && s == 0 && i == 3))
+        p.pressure_altitude = static_cast<float>(p.ele - pressure);
+      if (!std::isnan(gnss) && !(holes && s == 1 && i == 7)) p.gnss_altitude = static_cast<float>(p.ele - gnss);
       seg.points.push_back(p);
     }
     f.file.tracks.back().segments.push_back(seg);
@@ -46,45 +52,69 @@ std::vector<Track> build(const std::vector<LoadedTrackFile>& files) {
   return build_tracks(files, TrackStyle{}, options, ignored);
 }
 
-TEST(TrackPressure, PerFlatPointBesideTheAltitude) {
-  const auto tracks = build({flight(80.0, true)});
+// A straight climb stays straight through smoothing: `offset` below the drawn altitude, except
+// where the kernel (half-width 5) reaches the point `hole` without one (its window is lopsided).
+void expect_offset(const Track& t, const std::vector<double>& channel, double offset, std::size_t hole) {
+  ASSERT_EQ(channel.size(), t.point_count());
+  const std::size_t segment = hole / 12;
+  for (std::size_t i = 0; i < channel.size(); ++i) {
+    if (i == hole) {
+      EXPECT_TRUE(std::isnan(channel[i])) << i;
+    } else if (i / 12 == segment && i + 5 >= hole && i <= hole + 5) {
+      EXPECT_NEAR(channel[i], t.altitude_m[i] - offset, 1.0) << i;
+    } else {
+      EXPECT_NEAR(channel[i], t.altitude_m[i] - offset, 1e-3) << i;
+    }
+  }
+}
+
+TEST(TrackIgcAltitudes, PerFlatPointBesideTheAltitude) {
+  const auto tracks = build({flight(80.0, -30.0, true)});
   ASSERT_EQ(tracks.size(), 1u);
   const Track& t = tracks[0];
   ASSERT_EQ(t.point_count(), 24u);
-  ASSERT_EQ(t.pressure_altitude_m.size(), 24u);
-  EXPECT_TRUE(std::isnan(t.pressure_altitude_m[3]));
+  expect_offset(t, t.pressure_altitude_m, 80.0, 3);
+  expect_offset(t, t.gnss_altitude_m, -30.0, 19);
   EXPECT_TRUE(std::isnan(t.pressure_altitude(3)));
-  for (std::size_t i = 0; i < 24; ++i) {
-    // A straight climb stays straight through smoothing: 80 m below the drawn altitude, except
-    // where the kernel reaches the point without one (its window is lopsided there).
-    if (i < 12 && i + 5 >= 3 && i <= 3 + 5) continue;
-    EXPECT_NEAR(t.pressure_altitude_m[i], t.altitude_m[i] - 80.0, 1e-3) << i;
-  }
-  EXPECT_NEAR(t.pressure_altitude_m[2], t.altitude_m[2] - 80.0, 1.0);
+  EXPECT_TRUE(std::isnan(t.gnss_altitude(19)));
+  EXPECT_NEAR(t.gnss_altitude(3), t.altitude_m[3] + 30.0, 1e-3);
   EXPECT_TRUE(std::isnan(t.pressure_altitude(24)));  // past the end
+  EXPECT_TRUE(std::isnan(t.gnss_altitude(24)));
   EXPECT_TRUE(t.has_pressure_altitude());
-  EXPECT_FALSE(t.altitude_is_pressure());
+  EXPECT_TRUE(t.has_gnss_altitude());
+  EXPECT_EQ(t.altitude_source(), Source::none);  // neither is the drawn one
 }
 
-TEST(TrackPressure, SameAltitudesMeanTheDrawnOneIsPressure) {
-  const auto tracks = build({flight(0.0)});
-  EXPECT_TRUE(tracks[0].has_pressure_altitude());
-  EXPECT_TRUE(tracks[0].altitude_is_pressure());
+TEST(TrackIgcAltitudes, TheDrawnAltitudeIsTheOneItEquals) {
+  EXPECT_EQ(build({flight(80.0, 0.0)})[0].altitude_source(), Source::gnss);
+  EXPECT_EQ(build({flight(0.0, -80.0)})[0].altitude_source(), Source::pressure);
+  EXPECT_EQ(build({flight(0.0)})[0].altitude_source(), Source::pressure);  // no GNSS channel
+  EXPECT_EQ(build({flight(std::nan(""), 0.0)})[0].altitude_source(), Source::gnss);
 }
 
-TEST(TrackPressure, TracksWithoutItHaveNaNs) {
+TEST(TrackIgcAltitudes, AutoModesVFixesTakeThePressureAltitudeAndTheDrawnOneStaysGnss) {
+  // `--igc-altitude auto` on a file with a few 'V' fixes: `ele` is the pressure altitude there.
+  LoadedTrackFile f = flight(80.0, 0.0);
+  for (track::Segment& s : f.file.tracks[0].segments)
+    for (std::size_t i : {4u, 5u}) s.points[i].ele = static_cast<double>(s.points[i].pressure_altitude);
+  EXPECT_EQ(build({f})[0].altitude_source(), Source::gnss);
+}
+
+TEST(TrackIgcAltitudes, TracksWithoutThemHaveNaNs) {
   const auto tracks = build({flight(std::nan(""))});
   const Track& t = tracks[0];
   ASSERT_EQ(t.pressure_altitude_m.size(), t.point_count());
+  ASSERT_EQ(t.gnss_altitude_m.size(), t.point_count());
   for (double p : t.pressure_altitude_m) EXPECT_TRUE(std::isnan(p));
+  for (double g : t.gnss_altitude_m) EXPECT_TRUE(std::isnan(g));
   EXPECT_FALSE(t.has_pressure_altitude());
-  EXPECT_FALSE(t.altitude_is_pressure());
+  EXPECT_FALSE(t.has_gnss_altitude());
+  EXPECT_EQ(t.altitude_source(), Source::none);
 }
 
 // The real flight read as `--igc-altitude` says: auto draws the GNSS altitude (about 100 m above
-// the pressure altitude in this file), pressure draws the pressure one; both keep the pressure
-// altitude.
-TEST(TrackPressureRealFile, IgcAltitudeChoosesTheDrawnAltitude) {
+// the pressure altitude in this file), pressure draws the pressure one; both keep both altitudes.
+TEST(TrackIgcAltitudesRealFile, IgcAltitudeChoosesTheDrawnAltitudeAndBothAreKept) {
   TRAILRAY_REQUIRE_DATA(path, "igc/goigc_0100_interlaken.igc");
   CollectedDiagnostics diagnostics;
   track::ReadOptions automatic, pressure;
@@ -93,17 +123,23 @@ TEST(TrackPressureRealFile, IgcAltitudeChoosesTheDrawnAltitude) {
   const auto p = build({read_track_file(path.string(), pressure, diagnostics)});
   ASSERT_EQ(a.size(), 1u);
   ASSERT_EQ(p.size(), 1u);
-  EXPECT_TRUE(a[0].has_pressure_altitude());
-  EXPECT_FALSE(a[0].altitude_is_pressure());
-  EXPECT_TRUE(p[0].altitude_is_pressure());
+  for (const Track* t : {&a[0], &p[0]}) {
+    EXPECT_TRUE(t->has_pressure_altitude());
+    EXPECT_TRUE(t->has_gnss_altitude());
+  }
+  EXPECT_EQ(a[0].altitude_source(), Source::gnss);
+  EXPECT_EQ(p[0].altitude_source(), Source::pressure);
   // (The minimum distance counts the climb, so the two may keep different points.)
+  for (std::size_t i = 0; i < a[0].point_count(); ++i) ASSERT_NEAR(a[0].altitude_m[i], a[0].gnss_altitude_m[i], 0.01);
   for (std::size_t i = 0; i < p[0].point_count(); ++i)
     ASSERT_NEAR(p[0].altitude_m[i], p[0].pressure_altitude_m[i], 0.01) << i;
-  double gap = 0.0;
-  for (std::size_t i = 0; i < a[0].point_count(); ++i) gap += a[0].altitude_m[i] - a[0].pressure_altitude_m[i];
-  gap /= static_cast<double>(a[0].point_count());
-  EXPECT_GT(gap, 50.0);
-  EXPECT_LT(gap, 150.0);
+  for (const Track* t : {&a[0], &p[0]}) {
+    double gap = 0.0;
+    for (std::size_t i = 0; i < t->point_count(); ++i) gap += t->gnss_altitude_m[i] - t->pressure_altitude_m[i];
+    gap /= static_cast<double>(t->point_count());
+    EXPECT_GT(gap, 50.0);
+    EXPECT_LT(gap, 150.0);
+  }
 }
 
 }  // namespace

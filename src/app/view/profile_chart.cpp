@@ -43,8 +43,10 @@ float point_value(const scene::Track& t, std::size_t point) {
 }
 
 constexpr ImU32 kTerrainColour = IM_COL32(120, 100, 80, 200);
-// The second altitude line: light and dashed, unlike any track colour or colormap (solid).
+// The other altitude lines: light and dashed, unlike any track colour or colormap (solid), and
+// unlike one another (both show when neither is drawn in 3D).
 constexpr ImU32 kPressureColour = IM_COL32(235, 235, 235, 230);
+constexpr ImU32 kGnssColour = IM_COL32(150, 215, 255, 230);
 constexpr float kDash = 6.0f, kDashGap = 4.0f;  // pixels
 
 // A line from a to b, drawn only where x falls in a dash: the phase follows x, so consecutive
@@ -62,6 +64,15 @@ void add_dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 colour, float w
     const float x0 = std::max(a.x, start), x1 = std::min(b.x, start + kDash);
     if (x0 < x1) draw->AddLine(at(x0), at(x1), colour, width);
   }
+}
+
+ImU32 dashed_colour(AltitudeLine::Source source) {
+  return source == AltitudeLine::Source::gnss ? kGnssColour : kPressureColour;
+}
+
+// A dashed line's altitude at a point.
+double line_altitude(const scene::Track& t, AltitudeLine::Source source, std::size_t point) {
+  return source == AltitudeLine::Source::gnss ? t.gnss_altitude(point) : t.pressure_altitude(point);
 }
 
 // The legend in the plot's top right corner: the altitude lines and the terrain, when there are
@@ -84,10 +95,10 @@ void draw_chart_legend(ImDrawList* draw, const std::vector<AltitudeLine>& lines,
   };
   for (const AltitudeLine& l : lines) {
     const ImVec2 a(left + pad, y + row * 0.5f), b(left + pad + swatch, y + row * 0.5f);
-    if (l.pressure)
-      add_dashed_line(draw, a, b, kPressureColour, 1.5f);
-    else
+    if (l.source == AltitudeLine::Source::drawn)
       draw->AddLine(a, b, drawn_colour, 2.0f);
+    else
+      add_dashed_line(draw, a, b, dashed_colour(l.source), 1.5f);
     entry(l.label);
   }
   if (terrain) {
@@ -135,7 +146,7 @@ std::optional<ChartExtent> chart_extent(const scene::Track& t, ChartAxis axis) {
     if (std::isnan(x)) continue;
     e.x_min = std::min(e.x_min, x);
     e.x_max = std::max(e.x_max, x);
-    for (double y : {t.altitude_m[i], t.ground_m[i], t.pressure_altitude(i)}) {
+    for (double y : {t.altitude_m[i], t.ground_m[i], t.pressure_altitude(i), t.gnss_altitude(i)}) {
       if (std::isnan(y)) continue;
       e.y_min = std::min(e.y_min, y);
       e.y_max = std::max(e.y_max, y);
@@ -150,17 +161,24 @@ std::optional<ChartExtent> chart_extent(const scene::Track& t, ChartAxis axis) {
 }
 
 std::vector<AltitudeLine> altitude_lines(const scene::Track& t) {
+  using Source = AltitudeLine::Source;
   const bool any_altitude =
       std::any_of(t.altitude_m.begin(), t.altitude_m.end(), [](double a) { return !std::isnan(a); });
-  if (!t.has_pressure_altitude()) {
-    if (!any_altitude) return {};
-    return {AltitudeLine{false, true, "altitude"}};
-  }
-  // `--igc-altitude pressure` (or a file without a GNSS channel): the GNSS altitude was not kept.
-  if (t.altitude_is_pressure()) return {AltitudeLine{false, true, "pressure altitude (3D track)"}};
+  const bool gnss = t.has_gnss_altitude(), pressure = t.has_pressure_altitude();
+  const scene::Track::AltitudeSource drawn = t.altitude_source();
   std::vector<AltitudeLine> lines;
-  if (any_altitude) lines.push_back(AltitudeLine{false, true, "GNSS altitude (3D track)"});
-  lines.push_back(AltitudeLine{true, false, any_altitude ? "pressure altitude" : "pressure altitude (not in 3D)"});
+  if (any_altitude) {
+    std::string label = "altitude";
+    if (drawn == scene::Track::AltitudeSource::gnss) label = "GNSS altitude (3D track)";
+    if (drawn == scene::Track::AltitudeSource::pressure) label = "pressure altitude (3D track)";
+    if (drawn == scene::Track::AltitudeSource::none && (gnss || pressure)) label = "altitude (3D track)";
+    lines.push_back(AltitudeLine{Source::drawn, true, label});
+  }
+  const char* suffix = any_altitude ? "" : " (not in 3D)";
+  if (gnss && drawn != scene::Track::AltitudeSource::gnss)
+    lines.push_back(AltitudeLine{Source::gnss, false, std::string("GNSS altitude") + suffix});
+  if (pressure && drawn != scene::Track::AltitudeSource::pressure)
+    lines.push_back(AltitudeLine{Source::pressure, false, std::string("pressure altitude") + suffix});
   return lines;
 }
 
@@ -293,7 +311,9 @@ void draw_profile_chart(ViewerModel& model) {
   // never joined across a segment gap.
   const auto range = model.color_range();
   const std::vector<AltitudeLine> lines = altitude_lines(t);
-  const bool pressure_line = std::any_of(lines.begin(), lines.end(), [](const AltitudeLine& l) { return l.pressure; });
+  std::vector<AltitudeLine::Source> dashed;
+  for (const AltitudeLine& l : lines)
+    if (l.source != AltitudeLine::Source::drawn) dashed.push_back(l.source);
   bool terrain = false;
   for (std::size_t seg = 0; seg < t.segment_first.size(); ++seg) {
     const std::size_t first = t.segment_first[seg];
@@ -309,9 +329,11 @@ void draw_profile_chart(ViewerModel& model) {
           draw->AddQuadFilled(ImVec2(x0, y_px(g0)), ImVec2(x1, y_px(g1)), ImVec2(x1, bottom), ImVec2(x0, bottom),
                               kTerrainColour);
         terrain = terrain || (!std::isnan(g0) && !std::isnan(g1));
-        const double p0 = t.pressure_altitude(*prev), p1 = t.pressure_altitude(i);
-        if (pressure_line && !std::isnan(p0) && !std::isnan(p1))
-          add_dashed_line(draw, ImVec2(x0, y_px(p0)), ImVec2(x1, y_px(p1)), kPressureColour, 1.5f);
+        for (const AltitudeLine::Source source : dashed) {
+          const double p0 = line_altitude(t, source, *prev), p1 = line_altitude(t, source, i);
+          if (!std::isnan(p0) && !std::isnan(p1))
+            add_dashed_line(draw, ImVec2(x0, y_px(p0)), ImVec2(x1, y_px(p1)), dashed_colour(source), 1.5f);
+        }
         const double a0 = t.altitude_m[*prev], a1 = t.altitude_m[i];
         if (!std::isnan(a0) && !std::isnan(a1))
           draw->AddLine(ImVec2(x0, y_px(a0)), ImVec2(x1, y_px(a1)), to_imgui(point_color(t, settings, range, i)), 2.0f);
@@ -350,8 +372,10 @@ void draw_profile_chart(ViewerModel& model) {
     draw->AddLine(ImVec2(x, top), ImVec2(x, bottom), IM_COL32(255, 255, 255, 200), 1.0f);
     const double a = t.altitude_m[model.hover.point];
     if (!std::isnan(a)) draw->AddCircleFilled(ImVec2(x, y_px(a)), 4.0f, IM_COL32(255, 255, 255, 255));
-    const double p = t.pressure_altitude(model.hover.point);
-    if (pressure_line && !std::isnan(p)) draw->AddCircle(ImVec2(x, y_px(p)), 4.0f, kPressureColour, 0, 1.5f);
+    for (const AltitudeLine::Source source : dashed) {
+      const double p = line_altitude(t, source, model.hover.point);
+      if (!std::isnan(p)) draw->AddCircle(ImVec2(x, y_px(p)), 4.0f, dashed_colour(source), 0, 1.5f);
+    }
   }
 
   // Drag: select from where the button went down to the mouse; a click without a drag clears.

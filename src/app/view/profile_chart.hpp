@@ -1,8 +1,8 @@
 #pragma once
 // The profile chart: a track's altitude and the terrain below it against distance or
-// time, the line coloured like the track in the 3D view; an IGC flight with a barometer has a
-// second line, its pressure altitude beside the GNSS one, and a legend says which the 3D track
-// is drawn at (`--igc-altitude`). Hovering marks a point (HoverState, read
+// time, the line coloured like the track in the 3D view; an IGC flight with both altitudes has a
+// second line, its GNSS and pressure altitudes both shown whichever the 3D track is drawn at, and a
+// legend says which that is (`--igc-altitude`). Hovering marks a point (HoverState, read
 // by the 3D view), a point hovered in the 3D view is marked here, and a drag selects a range
 // whose statistics are shown under the chart.
 //
@@ -24,9 +24,9 @@ namespace trailray::app::view {
 // the track's first timestamp (NaN for a point without a time).
 double chart_x(const scene::Track& track, ChartAxis axis, std::size_t point);
 
-// What the chart spans: x over the points that have an x, y over altitudes (both, when a track
-// has a pressure altitude) and ground heights (a flat range is widened by 1 m each way). nullopt: no point has an x
-// (time axis without times), or no point has an altitude or a ground height.
+// What the chart spans: x over the points that have an x, y over altitudes (all, when a track
+// has a GNSS or pressure altitude) and ground heights (a flat range is widened by 1 m each way). nullopt: no point has
+// an x (time axis without times), or no point has an altitude or a ground height.
 struct ChartExtent {
   double x_min = 0.0, x_max = 0.0;
   double y_min = 0.0, y_max = 0.0;
@@ -34,13 +34,14 @@ struct ChartExtent {
 std::optional<ChartExtent> chart_extent(const scene::Track& track, ChartAxis axis);
 
 // The altitude lines of a track's chart, in drawing order. The altitude the 3D track is drawn at
-// (altitude_m) is coloured like it; an IGC flight whose points have a pressure altitude that is
-// not that one also gets its pressure altitude (its drawn altitude is then the GNSS one). Empty:
-// no altitude at all.
+// (altitude_m) is coloured like it and named after the IGC altitude it is (Track::altitude_source);
+// an IGC flight's GNSS and pressure altitudes that are not that one follow, dashed. Empty: no
+// altitude at all.
 struct AltitudeLine {
-  bool pressure = false;  // pressure_altitude_m, else altitude_m
-  bool in_3d = false;     // the 3D track is drawn at this altitude
-  std::string label;      // for the chart's legend
+  enum class Source { drawn, gnss, pressure };
+  Source source = Source::drawn;  // altitude_m, gnss_altitude_m or pressure_altitude_m
+  bool in_3d = false;             // the 3D track is drawn at this altitude
+  std::string label;              // for the chart's legend
 };
 std::vector<AltitudeLine> altitude_lines(const scene::Track& track);
 

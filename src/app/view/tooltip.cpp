@@ -41,9 +41,10 @@ std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
       line("vertical speed", t.vspeed_ms[i], "{:.1f} m/s"),
       line("heart rate", t.heart_rate_bpm[i], "{:.0f} bpm"),
   };
-  // Only flights with a barometer have it: other tracks' tooltips do not list it as missing.
-  const double pressure = t.pressure_altitude(i);
+  // Only IGC flights have them: other tracks' tooltips do not list them as missing.
+  const double pressure = t.pressure_altitude(i), gnss = t.gnss_altitude(i);
   if (!std::isnan(pressure)) lines.insert(lines.begin() + 2, line("pressure altitude", pressure, "{:.0f} m"));
+  if (!std::isnan(gnss)) lines.insert(lines.begin() + 2, line("GNSS altitude", gnss, "{:.0f} m"));
   return lines;
 }
 

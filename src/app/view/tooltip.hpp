@@ -11,8 +11,8 @@ namespace trailray::app::view {
 
 // "time", "altitude", "height above ground", "speed", "vertical speed", "heart rate", one line
 // each as "label: value unit" (km/h, m/s, m, bpm; the time as "YYYY-MM-DD hh:mm:ss UTC"); a
-// missing value reads "—". A point with a pressure altitude (IGC) has "pressure altitude" after
-// "altitude". Empty for an index out of range.
+// missing value reads "—". A point with a GNSS or pressure altitude (IGC) has "GNSS altitude"
+// and "pressure altitude", in that order, after "altitude". Empty for an index out of range.
 std::vector<std::string> tooltip_lines(const scene::Track& track, std::size_t point);
 
 // A time as the tooltips show it: "YYYY-MM-DD hh:mm:ss UTC" ("—" when it cannot be shown).
