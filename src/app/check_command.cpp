@@ -33,36 +33,28 @@ struct CheckArgs {
 
 using Segments = std::vector<std::vector<CheckPoint>>;
 
-Segments segments_of(const track::TrackFile& f) {
+// The points as checked: their elevation against MSL (and AGL) limits; with `pressure`, an IGC's
+// pressure altitude (kept beside the elevation whichever --igc-altitude picked) against FL/STD.
+Segments segments_of(const track::TrackFile& f, bool pressure) {
   Segments out;
   for (const auto& t : f.tracks)
     for (const auto& s : t.segments) {
       std::vector<CheckPoint> points;
       points.reserve(s.points.size());
-      for (const auto& p : s.points) points.push_back({p.lat, p.lon, p.time, p.ele, track::kMissing, track::kMissing});
+      for (const auto& p : s.points) {
+        const double std_m = pressure && p.has_pressure_altitude() ? p.pressure_altitude : track::kMissing;
+        points.push_back({p.lat, p.lon, p.time, p.ele, std_m, track::kMissing});
+      }
       out.push_back(std::move(points));
     }
   return out;
 }
 
-// An IGC file read a second time for its pressure altitude: flight levels compare with it.
-// Returns how the altitudes were taken, in words.
-std::string add_pressure_altitude(const std::string& path, const track::ReadOptions& read, Segments& segments) {
-  track::ReadOptions pressure = read;
-  pressure.igc_altitude = IgcAltitude::Pressure;
-  pressure.strict = false;
-  const track::ReadResult second = track::load_track_file(path, pressure);
-  const Segments p = second.ok() ? segments_of(second.file) : Segments{};
-  bool same = p.size() == segments.size();
-  for (std::size_t s = 0; same && s < p.size(); ++s) same = p[s].size() == segments[s].size();
-  bool any = false;
-  for (std::size_t s = 0; same && s < p.size(); ++s)
-    for (std::size_t i = 0; i < p[s].size(); ++i) {
-      segments[s][i].std_m = p[s][i].msl_m;
-      any = any || !std::isnan(p[s][i].msl_m);
-    }
-  if (!any) return "IGC without pressure altitude: FL limits compared with the GNSS altitude";
-  return "IGC: FL/STD limits with the pressure altitude (against 1013.25 hPa), MSL/AGL limits with the GNSS altitude";
+bool any_pressure_altitude(const Segments& segments) {
+  for (const auto& s : segments)
+    for (const auto& p : s)
+      if (!std::isnan(p.std_m)) return true;
+  return false;
 }
 
 void add_ground(const terrain::TerrainConfig& config, TerminalDiagnostics& diagnostics, bool quiet,
@@ -113,7 +105,10 @@ int run_check(const CheckArgs& a) {
       status = 2;
       continue;
     }
-    Segments segments = segments_of(read.file);
+    const bool igc = read.file.format == track::Format::Igc;
+    // GNSS mode: the GNSS altitude for every limit, as asked; otherwise FL/STD limits take the
+    // pressure altitude where the file has one (in pressure mode it is the elevation too).
+    Segments segments = segments_of(read.file, igc && a.read.igc_altitude != IgcAltitude::Gnss);
     CheckedTrack checked{path == "-" ? "<stdin>" : path, 0, "", {}};
     std::size_t without_altitude = 0;
     for (const auto& s : segments) {
@@ -123,20 +118,18 @@ int run_check(const CheckArgs& a) {
     if (without_altitude > 0)
       diagnostics.warning(fmt::format("{}: {} of {} points have no altitude: they are never found inside an airspace",
                                       checked.path, without_altitude, checked.points));
-    if (read.file.format != track::Format::Igc)
+    if (!igc)
       checked.altitudes =
           "one elevation per point: compared with every limit (FL too, as if it were pressure altitude)";
-    else if (a.read.igc_altitude == IgcAltitude::Auto && path != "-")
-      checked.altitudes = add_pressure_altitude(path, a.read, segments);
-    else if (a.read.igc_altitude == IgcAltitude::Auto)
-      checked.altitudes = "IGC from standard input, read once: its elevation (GNSS, else pressure) for every limit";
+    else if (a.read.igc_altitude == IgcAltitude::Gnss)
+      checked.altitudes = "IGC GNSS altitude for every limit (FL too)";
     else if (a.read.igc_altitude == IgcAltitude::Pressure)
       checked.altitudes = "IGC pressure altitude (--igc-altitude pressure) for every limit";
+    else if (!any_pressure_altitude(segments))
+      checked.altitudes = "IGC without pressure altitude: FL limits compared with the GNSS altitude";
     else
-      checked.altitudes = "IGC GNSS altitude for every limit (FL too)";
-    if (a.read.igc_altitude == IgcAltitude::Pressure)
-      for (auto& s : segments)
-        for (auto& p : s) p.std_m = p.msl_m;
+      checked.altitudes =
+          "IGC: FL/STD limits with the pressure altitude (against 1013.25 hPa), MSL/AGL limits with the GNSS altitude";
     report.tracks.push_back(std::move(checked));
     tracks.push_back(std::move(segments));
   }
