@@ -6,13 +6,14 @@
 # 1. configures and builds build-fuzz (clang, -DTRAILRAY_FUZZ=ON) -> fuzz_gpx, fuzz_igc, fuzz_tcx, fuzz_fit, fuzz_kml (KML and KMZ), fuzz_geojson, fuzz_task (XCTrack tasks, IGC C records), fuzz_tile,
 #    fuzz_terrain_text (config, URL templates, Cache-Control, disk cache entries)
 #    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges, points CSV)
+#    fuzz_film_text (video: --camera-path files, --duration/--speed/--from/--to/--trail)
 # 2. regressions: runs each fuzzer once over every file in tests/fuzz/regressions/<format>/
 # 3. fuzzes each target for SECONDS_PER_TARGET. The corpus lives in fuzz-corpus/<format>/
 #    (git-ignored, kept between runs); seeds are read in place from ../shared/data/<format>/
 #    (../shared/data/tiles/ for tile; never copied) and from the regression inputs.
 # A crash, hang (-timeout=10) or excess memory (-rss_limit_mb=2048) is copied into
 # tests/fuzz/regressions/<format>/ and makes the script exit 1 after all targets have run.
-# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task tile terrain_text track_text" picks targets; FUZZ_MAX_LEN (default 1048576) caps
+# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text" picks targets; FUZZ_MAX_LEN (default 1048576) caps
 # input size -- the real files make MB-sized inputs, which run at ~20-100 exec/s under
 # ASan, so FUZZ_MAX_LEN=16384 explores much faster. One process per target, one at a time.
 set -uo pipefail
@@ -20,7 +21,7 @@ cd "$(dirname "$0")/.." || exit 2
 ROOT=$(pwd)
 
 SECONDS_PER_TARGET=${1:-60}
-TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task tile terrain_text track_text}
+TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text}
 BUILD=build-fuzz
 DATA="$ROOT/../shared/data"
 REGRESSIONS="$ROOT/tests/fuzz/regressions"
@@ -115,7 +116,7 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
     seed_dir="$DATA/$fmt"
     [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
     [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records
-    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ]; then
+    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ]; then
       :  # seeded by its regression inputs (a config, a template, a header, a cache entry)
     elif [ -d "$seed_dir" ]; then
       seeds+=("$seed_dir")
