@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "app/airspace_options.hpp"
 #include "app/output_file.hpp"
 #include "app/render_report.hpp"
 #include "app/scene_setup.hpp"
@@ -119,6 +120,11 @@ int run_video(const VideoArgs& a) {
   if (sources.heights)  // the markers' stems reach down to the ground
     for (scene::Track& t : loaded.tracks.tracks()) scene::set_ground_heights(t, *sources.heights);
   const double neutral_ground = loaded.recorded.lowest_or_sea_level();
+  // The task's cylinders (--task) and the airspaces of --airspace, as `render` draws them; a film
+  // always has tracks, so the region never comes from the camera.
+  scene::VolumeSet volumes = loaded.volumes;
+  add_airspace_volumes(volumes, a.airspace.files, airspace_region(loaded.tracks, loaded.waypoints, CameraRequest{}),
+                       sources.heights.get(), diagnostics);
 
   const FilmClock clock = plan_film_clock(a, loaded.tracks);
   const std::vector<scene::Camera> cameras =
@@ -128,6 +134,7 @@ int run_video(const VideoArgs& a) {
 
   scene::Scene scene;
   scene.terrain = &terrain;
+  if (!volumes.volumes.empty()) scene.volumes = &volumes;
   scene.style = style;
   scene.color_range = scene::color_range(loaded.tracks, style);
   scene.sun_time_unix_s = sun_time(sun, loaded.recorded);

@@ -64,6 +64,7 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
   add_imagery_option(cmd, args.terrain);
   add_track_style_options(cmd, args.style);
   add_waypoint_options(cmd, args.waypoints);
+  add_airspace_options(cmd, args.airspace);
   add_label_options(cmd, args.style);
   add_read_options(cmd, args.read);
   add_cleaning_options(cmd, args.analysis);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/airspace_options.hpp"
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
 #include "app/terrain_options.hpp"
@@ -42,6 +43,7 @@ struct VideoArgs {
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
   WaypointArgs waypoints;
+  AirspaceArgs airspace;
 };
 
 void add_video_options(CLI::App& command, VideoArgs& args);
