@@ -11,10 +11,12 @@
 #include "run_command.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"
+#include "xvfb_command.hpp"
 
 using trailray::test::run_command;
 using trailray::test::shell_quote;
 using trailray::test::TempDir;
+using trailray::test::xvfb_command_prefix;
 
 namespace {
 
@@ -70,10 +72,9 @@ TEST(ViewAirspaceCli, HoveringAWallPrintsTheAirspaceAndTheSkyNothing) {
                                      "DP 46:41:44 N 007:50:36 E\nDP 46:41:44 N 007:51:24 E\n"
                                      "DP 46:42:16 N 007:51:24 E\nDP 46:42:16 N 007:50:36 E\n");
   const std::string script = env.write("hover.txt", "hover 240 135\nprint-hover\nhover 240 1\nprint-hover\n");
-  const std::string auth = env.write("Xauthority", "");
   const std::string command =
       "XDG_CONFIG_HOME=" + shell_quote(env.path("config")) + " XDG_CACHE_HOME=" + shell_quote(env.path("cache")) +
-      " TRAILRAY_CONFIG= xvfb-run -a -f " + shell_quote(auth) + " " + shell_quote(TRAILRAY_BINARY) +
+      " TRAILRAY_CONFIG= " + xvfb_command_prefix(env.path("Xauthority")) + shell_quote(TRAILRAY_BINARY) +
       " view --imagery none --terrain none --look-at 46.70,7.85,0 --distance 1400 --heading 0 --pitch -10"
       " --size 480x270 --airspace " +
       shell_quote(file) + " --script " + shell_quote(script) + " 2>&1";

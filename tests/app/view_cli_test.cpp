@@ -17,6 +17,7 @@
 #include "scene/legend.hpp"
 #include "scene/text_raster.hpp"
 #include "track_cli_support.hpp"
+#include "xvfb_command.hpp"
 
 namespace trailray::test {
 namespace {
@@ -45,16 +46,7 @@ struct ViewEnv : RenderEnv {
   std::string view() const {
     std::string p = prefix();
     p.replace(p.find(" render "), 8, " view ");
-    // Our own X authority file: xvfb-run's temporary folder sometimes fails to clean up (exit 5)
-    // when the program ends quickly.
-    const std::string auth = file("Xauthority");
-    std::ofstream(auth, std::ios::app).flush();
-    // Under the sanitizers, no leak check for the window: the window system (Xlib, Mesa's X11
-    // code) keeps two blocks at exit whose stacks the fast unwinder cannot follow into a driver
-    // library that tests/lsan.supp could name, and the full unwinder deadlocks there. ASan and
-    // UBSan still watch every access; the renderer's allocations are leak-checked through
-    // `trailray render`. No effect without sanitizers.
-    return "xvfb-run -a -f " + shell_quote(auth) + " env \"ASAN_OPTIONS=${ASAN_OPTIONS}:detect_leaks=0\" " + p;
+    return xvfb_command_prefix(file("Xauthority")) + p;
   }
   std::string script(const std::string& name, const std::string& text) const {
     const std::string path = file(name);

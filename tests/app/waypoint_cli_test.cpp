@@ -13,6 +13,7 @@
 #include "app/view/waypoint_view.hpp"
 #include "scene/style.hpp"
 #include "track_cli_support.hpp"
+#include "xvfb_command.hpp"
 
 namespace trailray::test {
 namespace {
@@ -187,11 +188,8 @@ TEST(WaypointCli, TheViewerHoversAPinAndFliesToIt) {
                         << "\nprint-hover\nselect-waypoint 0\nprint-camera\n";
   std::string view = env.prefix();
   view.replace(view.find(" render "), 8, " view ");
-  const std::string auth = env.file("Xauthority");
-  std::ofstream(auth, std::ios::app).flush();
   const auto r =
-      run_command("xvfb-run -a -f " + shell_quote(auth) + " env \"ASAN_OPTIONS=${ASAN_OPTIONS}:detect_leaks=0\" " +
-                  view + shell_quote(gpx) + kPlain + " --script " + shell_quote(script) + " 2>&1");
+      run_command(xvfb_command_prefix(env.file("Xauthority")) + view + shell_quote(gpx) + kPlain + " --script " + shell_quote(script) + " 2>&1");
   ASSERT_EQ(r.status, 0) << r.out;
   // On the chart of its track (40 m from it), near the line's middle point (30 of 60).
   std::smatch m;
