@@ -11,6 +11,7 @@
 #include "app/check_report.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/terrain_options.hpp"
+#include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 #include "terrain/height_sampler.hpp"
 #include "terrain/source_factory.hpp"
@@ -169,7 +170,8 @@ void add_check_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--airspace", args->airspace, "OpenAir airspace file (UTF-8 or Latin-1)")
       ->required()
       ->type_name("FILE");
-  cmd->add_option("TRACK", args->tracks, "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON), or - for stdin")
+  cmd->add_option("TRACK", args->tracks,
+                  "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON), folders of them, patterns, or - for stdin")
       ->required()
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document");
@@ -177,7 +179,16 @@ void add_check_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("-q,--quiet", args->quiet, "No progress display");
   add_terrain_options(*cmd, args->terrain);
   add_read_options(*cmd, args->read);
-  cmd->callback([args, &exit_code] { exit_code = run_check(*args); });
+  cmd->callback([args, &exit_code] {
+    try {
+      args->tracks = expand_track_arguments(args->tracks);
+    } catch (const TrackArgumentError& e) {  // as a file that cannot be read: status 2 here
+      TerminalDiagnostics().error(e.what());
+      exit_code = 2;
+      return;
+    }
+    exit_code = run_check(*args);
+  });
 }
 
 }  // namespace trailray::app

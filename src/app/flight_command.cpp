@@ -9,6 +9,7 @@
 
 #include "app/flight_report.hpp"
 #include "app/terminal_diagnostics.hpp"
+#include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 #include "track/task/task_reader.hpp"
 
@@ -115,7 +116,8 @@ void add_flight_command(CLI::App& app, int& exit_code) {
       "in `trailray task --json`'s \"flights\", and the task itself as the document's \"task\").\n"
       "Exit status: 0 all read, 1 when any file (or the task) could not be read, 2 for a usage error.");
   cmd->add_option("TRACK", args->files,
-                  "Track files: IGC (or GPX, TCX, FIT, KML, GeoJSON with times), - for standard input")
+                  "Track files: IGC (or GPX, TCX, FIT, KML, GeoJSON with times), folders of them, patterns, - for "
+                  "standard input")
       ->required()
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of the report");
@@ -128,7 +130,10 @@ void add_flight_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.0, 10.0))
       ->default_str("0");
   add_read_options(*cmd, args->read);
-  cmd->callback([args, &exit_code] { exit_code = run_flight(*args); });
+  cmd->callback([args, &exit_code] {
+    args->files = expand_track_arguments(args->files);
+    exit_code = run_flight(*args);
+  });
 }
 
 }  // namespace trailray::app

@@ -9,6 +9,7 @@
 #include "app/render_report.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
+#include "app/track_arguments.hpp"
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "scene/legend_content.hpp"
@@ -76,7 +77,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd =
       app.add_subcommand("render", "A picture of tracks on the terrain, or of the terrain from a camera, as a PNG");
   add_render_options(*cmd, *args);
-  cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
+  cmd->callback([args, &exit_code] {
+    args->tracks = expand_track_arguments(args->tracks);
+    exit_code = run_render(*args);
+  });
 }
 
 }  // namespace trailray::app

@@ -21,8 +21,10 @@ void add_render_options(CLI::App& cmd, RenderArgs& args) {
       "covers the view a neutral ground"
       " is drawn at the tracks' lowest point.\n"
       "Exit status: 0 written, 1 a file, source or GL failed, 2 a usage error.");
-  cmd.add_option("TRACK", args.tracks,
-                 "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to draw (the view frames them)")
+  cmd.add_option(
+         "TRACK", args.tracks,
+         "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON), folders of them, or patterns ('flights/*.igc') to "
+         "draw (the view frames them)")
       ->type_name("FILE");
   cmd.add_option("-o,--output", args.output, "The PNG to write (atomically)")->required()->type_name("OUT.png");
   cmd.add_option("--size", args.size, "Image size in pixels (default 1920x1080)")->type_name("WxH");

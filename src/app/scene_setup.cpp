@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "app/track_reading.hpp"
 #include "scene/scored_route.hpp"
 #include "scene/thermal_markers.hpp"
 #include "scene/waypoint_building.hpp"
@@ -31,14 +32,14 @@ bool is_igc_path(const std::string& path) {
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints) {
-  const std::vector<scene::LoadedTrackFile> files = scene::read_track_files(paths, read, diagnostics);
+  const std::vector<scene::LoadedTrackFile> files = read_track_files_parallel(paths, read, diagnostics);
   SceneTracks out;
   out.recorded = scene::recorded_points(files);
   scene::TrackBuildOptions build = options;
   build.neutral_ground_m = out.recorded.lowest_or_sea_level();
   const bool thermals = waypoints.thermals_for(style.color_by);
   build.analyse_flights = build.analyse_flights || thermals;
-  for (scene::Track& t : scene::build_tracks(files, style, build, diagnostics)) out.tracks.add(std::move(t));
+  for (scene::Track& t : build_tracks_parallel(files, style, build, diagnostics)) out.tracks.add(std::move(t));
   const scene::WaypointBuildOptions placing{options.heights, build.neutral_ground_m};
   out.waypoints.points = scene::file_waypoints(files, placing);
   for (scene::Waypoint& w : scene::read_place_labels(waypoints.label_files, read, placing, diagnostics))

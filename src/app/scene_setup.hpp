@@ -42,9 +42,9 @@ struct SceneTracks {
   scene::VolumeSet volumes;        // --task: the task's cylinders
 };
 // Reads every file (the first that cannot be read throws, naming it) and builds its tracks
-// (build_tracks' errors), points without an elevation on the lowest recorded height where there
-// is no terrain (options.neutral_ground_m is not read); the files' waypoints and the places of
-// `waypoints.label_files` (read_place_labels' errors), hidden with --no-waypoints.
+// (build_tracks' errors), both on all cores with a progress line (app/track_reading), points without an elevation on
+// the lowest recorded height where there is no terrain (options.neutral_ground_m is not read); the files' waypoints and
+// the places of `waypoints.label_files` (read_place_labels' errors), hidden with --no-waypoints.
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints = {});

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "app/stats_report.hpp"
+#include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 
 namespace trailray::app {
@@ -59,12 +60,17 @@ void add_stats_command(CLI::App& app, int& exit_code) {
       "(duplicates, same-second runs, backward jumps), enforcing --min-distance and Gaussian\n"
       "smoothing. The table shows clean figures; --json prints both, per track and per segment.\n"
       "Exit status: 0 all read, 1 when any file could not be read, 2 for a usage error.");
-  cmd->add_option("TRACK", args->files, "Track files: GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON (gzip too), or - for standard input")
+  cmd->add_option("TRACK", args->files,
+                  "Track files: GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON (gzip too), folders of them, patterns, or - for "
+                  "standard input")
       ->required()
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of tables");
   add_track_options(*cmd, args->track);
-  cmd->callback([args, &exit_code] { exit_code = run_stats(*args); });
+  cmd->callback([args, &exit_code] {
+    args->files = expand_track_arguments(args->files);
+    exit_code = run_stats(*args);
+  });
 }
 
 }  // namespace trailray::app

@@ -7,6 +7,7 @@
 
 #include "app/task_report.hpp"
 #include "app/terminal_diagnostics.hpp"
+#include "app/track_arguments.hpp"
 #include "track/io/load.hpp"
 #include "track/task/task_reader.hpp"
 
@@ -73,14 +74,18 @@ void add_task_command(CLI::App& app, int& exit_code) {
       "interpolated between fixes; a race's start time is its gate.\n"
       "Exit status: 0 done, 1 when the task or a track cannot be read, 2 for a usage error.");
   cmd->add_option("TASKFILE", args->task, "Task file")->required()->type_name("FILE");
-  cmd->add_option("TRACK", args->tracks, "Flights to check against the task")->type_name("FILE");
+  cmd->add_option("TRACK", args->tracks, "Flights to check against the task (files, folders of them, patterns)")
+      ->type_name("FILE");
   cmd->add_option("--tolerance", args->tolerance_percent,
                   "Cylinder tolerance in percent of the radius (CIVL GAP allows e.g. 0.1)")
       ->type_name("PERCENT")
       ->check(CLI::Range(0.0, 10.0))
       ->default_str("0");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of a table");
-  cmd->callback([args, &exit_code] { exit_code = run_task(*args); });
+  cmd->callback([args, &exit_code] {
+    args->tracks = expand_track_arguments(args->tracks);
+    exit_code = run_task(*args);
+  });
 }
 
 }  // namespace trailray::app

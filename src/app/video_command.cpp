@@ -13,6 +13,7 @@
 #include "app/render_report.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
+#include "app/track_arguments.hpp"
 #include "app/video/film_plan.hpp"
 #include "app/video/film_writer.hpp"
 #include "app/video_options.hpp"
@@ -224,7 +225,10 @@ void add_video_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<VideoArgs>();
   CLI::App* cmd = app.add_subcommand("video", "A film of tracks replayed on the terrain: MP4, WebM or PNG frames");
   add_video_options(*cmd, *args);
-  cmd->callback([args, &exit_code] { exit_code = run_video(*args); });
+  cmd->callback([args, &exit_code] {
+    args->tracks = expand_track_arguments(args->tracks);
+    exit_code = run_video(*args);
+  });
 }
 
 }  // namespace trailray::app

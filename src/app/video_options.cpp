@@ -15,7 +15,8 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
       "(--distance, --pitch), circles the tracks (--camera-mode orbit), or stands still (--camera or\n"
       "--look-at, as in `render`). Ctrl-C stops and leaves no broken file.\n"
       "Exit status: 0 written, 1 a file, source, encoder or GL failed, 2 a usage error, 130 interrupted.");
-  cmd.add_option("TRACK", args.tracks, "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to replay")
+  cmd.add_option("TRACK", args.tracks,
+                 "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON), folders of them, or patterns to replay")
       ->type_name("FILE")
       ->required();
   cmd.add_option("-o,--output", args.output, "The film: .mp4 (H.264) or .webm (VP9), written atomically")

@@ -8,6 +8,7 @@
 #include "app/airspace_options.hpp"
 #include "app/camera_options.hpp"
 #include "app/style_options.hpp"
+#include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 #include "app/view/viewer_app.hpp"
 #include "app/waypoint_options.hpp"
@@ -78,8 +79,10 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "--screenshot OUT.png"
       " writes the picture at the end and exits.\n"
       "Exit status: 0 done, 1 a file, source, script or GL failed, 2 a usage error.");
-  cmd->add_option("TRACK", args->tracks,
-                  "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) to show (the view frames them)")
+  cmd->add_option(
+         "TRACK", args->tracks,
+         "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON), folders of them, or patterns ('flights/*.igc') to "
+         "show (the view frames them)")
       ->type_name("FILE");
   cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");
   add_camera_options(*cmd, args->camera);
@@ -101,7 +104,10 @@ void add_view_command(CLI::App& app, int& exit_code) {
   add_label_options(*cmd, args->style);
   add_read_options(*cmd, args->read);
   add_cleaning_options(*cmd, args->analysis);
-  cmd->callback([args, &exit_code] { exit_code = run_view(*args); });
+  cmd->callback([args, &exit_code] {
+    args->tracks = expand_track_arguments(args->tracks);
+    exit_code = run_view(*args);
+  });
 }
 
 }  // namespace trailray::app

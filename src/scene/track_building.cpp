@@ -189,53 +189,68 @@ std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, te
   return out;
 }
 
-std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
-                                const TrackBuildOptions& options, Diagnostics& diagnostics,
-                                std::size_t first_palette_index) {
+std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackStyle& style,
+                                     const TrackBuildOptions& options) {
   if (style.color_by == track::ColorMetric::agl && options.heights == nullptr)
     throw std::runtime_error("--color-by agl needs terrain heights: give --terrain (a DEM, tiles or a URL)");
   const bool by_value = style.color_by != track::ColorMetric::solid;
   std::vector<Track> tracks;
-  std::size_t points_with_value = 0;
-  for (const LoadedTrackFile& loaded : files) {
-    for (const NamedTrack& named : tracks_of(loaded)) {
-      Track t;
-      t.name = named.name;
-      t.source = loaded.path;
-      track::CleanReport report;
-      // A route's points are planned places, not noisy fixes: smoothing would pull its corners in.
-      track::CleanOptions clean = options.analysis.clean;
-      if (named.is_route()) clean.smooth = false;
-      t.cleaned = track::clean_track(named.raw(), clean, report);
-      t.metrics = track::compute_metrics(t.cleaned, options.analysis.metrics);
-      std::vector<std::vector<double>> ground;
-      if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))
-        ground = sample_ground_heights(t.cleaned, options.heights);
-      t.is_route = named.is_route();
-      t.by_value = !t.is_route;
-      if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase))
-        t.flights = std::make_shared<const track::flight::FlightAnalysis>(track::flight::analyse_flights(named.raw()));
-      std::vector<std::vector<float>> values;
-      if (t.is_route)
-        values = distances_along(t.metrics);
-      else if (by_value)
-        values = values_for(t, style.color_by, ground.empty() ? nullptr : &ground);
-      fill_geometry(t, ground, values, style, options.neutral_ground_m);
-      if (!t.is_route) points_with_value += t.points_with_value();
-      // Ground heights are kept only where they were sampled for every point of a source.
-      fill_point_arrays(t, options.heights != nullptr ? ground : std::vector<std::vector<double>>{});
-      if (options.inspect)
-        t.summary = track::summarize_cleaned_track(named.raw(), t.cleaned, report, t.metrics, options.analysis);
-      tracks.push_back(std::move(t));
-    }
+  for (const NamedTrack& named : tracks_of(loaded)) {
+    Track t;
+    t.name = named.name;
+    t.source = loaded.path;
+    track::CleanReport report;
+    // A route's points are planned places, not noisy fixes: smoothing would pull its corners in.
+    track::CleanOptions clean = options.analysis.clean;
+    if (named.is_route()) clean.smooth = false;
+    t.cleaned = track::clean_track(named.raw(), clean, report);
+    t.metrics = track::compute_metrics(t.cleaned, options.analysis.metrics);
+    std::vector<std::vector<double>> ground;
+    if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))
+      ground = sample_ground_heights(t.cleaned, options.heights);
+    t.is_route = named.is_route();
+    t.by_value = !t.is_route;
+    if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase))
+      t.flights = std::make_shared<const track::flight::FlightAnalysis>(track::flight::analyse_flights(named.raw()));
+    std::vector<std::vector<float>> values;
+    if (t.is_route)
+      values = distances_along(t.metrics);
+    else if (by_value)
+      values = values_for(t, style.color_by, ground.empty() ? nullptr : &ground);
+    fill_geometry(t, ground, values, style, options.neutral_ground_m);
+    // Ground heights are kept only where they were sampled for every point of a source.
+    fill_point_arrays(t, options.heights != nullptr ? ground : std::vector<std::vector<double>>{});
+    if (options.inspect)
+      t.summary = track::summarize_cleaned_track(named.raw(), t.cleaned, report, t.metrics, options.analysis);
+    tracks.push_back(std::move(t));
   }
+  return tracks;
+}
+
+void finish_tracks(std::vector<Track>& tracks, const TrackStyle& style, Diagnostics& diagnostics,
+                   std::size_t first_palette_index) {
   assign_colors(tracks, style, first_palette_index);
+  std::size_t points_with_value = 0;
+  for (const Track& t : tracks)
+    if (!t.is_route) points_with_value += t.points_with_value();
+  const bool by_value = style.color_by != track::ColorMetric::solid;
   if (by_value && !style.range && points_with_value == 0)
     diagnostics.warning(
         fmt::format("no point has a value for --color-by {} ({}): the tracks are drawn in the neutral colour",
                     track::color_metric_name(style.color_by),
                     style.color_by == track::ColorMetric::phase ? "no flight with a thermal was found"
                                                                 : "e.g. no times, or no such sensor"));
+}
+
+std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const TrackStyle& style,
+                                const TrackBuildOptions& options, Diagnostics& diagnostics,
+                                std::size_t first_palette_index) {
+  if (style.color_by == track::ColorMetric::agl && options.heights == nullptr)
+    throw std::runtime_error("--color-by agl needs terrain heights: give --terrain (a DEM, tiles or a URL)");
+  std::vector<Track> tracks;
+  for (const LoadedTrackFile& loaded : files)
+    for (Track& t : build_file_tracks(loaded, style, options)) tracks.push_back(std::move(t));
+  finish_tracks(tracks, style, diagnostics, first_palette_index);
   return tracks;
 }
 

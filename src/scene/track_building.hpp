@@ -38,6 +38,16 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
                                 const TrackBuildOptions& options, Diagnostics& diagnostics,
                                 std::size_t first_palette_index = 0);
 
+// build_tracks in two steps, so that files can be built apart (on several threads: this reads the
+// file and `options.heights`, which is thread-safe, and nothing else shared). The tracks of one
+// file, in build_tracks' order, without their colours; throws as build_tracks for agl without terrain.
+std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackStyle& style,
+                                     const TrackBuildOptions& options);
+// Then, on all the files' tracks in order: the colours (build_tracks' errors for --color) and the
+// note when no point has a value for the metric.
+void finish_tracks(std::vector<Track>& tracks, const TrackStyle& style, Diagnostics& diagnostics,
+                   std::size_t first_palette_index = 0);
+
 // Fills the flat per-point numbers of a track from its cleaned points and metrics; `ground` per
 // segment and point (empty: none). Throws std::invalid_argument when the metrics or the ground
 // heights do not match the track's segments and points.

@@ -3,22 +3,60 @@
 #include <cmath>
 #include <exception>
 
+#include "app/track_arguments.hpp"
+#include "app/track_reading.hpp"
 #include "scene/thermal_markers.hpp"
 #include "scene/waypoint_building.hpp"
 
 namespace trailray::app::view {
 
-LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs) {
-  LoadedViewerTracks out;
-  scene::CollectedDiagnostics diagnostics;
-  std::vector<scene::LoadedTrackFile> files;
+namespace {
+
+// Warnings kept for the window, progress forwarded to the terminal (when there is one).
+class LoadingDiagnostics : public scene::CollectedDiagnostics {
+ public:
+  explicit LoadingDiagnostics(scene::Diagnostics* progress) : progress_(progress) {}
+  void progress(const std::string& status) override {
+    if (progress_ != nullptr) progress_->progress(status);
+  }
+  void progress_done() override {
+    if (progress_ != nullptr) progress_->progress_done();
+  }
+
+ private:
+  scene::Diagnostics* progress_;
+};
+
+// Folders and patterns (files dropped on the window, or given again) become their track files;
+// one that gives none is an error line, the others still load.
+std::vector<std::string> expanded_paths(const std::vector<std::string>& paths, std::vector<std::string>& errors) {
+  std::vector<std::string> out;
   for (const std::string& path : paths) {
     try {
-      files.push_back(scene::read_track_file(path, inputs.read, diagnostics));
-      out.recorded.add(files.back().file);
-    } catch (const std::exception& e) {
-      out.errors.emplace_back(e.what());
+      for (std::string& p : expand_track_arguments({path})) out.push_back(std::move(p));
+    } catch (const TrackArgumentError& e) {
+      errors.emplace_back(e.what());
     }
+  }
+  return out;
+}
+
+}  // namespace
+
+LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs) {
+  LoadedViewerTracks out;
+  LoadingDiagnostics diagnostics(inputs.progress);
+  std::vector<scene::LoadedTrackFile> files;
+  // Every file read on all cores; one that cannot be read is an error line, the others load.
+  for (TrackFileOutcome& o :
+       read_track_file_outcomes(expanded_paths(paths, out.errors), inputs.read, {0, false}, inputs.progress)) {
+    for (std::string& w : o.warnings) diagnostics.warnings.push_back(std::move(w));
+    if (o.error) {
+      out.errors.push_back(std::move(*o.error));
+      continue;
+    }
+    files.push_back(std::move(*o.loaded));
+    out.recorded.add(files.back().file);
   }
   if (!files.empty()) {
     scene::TrackBuildOptions options;
@@ -32,7 +70,7 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
     // Per-track --color counts the command line's tracks; later files take the palette.
     if (inputs.tracks_open > 0 && style.colors.size() != 1) style.colors.clear();
     try {
-      out.tracks = scene::build_tracks(files, style, options, diagnostics, inputs.tracks_open);
+      out.tracks = build_tracks_parallel(files, style, options, diagnostics, inputs.tracks_open);
       out.waypoints = scene::file_waypoints(files, {inputs.heights, options.neutral_ground_m});
       if (inputs.thermals)
         for (const scene::Track& t : out.tracks)

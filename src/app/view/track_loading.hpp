@@ -1,7 +1,8 @@
 #pragma once
 // Track files into scene tracks without GL (so a background thread can do it while the window
-// keeps drawing): each file read on its own, so one that cannot be read becomes an error line and
-// the others still load (everything already open stays).
+// keeps drawing): the files read and built on all cores (app/track_reading), each on its own, so
+// one that cannot be read becomes an error line and the others still load (everything already
+// open stays). A folder or a pattern among the paths stands for its track files.
 
 #include <future>
 #include <string>
@@ -33,6 +34,8 @@ struct TrackLoadInputs {
   // one colour per track, gets the palette's colour.
   std::size_t tracks_open = 0;
   bool thermals = false;  // a marker per thermal of the flights (--thermals) among the waypoints
+  // Where the progress line of many files goes (null: nowhere); used from the loading thread only.
+  scene::Diagnostics* progress = nullptr;
 };
 
 LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs);

@@ -58,7 +58,10 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
       controller_(scene::LookAt{}, o.lens) {
   for (const std::string& line : window_.describe()) diagnostics_.note(line);
   // Tracks are read before the first frame (like `render`); later files load in the background.
-  LoadedViewerTracks first = load_viewer_tracks(o.tracks, load_inputs(std::numeric_limits<double>::quiet_NaN()));
+  TrackLoadInputs first_inputs = load_inputs(std::numeric_limits<double>::quiet_NaN());
+  TerminalDiagnostics loading_progress(false);  // "reading 120/10000 files" on a terminal
+  first_inputs.progress = &loading_progress;
+  LoadedViewerTracks first = load_viewer_tracks(o.tracks, first_inputs);
   recorded_ = first.recorded;
   neutral_ = recorded_.lowest_or_sea_level();
   model_.settings.style = o.style;
