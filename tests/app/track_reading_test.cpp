@@ -178,6 +178,30 @@ TEST(TrackReading, EveryFileReadWhenErrorsDoNotStop) {
   }
 }
 
+// Progress lines as a terminal would show them.
+struct ProgressLines : scene::CollectedDiagnostics {
+  std::vector<std::string> lines;
+  int done = 0;
+  void progress(const std::string& status) override { lines.push_back(status); }
+  void progress_done() override { ++done; }
+};
+
+TEST(TrackReading, ProgressCountsTheFilesThenTheirTracks) {
+  const GeneratedFolder folder(25);
+  ProgressLines d;
+  const auto files = read_track_files_parallel(folder.paths(), {}, d, 2);
+  ASSERT_FALSE(d.lines.empty());
+  EXPECT_EQ(d.lines.back(), "reading 25/25 files");
+  EXPECT_EQ(d.done, 1);
+  build_tracks_parallel(files, {}, {}, d, 0, 2);
+  EXPECT_EQ(d.lines.back(), "preparing the tracks of 25/25 files");
+  EXPECT_EQ(d.done, 2);
+  // One file: no progress line to flash.
+  ProgressLines one;
+  read_track_files_parallel({folder.paths().front()}, {}, one, 2);
+  EXPECT_TRUE(one.lines.empty());
+}
+
 TEST(ParallelJobs, EachJobRunsOnceAndProgressEndsAtTheCount) {
   const std::size_t count = 500;
   std::vector<std::atomic<int>> runs(count);
