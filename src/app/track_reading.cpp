@@ -1,5 +1,6 @@
 #include "app/track_reading.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <stdexcept>
 
@@ -38,7 +39,11 @@ std::vector<TrackFileOutcome> read_track_file_outcomes(const std::vector<std::st
     o.read = true;
     return !(o.error && options.stop_at_first_error);
   };
-  run_parallel_jobs(paths.size(), job, {options.threads, progress_line(progress, "reading {}/{} files")});
+  // Standard input named twice is read once whole and then found empty, as one file after the
+  // other would: never by two threads at once.
+  const bool stdin_twice = std::count(paths.begin(), paths.end(), "-") > 1;
+  run_parallel_jobs(paths.size(), job,
+                    {stdin_twice ? 1u : options.threads, progress_line(progress, "reading {}/{} files")});
   if (progress != nullptr && paths.size() > 1) progress->progress_done();
   return out;
 }
