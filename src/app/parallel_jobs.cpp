@@ -33,7 +33,8 @@ std::size_t run_parallel_jobs(std::size_t count, const std::function<bool(std::s
   std::atomic<std::size_t> stop_after{std::numeric_limits<std::size_t>::max()};
   std::mutex mutex;
   std::condition_variable changed;
-  std::size_t done = 0, finished_threads = 0, ran = 0;
+  std::atomic<std::size_t> done{0};
+  std::size_t finished_threads = 0, ran = 0;
 
   const auto work = [&] {
     std::size_t mine = 0;
@@ -46,9 +47,7 @@ std::size_t run_parallel_jobs(std::size_t count, const std::function<bool(std::s
         while (i < seen && !stop_after.compare_exchange_weak(seen, i)) {
         }
       }
-      const std::lock_guard<std::mutex> lock(mutex);
-      ++done;
-      changed.notify_one();
+      ++done;  // no wake-up per job: the reporting thread looks ten times a second
     }
     const std::lock_guard<std::mutex> lock(mutex);
     ran += mine;
@@ -68,7 +67,7 @@ std::size_t run_parallel_jobs(std::size_t count, const std::function<bool(std::s
       const auto now = std::chrono::steady_clock::now();
       if (options.progress && now - last_report >= std::chrono::milliseconds(100)) {
         last_report = now;
-        const std::size_t so_far = done;
+        const std::size_t so_far = done.load();
         lock.unlock();
         options.progress(so_far, count);
         lock.lock();
@@ -76,7 +75,7 @@ std::size_t run_parallel_jobs(std::size_t count, const std::function<bool(std::s
     }
   }
   for (std::thread& t : pool) t.join();
-  if (options.progress) options.progress(done, count);
+  if (options.progress) options.progress(done.load(), count);
   return ran;
 }
 
