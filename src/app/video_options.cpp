@@ -44,9 +44,11 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
   cmd.add_option("--align", args.align,
                  "Several tracks: clock (their real times, default) or start (each from its own start)")
       ->type_name("clock|start");
-  cmd.add_option("--overlay", args.overlay,
-                 "What is painted over the film: none, minimal (the clock) or full (the clock and gauges of "
-                 "the followed track: altitude, height above ground, speed, vario, glide; default)")
+  cmd.add_option(
+         "--overlay", args.overlay,
+         "What is painted over the film: none, minimal (the clock) or full (the clock and gauges of "
+         "the followed track: altitude, height above ground, speed, vario, glide; heart rate, cadence and power "
+         "when recorded; default)")
       ->type_name("none|minimal|full");
   cmd.add_flag("--fast", args.fast,
                "About 3x faster on a CPU: no sun shadows and no ambient occlusion (as --no-shadows --no-ssao); "

@@ -133,8 +133,9 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
                                             ground.size(), t.cleaned.segments.size()));
   const std::size_t n = t.cleaned.point_count();
   t.segment_first.clear();
-  for (auto* v : {&t.distance_m, &t.time_unix_s, &t.elapsed_s, &t.altitude_m, &t.pressure_altitude_m,
-                  &t.gnss_altitude_m, &t.ground_m, &t.speed_kmh, &t.vspeed_ms, &t.heart_rate_bpm}) {
+  for (auto* v :
+       {&t.distance_m, &t.time_unix_s, &t.elapsed_s, &t.altitude_m, &t.pressure_altitude_m, &t.gnss_altitude_m,
+        &t.ground_m, &t.speed_kmh, &t.vspeed_ms, &t.heart_rate_bpm, &t.cadence_rpm, &t.power_w}) {
     v->clear();
     v->reserve(n);
   }
@@ -161,6 +162,8 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
       t.speed_kmh.push_back(m.speed_ms[i] * 3.6);
       t.vspeed_ms.push_back(m.vspeed_ms[i]);
       t.heart_rate_bpm.push_back(as_double(p.heart_rate));
+      t.cadence_rpm.push_back(as_double(p.cadence));
+      t.power_w.push_back(as_double(p.power));
     }
   }
   t.timed_points.clear();

@@ -59,6 +59,8 @@ struct Track {
   std::vector<double> speed_kmh;            // windowed horizontal speed
   std::vector<double> vspeed_ms;            // windowed vertical speed, positive climbing
   std::vector<double> heart_rate_bpm;       // recorded
+  std::vector<double> cadence_rpm;          // recorded (revolutions or steps per minute)
+  std::vector<double> power_w;              // recorded
   std::vector<std::size_t> timed_points;    // the flat indices of the points with a time, in order
   bool times_rise = true;                   // their times never go back (cleaned tracks' do not)
 

@@ -8,6 +8,8 @@
 
 #include "scene/film/film_overlay.hpp"
 #include "scene/film/film_profile.hpp"
+#include "scene/track_building.hpp"
+#include "track/metrics.hpp"
 
 namespace trailray::scene {
 namespace {
@@ -26,6 +28,8 @@ TEST(FilmOverlay, GaugesAreInterpolatedAtThePosition) {
   t.speed_kmh = {36.0, 36.0};
   t.vspeed_ms = {-1.0, -1.0};
   t.heart_rate_bpm = {std::nan(""), std::nan("")};
+  t.cadence_rpm = {std::nan(""), std::nan("")};
+  t.power_w = {std::nan(""), std::nan("")};
   const GaugeReadings g = gauge_readings(t, {true, true, 0, 0.25, {}});
   EXPECT_DOUBLE_EQ(g.altitude_m, 975.0);
   EXPECT_DOUBLE_EQ(g.ground_m, 525.0);
@@ -38,7 +42,62 @@ TEST(FilmOverlay, GaugesAreInterpolatedAtThePosition) {
   for (const std::string& l : climbing) {
     EXPECT_EQ(l.find("Glide"), std::string::npos) << l;
     EXPECT_EQ(l.find("HR"), std::string::npos) << l;
+    EXPECT_EQ(l.find("Cadence"), std::string::npos) << l;
+    EXPECT_EQ(l.find("Power"), std::string::npos) << l;
   }
+}
+
+// A ride's recorded channels reach the gauges from the track's points (through the scene track's
+// per-point numbers), interpolated at the position; a point without power leaves the last value
+// known before it; a track that never recorded them has no such gauges.
+TEST(FilmOverlay, CadenceAndPowerGaugesWhenTheTrackRecordsThem) {
+  track::Track ride;
+  ride.segments.resize(1);
+  for (int i = 0; i < 3; ++i) {
+    track::TrackPoint p;
+    p.lat = 46.7;
+    p.lon = 7.85 + 0.001 * i;
+    p.ele = 600.0;
+    p.time = 1718704800.0 + 10.0 * i;
+    p.heart_rate = 140.0f;
+    p.cadence = 80.0f + 10.0f * static_cast<float>(i);                             // 80, 90, 100 rpm
+    p.power = i == 2 ? track::kMissingF : 200.0f + 40.0f * static_cast<float>(i);  // 200, 240, none
+    ride.segments[0].points.push_back(p);
+  }
+  Track t;
+  t.name = "Ride";
+  t.cleaned = ride;
+  t.metrics = track::compute_metrics(ride);
+  fill_point_arrays(t);
+  ASSERT_EQ(t.cadence_rpm.size(), 3u);
+  ASSERT_EQ(t.power_w.size(), 3u);
+  EXPECT_TRUE(std::isnan(t.power_w[2]));
+
+  const GaugeReadings quarter = gauge_readings(t, {true, true, 0, 0.3, {}});
+  EXPECT_NEAR(quarter.cadence_rpm, 83.0, 1e-9);
+  EXPECT_NEAR(quarter.power_w, 212.0, 1e-9);
+  const std::vector<std::string> lines = gauge_lines(quarter);
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_EQ(lines[lines.size() - 3], "HR 140 bpm");
+  EXPECT_EQ(lines[lines.size() - 2], "Cadence 83 rpm");
+  EXPECT_EQ(lines.back(), "Power 212 W");
+  // Past the last point with power: that point's value, not a blend with "none".
+  const GaugeReadings late = gauge_readings(t, {true, true, 1, 0.5, {}});
+  EXPECT_DOUBLE_EQ(late.cadence_rpm, 95.0);
+  EXPECT_DOUBLE_EQ(late.power_w, 240.0);
+  // At the point without power: no power gauge, cadence still there.
+  const std::vector<std::string> last = gauge_lines(gauge_readings(t, {true, true, 2, 0.0, {}}));
+  EXPECT_EQ(last.back(), "Cadence 100 rpm");
+
+  // The panel grows by those two lines.
+  TextRasterizer text;
+  GaugeReadings without = quarter;
+  without.cadence_rpm = without.power_w = std::nan("");
+  const auto with_panels = film_overlay_panels(640, 360, text, OverlayLevel::full, {quarter});
+  const auto without_panels = film_overlay_panels(640, 360, text, OverlayLevel::full, {without});
+  ASSERT_EQ(with_panels.size(), 2u);
+  ASSERT_EQ(without_panels.size(), 2u);
+  EXPECT_GT(with_panels[1].height, without_panels[1].height);
 }
 
 std::size_t changed_pixels(const RgbaImage& a, const RgbaImage& b, const PixelRect& inside) {
@@ -52,7 +111,8 @@ std::size_t changed_pixels(const RgbaImage& a, const RgbaImage& b, const PixelRe
 TEST(FilmOverlay, PanelsArePaintedWhereTheySayAndNoneIsNothing) {
   RgbaImage blank{320, 180, std::vector<std::uint8_t>(320 * 180 * 4, 200)};
   TextRasterizer text;
-  const std::vector<GaugeReadings> gauges{{"Glider", 975.0, 500.0, 36.0, -1.0, std::nan("")}};
+  const std::vector<GaugeReadings> gauges{
+      {"Glider", 975.0, 500.0, 36.0, -1.0, std::nan(""), std::nan(""), std::nan("")}};
   RgbaImage none = blank;
   EXPECT_TRUE(draw_film_overlay(none, text, OverlayLevel::none, 1718704800.0, gauges).empty());
   EXPECT_EQ(none.rgba, blank.rgba);

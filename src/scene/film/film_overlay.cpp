@@ -103,7 +103,9 @@ GaugeReadings gauge_readings(const Track& t, const TrackPosition& at) {
           lerp_at(t.ground_m, at),
           lerp_at(t.speed_kmh, at),
           lerp_at(t.vspeed_ms, at),
-          lerp_at(t.heart_rate_bpm, at)};
+          lerp_at(t.heart_rate_bpm, at),
+          lerp_at(t.cadence_rpm, at),
+          lerp_at(t.power_w, at)};
 }
 
 std::vector<std::string> gauge_lines(const GaugeReadings& g) {
@@ -117,6 +119,8 @@ std::vector<std::string> gauge_lines(const GaugeReadings& g) {
   if (std::isfinite(g.speed_kmh) && std::isfinite(g.vspeed_ms) && g.vspeed_ms < -0.2)
     lines.push_back(fmt::format("Glide {:.1f}", g.speed_kmh / 3.6 / -g.vspeed_ms));
   if (std::isfinite(g.heart_rate_bpm)) lines.push_back(fmt::format("HR {:.0f} bpm", g.heart_rate_bpm));
+  if (std::isfinite(g.cadence_rpm)) lines.push_back(fmt::format("Cadence {:.0f} rpm", g.cadence_rpm));
+  if (std::isfinite(g.power_w)) lines.push_back(fmt::format("Power {:.0f} W", g.power_w));
   return lines;
 }
 

@@ -2,7 +2,7 @@
 // What a film shows over the picture (`trailray video --overlay`), painted on the CPU like the
 // legend: a clock (the replay's time, UTC) top left, and with `full` a panel of gauges top right
 // for each followed track (altitude, height above the ground, speed, vertical speed, glide
-// ratio; heart rate when recorded), read at the track's position for the frame.
+// ratio; heart rate, cadence and power when recorded), read at the track's position for the frame.
 
 #include <optional>
 #include <string>
@@ -25,7 +25,7 @@ Result<OverlayLevel> parse_overlay_level(std::string_view text);
 // A track's numbers at a position, interpolated between its points (NaN: not recorded there).
 struct GaugeReadings {
   std::string name;
-  double altitude_m, ground_m, speed_kmh, vspeed_ms, heart_rate_bpm;
+  double altitude_m, ground_m, speed_kmh, vspeed_ms, heart_rate_bpm, cadence_rpm, power_w;
 };
 GaugeReadings gauge_readings(const Track& track, const TrackPosition& at);
 
