@@ -75,7 +75,9 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "Files dropped on the window are opened. Needs a display (X11, Wayland, or xvfb-run).\n"
       "Scripted: --frames N renders N frames and prints the frame times; --script FILE runs commands\n"
       "(orbit DX DY, pan DX DY, zoom STEPS, select TRACK, hover X Y, print-hover, print-marker,\n"
-      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH, window-screenshot PATH);\n"
+      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH, window-screenshot PATH,\n"
+      "record-film PATH SECONDS (a film as the replay panel's \"record film\" makes it), start-film PATH SECONDS,\n"
+      "cancel-film, film-size W H, film-fps N, film-camera follow|orbit|fixed);\n"
       "--screenshot OUT.png"
       " writes the picture at the end and exits.\n"
       "Exit status: 0 done, 1 a file, source, script or GL failed, 2 a usage error.");

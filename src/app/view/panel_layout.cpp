@@ -34,6 +34,8 @@ PanelLayout default_panel_layout(float width, float height, float menu_height) {
   l.shading = {l.chart.x, top, 0.0f, 0.0f, false};
   l.occlusion = {l.chart.x, top + 170.0f, 0.0f, 0.0f, false};
   l.profiler = {l.chart.x, top + 300.0f, 0.0f, 0.0f, false};
+  // Below the replay panel (expanded); x is its right edge (it grows to the left).
+  l.film = {l.replay.right(), l.replay.y + l.replay.height + kMargin, 0.0f, 0.0f, false};
   return l;
 }
 

@@ -19,6 +19,7 @@ struct PanelRect {
 struct PanelLayout {
   PanelRect tracks, statistics, chart, replay;
   PanelRect shading, occlusion, profiler;  // closed at start; auto-sized, only x and y are used
+  PanelRect film;                          // "record film", opened from the replay panel; likewise, x its right edge
 };
 
 // `menu_height`: the main menu bar's height at the top (0 without it).

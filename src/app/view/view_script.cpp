@@ -15,9 +15,10 @@ using Kind = ScriptCommand::Kind;
 struct Syntax {
   std::string_view name;
   Kind kind;
-  int numbers;  // how many numbers follow (-1: one path)
+  int numbers;  // how many numbers follow (after the path)
   bool non_negative;
   std::string_view usage;
+  bool path = false;  // a path first
 };
 
 constexpr Syntax kSyntax[] = {
@@ -34,9 +35,15 @@ constexpr Syntax kSyntax[] = {
     {"play", Kind::play, 1, true, "play SECONDS"},
     {"speed", Kind::speed, 1, true, "speed X"},
     {"wait", Kind::wait, 1, true, "wait FRAMES"},
-    {"screenshot", Kind::screenshot, -1, false, "screenshot PATH"},
-    {"window-screenshot", Kind::window_screenshot, -1, false, "window-screenshot PATH"},
+    {"screenshot", Kind::screenshot, 0, false, "screenshot PATH", true},
+    {"window-screenshot", Kind::window_screenshot, 0, false, "window-screenshot PATH", true},
     {"hide-panels", Kind::hide_panels, 0, false, "hide-panels"},
+    {"record-film", Kind::record_film, 1, true, "record-film PATH SECONDS", true},
+    {"start-film", Kind::start_film, 1, true, "start-film PATH SECONDS", true},
+    {"cancel-film", Kind::cancel_film, 0, false, "cancel-film"},
+    {"film-size", Kind::film_size, 2, true, "film-size WIDTH HEIGHT"},
+    {"film-fps", Kind::film_fps, 1, true, "film-fps N"},
+    {"film-camera", Kind::film_camera, 0, false, "film-camera follow|orbit|fixed", true},
 };
 
 std::vector<std::string_view> words(std::string_view line) {
@@ -76,26 +83,28 @@ ViewScript parse_view_script(std::string_view text, const std::string& file) {
       fail(
           fmt::format("unknown command '{}' (orbit, pan, zoom, select, select-waypoint, print-waypoints, hover, "
                       "print-hover, print-marker, "
-                      "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels)",
+                      "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels, record-film, "
+                      "start-film, cancel-film, film-size, film-fps, film-camera)",
                       w[0]));
     ScriptCommand c;
     c.kind = syntax->kind;
     c.line = number;
-    if (syntax->numbers < 0) {
-      if (w.size() != 2) fail(fmt::format("expected '{}'", syntax->usage));
-      c.path = std::string(w[1]);
-    } else {
-      if (static_cast<int>(w.size()) != syntax->numbers + 1) fail(fmt::format("expected '{}'", syntax->usage));
-      double values[2] = {0.0, 0.0};
-      for (int i = 0; i < syntax->numbers; ++i) {
-        if (!parse_number(w[static_cast<std::size_t>(i) + 1], values[i]))
-          fail(fmt::format("'{}' is not a number (expected '{}')", w[static_cast<std::size_t>(i) + 1], syntax->usage));
-        if (syntax->non_negative && values[i] < 0.0)
-          fail(fmt::format("'{}' is negative (expected '{}')", w[static_cast<std::size_t>(i) + 1], syntax->usage));
-      }
-      c.x = values[0];
-      c.y = values[1];
+    const std::size_t first = syntax->path ? 2 : 1;  // the first number's word
+    if (w.size() != first + static_cast<std::size_t>(syntax->numbers))
+      fail(fmt::format("expected '{}'", syntax->usage));
+    if (syntax->path) c.path = std::string(w[1]);
+    if (c.kind == Kind::film_camera && c.path != "follow" && c.path != "orbit" && c.path != "fixed")
+      fail(fmt::format("'{}' is not a film camera (expected '{}')", c.path, syntax->usage));
+    double values[2] = {0.0, 0.0};
+    for (int i = 0; i < syntax->numbers; ++i) {
+      const std::string_view word = w[first + static_cast<std::size_t>(i)];
+      if (!parse_number(word, values[i]))
+        fail(fmt::format("'{}' is not a number (expected '{}')", word, syntax->usage));
+      if (syntax->non_negative && values[i] < 0.0)
+        fail(fmt::format("'{}' is negative (expected '{}')", word, syntax->usage));
     }
+    c.x = values[0];
+    c.y = values[1];
     script.commands.push_back(std::move(c));
   }
   return script;

@@ -18,6 +18,13 @@
 //   screenshot PATH   waits for the view's tiles, then writes the picture (as `render` would)
 //   window-screenshot PATH  the window as shown, panels included (after the next frame)
 //   hide-panels       draws the 3D view alone from now on (no panels, markers or tooltip)
+//   record-film PATH SECONDS  records a film of SECONDS (as the "record film" window is set:
+//                     camera, size, rate), drawing frames until it is written
+//   start-film PATH SECONDS   starts recording it and goes on (`wait` draws its frames meanwhile)
+//   cancel-film       stops the film recording: no file is left
+//   film-size W H     the film's size in pixels (default 1280 720)
+//   film-fps N        the film's frames per second (default 30)
+//   film-camera MODE  follow (default), orbit or fixed (the view at the start)
 //
 // Errors name the file and the line: "view.txt:3: orbit expects two numbers, got 'left'".
 
@@ -50,11 +57,17 @@ struct ScriptCommand {
     wait,
     screenshot,
     window_screenshot,
-    hide_panels
+    hide_panels,
+    record_film,
+    start_film,
+    cancel_film,
+    film_size,
+    film_fps,
+    film_camera
   };
   Kind kind = Kind::wait;
   double x = 0.0, y = 0.0;  // the numbers (one or two)
-  std::string path;         // screenshot
+  std::string path;         // screenshot, window-screenshot, record-film, start-film; film-camera's mode
   int line = 0;             // 1-based, for messages
 };
 

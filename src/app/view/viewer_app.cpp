@@ -154,6 +154,7 @@ scene::Scene ViewerApp::scene() {
 void ViewerApp::frame(double wall_s, bool scripted) {
   window_.poll_events();
   take_dropped_files();
+  step_film();  // the film's frames first: the panels show how far it is
   const std::uint32_t width = window_.framebuffer_width(), height = window_.framebuffer_height();
   std::optional<std::array<float, 2>> cursor;
   if (scripted) {
@@ -172,6 +173,14 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   controller_.update(wall_s);
   follow_replay();
   const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
+  if (actions.record_film) {
+    try {
+      start_film();
+    } catch (const std::exception& e) {
+      model_.errors.push_back(fmt::format("record film: {}", e.what()));
+    }
+  }
+  if (actions.cancel_film) cancel_film();
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   if (actions.fly_to_waypoint >= 0) fly_to_waypoint(actions.fly_to_waypoint);
   if (actions.fly_to_point) {

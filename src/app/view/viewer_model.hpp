@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/view/film_settings.hpp"
 #include "app/view/replay.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
@@ -48,7 +49,7 @@ struct ViewerSettings {
   // Which windows are open.
   bool show_menu = true;  // the main menu bar that reopens closed windows
   bool show_tracks = true, show_statistics = true, show_shading = false, show_occlusion = false, show_profiler = false,
-       show_chart = true, show_replay = true;
+       show_chart = true, show_replay = true, show_film = false;
   bool show_waypoints = true;  // the pins and labels of waypoints and places (--no-waypoints: false)
   bool show_airspace = true;   // the volumes of --airspace
 };
@@ -94,6 +95,8 @@ struct ViewerModel {
   ChartSelection selection;
   int selected_track = -1;  // the statistics panel's track (-1: none)
   ReplayClock clock;
+  FilmSettings film;       // the replay panel's "record film"
+  FilmStatus film_status;  // the recording (the shell updates it)
   ProfilerTable profile;
   std::vector<std::string> errors;  // files that could not be read etc., shown in a window
   track::AnalysisOptions analysis;  // how the tracks were cleaned and measured (range statistics)

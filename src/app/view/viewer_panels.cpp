@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/view/film_panel.hpp"
 #include "app/view/flight_panel.hpp"
 #include "app/view/panel_layout.hpp"
 #include "app/view/profile_chart.hpp"
@@ -353,6 +354,8 @@ void replay_window(ViewerModel& model) {
   if (ImGui::Button(clock.playing() ? "pause" : "play")) clock.toggle();
   ImGui::SameLine();
   ImGui::TextUnformatted(clock_text(clock.time()).c_str());
+  ImGui::SameLine();
+  film_button(model);
   float speed = static_cast<float>(clock.speed());
   if (ImGui::SliderFloat("speed", &speed, static_cast<float>(ReplayClock::kMinSpeed),
                          static_cast<float>(ReplayClock::kMaxSpeed), "%.0fx", ImGuiSliderFlags_Logarithmic))
@@ -395,6 +398,7 @@ void window_menu(ViewerSettings& s) {
     ImGui::MenuItem("Statistics", nullptr, &s.show_statistics);
     ImGui::MenuItem("Profile", nullptr, &s.show_chart);
     ImGui::MenuItem("Replay", nullptr, &s.show_replay);
+    ImGui::MenuItem("Record film", nullptr, &s.show_film);
     ImGui::MenuItem("Shading", nullptr, &s.show_shading);
     ImGui::MenuItem("Occlusion", nullptr, &s.show_occlusion);
     ImGui::MenuItem("Profiler", nullptr, &s.show_profiler);
@@ -418,6 +422,7 @@ PanelActions draw_panels(ViewerModel& model, double wall_seconds) {
   if (s.show_profiler) profiler_window(model);
   if (s.show_chart) chart_window(model);
   if (s.show_replay) replay_window(model);
+  if (s.show_film) film_window(model, layout_now(model).film, actions);
   errors_window(model);
   return actions;
 }

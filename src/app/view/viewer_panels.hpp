@@ -14,6 +14,8 @@ struct PanelActions {
   int fly_to_track = -1;     // "fly to" pressed on a track (-1: none)
   int fly_to_waypoint = -1;  // a waypoint clicked in the track list (index into the model's waypoints)
   std::optional<scene::Waypoint> fly_to_point;  // a thermal clicked in the statistics (its marker)
+  bool record_film = false;                     // "record film" pressed (ViewerModel::film says how)
+  bool cancel_film = false;                     // "cancel" pressed while a film records
 };
 
 // Draws every open window and applies their edits to the model. Call each frame between

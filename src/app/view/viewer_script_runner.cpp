@@ -132,6 +132,36 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
       case Kind::hide_panels:
         panels_ = false;
         break;
+      case Kind::record_film:
+      case Kind::start_film:
+        model_.film.path = c.path;
+        model_.film.seconds = c.x;
+        try {
+          start_film();
+        } catch (const std::exception& e) {
+          fail(e.what());
+        }
+        if (c.kind == Kind::record_film) {
+          while (film_) frame(0.0, true);  // each frame draws some of the film
+          if (!film_error_.empty()) fail(film_error_);
+        }
+        break;
+      case Kind::film_size:
+        model_.film.width = static_cast<int>(c.x);
+        model_.film.height = static_cast<int>(c.y);
+        break;
+      case Kind::film_fps:
+        model_.film.fps = c.x;
+        break;
+      case Kind::film_camera:
+        model_.film.camera = c.path == "orbit"   ? FilmCamera::orbit
+                             : c.path == "fixed" ? FilmCamera::fixed
+                                                 : FilmCamera::follow;
+        break;
+      case Kind::cancel_film:
+        if (!film_) fail("cancel-film: no film is recording");
+        cancel_film();
+        break;
     }
     return frames;
   }

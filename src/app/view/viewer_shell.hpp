@@ -2,7 +2,7 @@
 // The viewer's shell (internal to app/view): the window, the renderer and the model together.
 // Its parts live in viewer_app.cpp (start, frame, pictures, loop), viewer_input.cpp (mouse, keys,
 // dropped files, hover), viewer_camera.cpp (first view, fly-to, replay follow, where framing may
-// put the tracks) and viewer_script_runner.cpp (--script).
+// put the tracks), viewer_film.cpp (record film) and viewer_script_runner.cpp (--script).
 
 #include <future>
 #include <optional>
@@ -13,6 +13,7 @@
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/view/camera_controller.hpp"
+#include "app/view/film_session.hpp"
 #include "app/view/track_loading.hpp"
 #include "app/view/view_script.hpp"
 #include "app/view/viewer_app.hpp"
@@ -64,6 +65,13 @@ class ViewerApp {
   void run_script(const ViewScript& script);
   // Carries out one command; the frames to draw after it.
   int run_script_command(const ScriptCommand& command, const ViewScript& script);
+  // Starts recording the film model_.film describes; throws std::runtime_error (and the
+  // planner's CLI::ValidationError) when it cannot.
+  void start_film();
+  // Each frame: the film's next frames (within a time budget, once their tiles are in); at the
+  // end the film is put in place.
+  void step_film();
+  void cancel_film();
   void print_frame_times(const std::vector<double>& all_ms, const std::vector<double>& settled_ms);
   double sun_unix_time() const;
   TrackLoadInputs load_inputs(double neutral) const;
@@ -90,6 +98,8 @@ class ViewerApp {
   std::optional<glm::dvec2> script_cursor_;  // `hover X Y`
   bool panels_ = true;                       // false: `hide-panels`
   std::string window_grab_;                  // `window-screenshot PATH`: after the next frame's UI
+  std::string film_error_;                   // why the last film stopped ("" : it did not fail)
+  std::unique_ptr<FilmSession> film_;        // a film recording; last: destroyed with the context current
 };
 
 // The first view: the options' camera, else framed on the tracks where the panels and the

@@ -67,6 +67,34 @@ TEST(ViewScript, WindowPicturesAndPanelsHaveTheirCommands) {
   expect_error("hide-panels now\n", "view.txt:1:", "hide-panels");
 }
 
+TEST(ViewScript, FilmCommandsTakeAPathAndSecondsOrTheirSettings) {
+  const ViewScript s = parse_view_script(
+      "film-size 320 180\nfilm-fps 12\nfilm-camera orbit\nstart-film out/a.mp4 2.5\nwait 2\ncancel-film\n"
+      "record-film b.webm 1\n",
+      "s.txt");
+  ASSERT_EQ(s.commands.size(), 7u);
+  EXPECT_EQ(s.commands[0].kind, Kind::film_size);
+  EXPECT_EQ(s.commands[0].x, 320.0);
+  EXPECT_EQ(s.commands[0].y, 180.0);
+  EXPECT_EQ(s.commands[1].kind, Kind::film_fps);
+  EXPECT_EQ(s.commands[1].x, 12.0);
+  EXPECT_EQ(s.commands[2].kind, Kind::film_camera);
+  EXPECT_EQ(s.commands[2].path, "orbit");
+  EXPECT_EQ(s.commands[3].kind, Kind::start_film);
+  EXPECT_EQ(s.commands[3].path, "out/a.mp4");
+  EXPECT_EQ(s.commands[3].x, 2.5);
+  EXPECT_EQ(s.commands[5].kind, Kind::cancel_film);
+  EXPECT_EQ(s.commands[6].kind, Kind::record_film);
+  EXPECT_EQ(s.commands[6].path, "b.webm");
+  EXPECT_EQ(s.commands[6].x, 1.0);
+  expect_error("record-film a.mp4\n", "view.txt:1:", "record-film PATH SECONDS");
+  expect_error("wait 1\nrecord-film a.mp4 long\n", "view.txt:2:", "'long' is not a number");
+  expect_error("start-film a.mp4 -3\n", "view.txt:1:", "negative");
+  expect_error("film-camera sideways\n", "view.txt:1:", "'sideways' is not a film camera");
+  expect_error("film-size 320\n", "view.txt:1:", "film-size WIDTH HEIGHT");
+  expect_error("cancel-film now\n", "view.txt:1:", "cancel-film");
+}
+
 TEST(ViewScript, AMissingFileIsNamed) {
   try {
     load_view_script("/nonexistent/script.txt");
