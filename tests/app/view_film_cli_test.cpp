@@ -5,14 +5,13 @@
 // is not overwritten. Small films (320x180) keep each test to seconds on llvmpipe.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "track_cli_support.hpp"
+#include "xvfb_command.hpp"
 
 namespace trailray::test {
 namespace {
@@ -24,16 +23,10 @@ constexpr double kT0 = 1718704800.0;  // 2024-06-18T10:00:00Z
 const std::string kStyle = " --terrain none --no-ssao --no-atmosphere --time 2024-06-18T10:00:00Z --color '#ff0000'";
 
 struct FilmEnv : RenderEnv {
-  // `trailray view` in a virtual X server of its own; the search for a free display starts at a
-  // number of this process's own (tests run in parallel), the X authority file is the test's.
   std::string view() const {
-    const std::string auth = file("Xauthority");
-    std::ofstream(auth, std::ios::app).flush();
-    const int first_display = 100 + static_cast<int>(::getpid() % 4000) * 2;
     std::string p = prefix();
     p.replace(p.find(" render "), 8, " view ");
-    return "xvfb-run -n " + std::to_string(first_display) + " -a -f " + shell_quote(auth) +
-           " env \"ASAN_OPTIONS=${ASAN_OPTIONS}:detect_leaks=0\" " + p;
+    return xvfb_command_prefix(file("Xauthority")) + p;
   }
   std::string video() const {
     std::string p = prefix();
