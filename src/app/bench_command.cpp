@@ -51,8 +51,11 @@ nlohmann::json row_json(const BenchRow& r) {
           {"capsule_total_ms", r.capsule_total_ms},
           {"ribbon_ms", r.ribbon_ms},
           {"tube_ms", r.tube_ms},
-          {"capsule_over_ribbon", ratio(r.capsule_ms, r.ribbon_ms)},
-          {"capsule_over_tube", ratio(r.capsule_ms, r.tube_ms)},
+          // The capsules' cost is both passes: a frame with tracks always draws the overlay too.
+          {"capsule_over_ribbon", ratio(r.capsule_total_ms, r.ribbon_ms)},
+          {"capsule_over_tube", ratio(r.capsule_total_ms, r.tube_ms)},
+          {"capsule_visible_over_ribbon", ratio(r.capsule_ms, r.ribbon_ms)},
+          {"capsule_visible_over_tube", ratio(r.capsule_ms, r.tube_ms)},
           {"capsule_bytes_per_point", per_point(r.capsule_bytes, r.points)},
           {"ribbon_bytes_per_point", per_point(r.ribbon_bytes, r.points)},
           {"tube_bytes_per_point", per_point(r.tube_bytes, r.points)},
@@ -63,23 +66,24 @@ nlohmann::json row_json(const BenchRow& r) {
 }
 
 std::string table(const std::vector<BenchRow>& rows) {
-  std::string out =
-      fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>8} {:>8} {:>8}\n", "dataset", "points",
-                  "capsule", "cap+ovl", "ribbon", "tube", "cap/rib", "cap/tube", "cap B/pt", "tube B/pt", "mem c/t");
-  out += fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10}\n", "", "", "ms", "ms", "ms", "ms");
+  // cap/rib and cap/tube compare the capsules' total (visible + overlay) with each reference.
+  std::string out = fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>8} {:>8} {:>8}\n",
+                                "dataset", "points", "capsule", "overlay", "cap total", "ribbon", "tube", "cap/rib",
+                                "cap/tube", "cap B/pt", "tube B/pt", "mem c/t");
+  out += fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "", "", "ms", "ms", "ms", "ms", "ms");
   for (const BenchRow& r : rows)
     out += fmt::format(
-        "{:<44} {:>8} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>8.2f} {:>8.2f} {:>8.1f} {:>8.1f} {:>8.3f}\n",
-        r.name.size() > 44 ? r.name.substr(0, 41) + "..." : r.name, r.points, r.capsule_ms, r.capsule_total_ms,
-        r.ribbon_ms, r.tube_ms, ratio(r.capsule_ms, r.ribbon_ms), ratio(r.capsule_ms, r.tube_ms),
-        per_point(r.capsule_bytes, r.points), per_point(r.tube_bytes, r.points),
+        "{:<44} {:>8} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>8.2f} {:>8.2f} {:>8.1f} {:>8.1f} {:>8.3f}\n",
+        r.name.size() > 44 ? r.name.substr(0, 41) + "..." : r.name, r.points, r.capsule_ms, r.capsule_overlay_ms,
+        r.capsule_total_ms, r.ribbon_ms, r.tube_ms, ratio(r.capsule_total_ms, r.ribbon_ms),
+        ratio(r.capsule_total_ms, r.tube_ms), per_point(r.capsule_bytes, r.points), per_point(r.tube_bytes, r.points),
         ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes)));
   return out;
 }
 
 // The targets, checked on the largest random walk.
 nlohmann::json targets_json(const BenchRow& r) {
-  const double over_ribbon = ratio(r.capsule_ms, r.ribbon_ms), over_tube = ratio(r.capsule_ms, r.tube_ms);
+  const double over_ribbon = ratio(r.capsule_total_ms, r.ribbon_ms), over_tube = ratio(r.capsule_total_ms, r.tube_ms);
   const double memory = ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes));
   return {{"dataset", r.name},
           {"capsule_over_ribbon",

@@ -28,8 +28,8 @@ bool positive_finite(const json& v) { return v.is_number() && std::isfinite(v.ge
 class ScratchDir {
  public:
   ScratchDir() {
-    path_ = std::filesystem::temp_directory_path() / ("trailray-bench-test-" + std::to_string(::getpid()) + "-" +
-                                                      std::to_string(counter()++));
+    path_ = std::filesystem::temp_directory_path() /
+            ("trailray-bench-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
     std::filesystem::create_directories(path_);
   }
   ~ScratchDir() {
@@ -56,8 +56,8 @@ class ScratchDir {
 std::string six_point_gpx() {
   std::string gpx = R"(<gpx version="1.1"><trk><name>Climb</name><trkseg>)";
   for (int i = 0; i < 6; ++i)
-    gpx += "<trkpt lat=\"" + std::to_string(47.0 + 0.0009 * i) + "\" lon=\"11.0\"><ele>" + std::to_string(1000 + 10 * i) +
-           "</ele><time>2024-06-01T10:0" + std::to_string(i) + ":00Z</time></trkpt>";
+    gpx += "<trkpt lat=\"" + std::to_string(47.0 + 0.0009 * i) + "\" lon=\"11.0\"><ele>" +
+           std::to_string(1000 + 10 * i) + "</ele><time>2024-06-01T10:0" + std::to_string(i) + ":00Z</time></trkpt>";
   return gpx + "</trkseg></trk></gpx>";
 }
 
@@ -81,7 +81,14 @@ TEST(BenchCli, JsonHasEveryFigureAndTheCapsulesSpendAnEighthOfTheTubesMemory) {
                             "capsule_over_ribbon", "capsule_over_tube", "tube_radius_m", "view_distance_m"})
     EXPECT_TRUE(positive_finite(walk[field])) << field << " = " << walk[field];
   EXPECT_GE(walk["capsule_total_ms"].get<double>(), walk["capsule_ms"].get<double>());
+  // The ratios are of the capsules' total: the visible pass and the overlay every frame draws.
+  EXPECT_NEAR(walk["capsule_total_ms"].get<double>(),
+              walk["capsule_ms"].get<double>() + walk["capsule_overlay_ms"].get<double>(), 1e-9);
   EXPECT_NEAR(walk["capsule_over_ribbon"].get<double>(),
+              walk["capsule_total_ms"].get<double>() / walk["ribbon_ms"].get<double>(), 1e-9);
+  EXPECT_NEAR(walk["capsule_over_tube"].get<double>(),
+              walk["capsule_total_ms"].get<double>() / walk["tube_ms"].get<double>(), 1e-9);
+  EXPECT_NEAR(walk["capsule_visible_over_ribbon"].get<double>(),
               walk["capsule_ms"].get<double>() / walk["ribbon_ms"].get<double>(), 1e-9);
 
   const double capsule = walk["capsule_bytes_per_point"].get<double>();
@@ -104,8 +111,8 @@ TEST(BenchCli, RealTracksComeFromTheDataFolderAndUnreadableOnesAreSkippedWithThe
   data.write("gpx/climb.gpx", six_point_gpx());
   data.write("gpx/broken.gpx", "this is not XML");
   data.write("gpx/notes.txt", "not a track file");
-  const auto r = run_command(bench() + "--points 2 --size 64x36 --frames 1 --json --data " +
-                             shell_quote(data.path().string()));
+  const auto r =
+      run_command(bench() + "--points 2 --size 64x36 --frames 1 --json --data " + shell_quote(data.path().string()));
   ASSERT_EQ(r.status, 0) << r.out;
   const json doc = json::parse(r.out);
   ASSERT_EQ(doc["datasets"].size(), 2u) << doc.dump(2);
