@@ -28,6 +28,7 @@ struct BenchArgs {
   int frames = 20;
   std::string data = "../shared/data";
   bool json = false;
+  std::string overlay = "split";
 };
 
 std::string trim(std::string_view s) {
@@ -119,6 +120,7 @@ int run_bench_tracks(const BenchArgs& a) {
   BenchSettings settings;
   settings.lens = lens;
   settings.frames = a.frames;
+  settings.split_overlay = a.overlay == "split";
   TrackBench bench(settings);
   const std::string timing =
       bench.gpu_timing() ? "gpu (EXT_disjoint_timer_query)" : "cpu (wall time around the draw and glFinish)";
@@ -163,14 +165,15 @@ int run_bench_tracks(const BenchArgs& a) {
                        {"frames", a.frames},
                        {"warmup_frames", settings.warmup_frames},
                        {"width_px", settings.width_px},
+                       {"overlay", a.overlay},
                        {"datasets", nlohmann::json::array()},
                        {"skipped", real.skipped}};
     for (const BenchRow& r : rows) doc["datasets"].push_back(row_json(r));
     if (targets) doc["targets"] = *targets;
     std::cout << doc.dump(2) << '\n';
   } else {
-    fmt::print("renderer: {}; {}x{}; median of {} frames; track width {} px; timing: {}\n", bench.renderer(),
-               lens.width_px, lens.height_px, a.frames, settings.width_px, timing);
+    fmt::print("renderer: {}; {}x{}; median of {} frames; track width {} px; overlay: {}; timing: {}\n",
+               bench.renderer(), lens.width_px, lens.height_px, a.frames, settings.width_px, a.overlay, timing);
     fmt::print("{}", table(rows));
     if (targets) fmt::print("{}", targets_text(*targets));
   }
@@ -223,6 +226,11 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                   "Folder with gpx/ and igc/ subfolders of real tracks, or none (default ../shared/data)")
       ->type_name("DIR");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of the table");
+  cmd->add_option("--overlay", args->overlay,
+                  "split: the overlay traces only capsules the terrain may hide, as the renderer draws it (default);\n"
+                  "full: every capsule, to compare")
+      ->check(CLI::IsMember({"split", "full"}))
+      ->type_name("MODE");
   cmd->callback([args, &exit_code] { exit_code = run_bench_tracks(*args); });
 }
 

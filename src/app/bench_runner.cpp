@@ -164,16 +164,15 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false, {}, false}};
     render::TrackSceneSettings settings;
     settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
+    if (s.settings.split_overlay) settings.terrain_top_m = dataset.ground_height_m;  // the flat ground
     const render::SceneLighting lighting;
-    const PassMedians m = s.time_passes(
-        camera, ground,
-        {{"capsule_overlay", [&] { s.capsules.draw_overlay(s.gbuffer, s.overlay, camera, lighting, draws, settings); }},
-         {"capsule_visible",
-          [&] {
-            s.gbuffer.bind();  // the overlay pass left its own target bound
-            s.capsules.draw_visible(s.gbuffer, camera, draws, settings);
-          }}},
-        [&] { render::TrackPass::prepare(draws, camera); });
+    // In the renderer's order: the overlay starts from the visible pass's depth.
+    const PassMedians m =
+        s.time_passes(camera, ground,
+                      {{"capsule_visible", [&] { s.capsules.draw_visible(s.gbuffer, camera, draws, settings); }},
+                       {"capsule_overlay",
+                        [&] { s.capsules.draw_overlay(s.gbuffer, s.overlay, camera, lighting, draws, settings); }}},
+                      [&] { render::TrackPass::prepare(draws, camera); });
     row.capsule_ms = m.ms.at("capsule_visible");
     row.capsule_overlay_ms = m.ms.at("capsule_overlay");
     row.capsule_total_ms = row.capsule_ms + row.capsule_overlay_ms;

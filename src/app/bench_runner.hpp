@@ -20,10 +20,13 @@
 namespace trailray::app {
 
 struct BenchSettings {
-  scene::Lens lens;    // the picture's size (and field of view)
-  int frames = 20;      // timed frames per technique
+  scene::Lens lens;  // the picture's size (and field of view)
+  int frames = 20;   // timed frames per technique
   int warmup_frames = 2;
   double width_px = 5.0;  // the tube's diameter on screen (the capsules' default width)
+  // The overlay as the renderer draws it (only capsules the terrain may hide are traced), or
+  // false: every capsule traced (TrackSceneSettings::terrain_top_m unset), to compare.
+  bool split_overlay = true;
 };
 
 struct BenchRow {
@@ -34,9 +37,9 @@ struct BenchRow {
   double capsule_total_ms = 0.0;    // the two medians added
   double ribbon_ms = 0.0, tube_ms = 0.0;
   std::size_t capsule_bytes = 0, ribbon_bytes = 0, tube_bytes = 0;
-  double tube_radius_m = 0.0;      // the tube's radius: width_px wide at the framing distance
-  double view_distance_m = 0.0;    // the camera's distance from the framed centre
-  bool gpu_timed = false;          // every figure of the row from GPU timer queries
+  double tube_radius_m = 0.0;    // the tube's radius: width_px wide at the framing distance
+  double view_distance_m = 0.0;  // the camera's distance from the framed centre
+  bool gpu_timed = false;        // every figure of the row from GPU timer queries
 };
 
 class TrackBench {

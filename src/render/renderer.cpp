@@ -175,7 +175,10 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
   const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
   ComposeSettings compose;
   compose.atmosphere = content.shading.atmosphere;
-  const TrackSceneSettings& tracks = content.track_settings;
+  TrackSceneSettings tracks = content.track_settings;
+  if (options_.split_track_overlay)
+    tracks.terrain_top_m =
+        terrain_span(content.terrain->tiles, static_cast<float>(content.terrain->report.neutral_ground_m)).second;
   FramePasses passes(debug_groups_, target.profiler);
   if (cascades)
     passes.run("shadows", [&] {
@@ -186,10 +189,11 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
   std::optional<TrackOverlayTarget> overlay;
   if (!content.tracks.empty())
     passes.run("tracks", [&] {
-      // The overlay reads the terrain's distances, so it goes before the tracks enter the G-buffer.
+      // The overlay starts from the visible tracks' depth and reads the terrain's distances as
+      // draw_visible copied them.
+      track_pass_.draw_visible(gbuffer, camera, content.tracks, tracks);
       overlay.emplace(width, height);
       track_pass_.draw_overlay(gbuffer, *overlay, camera, lighting, content.tracks, tracks);
-      track_pass_.draw_visible(gbuffer, camera, content.tracks, tracks);
     });
   const Texture* ambient_occlusion = nullptr;
   if (content.shading.ssao) passes.run("ssao", [&] { ambient_occlusion = &ssao_pass_.run(gbuffer, camera); });

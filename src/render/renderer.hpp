@@ -5,8 +5,8 @@
 //
 //   shadows    the sun's cascaded shadow maps, terrain and tracks as casters
 //   tiles      the terrain into the G-buffer (albedo, normal, distance)
-//   tracks     the tracks' overlay (ghosts, fringe, curtains), then their visible hits into the
-//              G-buffer
+//   tracks     the tracks' visible hits into the G-buffer, then their overlay (ghosts, fringe,
+//              curtains)
 //   ssao       ambient occlusion from the G-buffer
 //   compose    sun, sky light, shadows, AO, atmosphere: the lit frame
 //   overlays   the track overlay blended over it
@@ -52,6 +52,9 @@ struct RendererOptions {
   // never those the frame drew: a view that needs more keeps them and frees them later.
   std::size_t mesh_budget_bytes = kDefaultMeshBudgetBytes;
   std::size_t imagery_budget_bytes = kDefaultImageryBudgetBytes;
+  // The track overlay traces only the capsules the terrain may hide (TrackSceneSettings::
+  // terrain_top_m); false: every capsule, as a reference for tests.
+  bool split_track_overlay = true;
 };
 
 struct FrameReport {

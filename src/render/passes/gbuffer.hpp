@@ -42,6 +42,8 @@ class GBuffer {
   const Texture& albedo() const { return albedo_; }
   const Texture& normal() const { return normal_; }
   const Texture& distance() const { return distance_; }
+  // Its framebuffer (for blitting its depth elsewhere).
+  GLuint framebuffer_id() const { return framebuffer_.id(); }
 
  private:
   int width_, height_;

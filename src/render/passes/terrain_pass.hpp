@@ -8,12 +8,12 @@
 
 #include <span>
 
-#include "scene/camera.hpp"
-#include "scene/style.hpp"
-#include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
+#include "render/passes/gbuffer.hpp"
 #include "render/passes/terrain_mesh.hpp"
+#include "scene/camera.hpp"
+#include "scene/style.hpp"
 
 namespace trailray::render {
 
@@ -61,6 +61,7 @@ class ColorDepthTarget {
   int width() const { return width_; }
   int height() const { return height_; }
   const Texture& color() const { return color_; }
+  GLuint framebuffer_id() const { return framebuffer_.id(); }
 
  private:
   int width_, height_;

@@ -18,7 +18,11 @@
 //   overlay  into the overlay target (premultiplied RGBA8 + depth): hits behind the terrain as
 //            translucent "ghosts" (constant alpha down to fade_near_m behind the terrain, fading
 //            to 0 at fade_far_m), the anti-aliased silhouette fringe of visible tubes, and the
-//            curtains; blended over the composed frame once (blend_overlay);
+//            curtains; blended over the composed frame once (blend_overlay). After the visible
+//            draw: its depth starts as the G-buffer's visible tracks, so a capsule that stands
+//            above all the terrain drawn (no ghost possible) only adds its fringe, with a depth
+//            test before the shader; only the others are ray traced again (hidden parts cost
+//            only where the terrain may hide a track);
 //   shadow   capsules ray traced along the sun's direction into the cascaded shadow maps: the
 //            tracks cast shadows on the terrain.
 
@@ -77,6 +81,10 @@ struct TrackSceneSettings {
   scene::Colormap colormap = scene::Colormap::turbo;
   float value_min = 0.0f, value_max = 1.0f;  // the colour scale's range
   bool cast_shadows = true;
+  // The highest terrain drawn (metres above the ellipsoid): the overlay then ray traces only the
+  // capsules this terrain may hide, and draws the fringe of the others without a ray test where a
+  // visible tube covers it (draw_overlay). Unset: it traces every fragment of every capsule.
+  std::optional<double> terrain_top_m;
 };
 
 // The settings for a track style and the colour scale in use (nullopt: solid colours).
@@ -88,6 +96,8 @@ class TrackOverlayTarget {
  public:
   TrackOverlayTarget(int width, int height);  // throws RenderError
   void bind_and_clear() const;                // colour (0,0,0,0), depth far, viewport
+  // Binds it, clears the colour and copies the G-buffer's depth (the same size) into its own.
+  void bind_with_depth_of(const GBuffer& gbuffer) const;
   int width() const { return frame_.width(); }
   int height() const { return frame_.height(); }
   const Texture& color() const { return frame_.color(); }
@@ -108,8 +118,8 @@ class TrackPass {
   void draw_visible(const GBuffer& gbuffer, const scene::Camera& camera, std::span<const TrackDraw> tracks,
                     const TrackSceneSettings& settings) const;
 
-  // Clears and fills `target`; reads the terrain distance from the G-buffer, which must not
-  // hold the tracks yet (call before draw_visible).
+  // Clears and fills `target`; call after draw_visible, whose copy of the terrain's distance and
+  // normal it reads, and whose depth it starts from.
   void draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
                     const SceneLighting& lighting, std::span<const TrackDraw> tracks,
                     const TrackSceneSettings& settings) const;
@@ -126,7 +136,7 @@ class TrackPass {
                            const TrackSceneSettings& settings) const;
 
  private:
-  ShaderProgram visible_, overlay_, shadow_, curtain_, blend_;
+  ShaderProgram visible_, overlay_, fringe_, prefill_, shadow_, curtain_, blend_;
   VertexArray empty_;  // no attributes: everything comes from gl_VertexID
   VertexArray quads_;  // no attributes either, but the shared quad index buffer
   Buffer quad_indices_;
@@ -144,6 +154,13 @@ class TrackPass {
   };
   mutable TerrainCopy terrain_copy_;
   void copy_terrain(const GBuffer& gbuffer) const;
+  // The overlay's depth from the G-buffer's visible tracks (overlay_prefill.frag).
+  void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target,
+                             const scene::Camera& camera) const;
+  // The uniforms the overlay's two programs share.
+  void set_overlay_uniforms(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
+                            const SceneLighting& lighting, const TrackSceneSettings& settings,
+                            const std::array<float, 16>& view_projection) const;
   // The curtains into the bound overlay target (blended; its depth hides those behind tubes).
   void draw_curtains(const GBuffer& gbuffer, const scene::Camera& camera, const SceneLighting& lighting,
                      std::span<const TrackDraw> tracks, const TrackSceneSettings& settings,

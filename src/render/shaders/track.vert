@@ -18,6 +18,12 @@ uniform bool u_orthographic;
 uniform vec3 u_towards_light;    // unit, ECEF (orthographic only)
 uniform float u_margin_px;       // the quad's margin for the fringe, in pixels
 uniform float u_texel_m;         // orthographic: the size of a shadow map texel
+// The overlay's two draws (TrackPass::draw_overlay): 0 every capsule (the other passes), 1 only
+// those the terrain may hide, 2 only the others.
+uniform int u_overlay_split;
+uniform float u_camera_height_m;  // above the ellipsoid
+uniform float u_terrain_top_m;    // the highest terrain drawn, above the ellipsoid
+uniform float u_depth_step_k;     // depth-buffer resolution at distance d: d * d * k metres
 
 flat out vec3 v_x0;  // the previous point (== v_x1 at a segment start)
 flat out vec3 v_x1;
@@ -29,6 +35,36 @@ flat out int v_neighbours;  // bit 0: there is a previous capsule, bit 1: a next
 flat out vec3 v_start_plane;  // the joint planes' normals at v_x1 and v_x2 (joint_normal)
 flat out vec3 v_end_plane;
 out vec3 v_position;     // the quad's point, camera-relative ECEF
+
+// Heights from camera-relative positions: along the camera's vertical plus the Earth's curve over
+// the distance across it. The largest radius of curvature of the ellipsoid (heights included)
+// makes that curve the least, so a height is never overestimated; the smallest makes the sag of
+// a straight line below the Earth's curve the most.
+const float kEarthRadiusMaxM = 6.42e6;
+const float kEarthRadiusMinM = 6.3e6;
+
+float height_above_camera(vec3 p) {
+  float up = dot(p, u_up);
+  vec3 across = p - u_up * up;
+  return up + dot(across, across) / (2.0 * kEarthRadiusMaxM);
+}
+
+// Whether no terrain can hide any part of the capsule x1-x2 or lie within the overlay's margin
+// behind it (track_overlay.glsl, visibility_alpha): the camera and the whole capsule stand above
+// the highest terrain drawn by more than a straight line between them sags below the Earth's
+// curve, so every ray from the camera to the capsule passes above the terrain, and beyond it a
+// ray needs as many metres as it has height to spare to come down to the terrain. A few metres
+// and 1e-4 of the distance spare for the model (the ellipsoid's curvature, float rounding).
+bool above_all_terrain(vec3 x1, vec3 x2, float radius) {
+  float far_m = max(length(x1), length(x2)) + radius;
+  float sag = far_m * far_m / (8.0 * kEarthRadiusMinM);
+  vec3 axis = x2 - x1;
+  float lowest = min(height_above_camera(x1), height_above_camera(x2)) - radius -
+                 dot(axis, axis) / (8.0 * kEarthRadiusMinM);
+  float top = u_terrain_top_m - u_camera_height_m + 2.0 + 1.0e-4 * far_m;
+  float margin = 0.2 + 2.0 * far_m * far_m * u_depth_step_k;
+  return -sag > top && lowest - sag > top + margin;
+}
 
 void main() {
   // Four vertices per capsule (corner = end * 2 + side), indexed as triangles (0 1 2) (2 1 3):
@@ -69,6 +105,12 @@ void main() {
     v_end_plane = vec3(0.0);
   }
 
+  if (u_overlay_split != 0 && above_all_terrain(x1, x2, radius) != (u_overlay_split == 2)) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // the other draw's capsule
+    v_position = x1;
+    return;
+  }
+
   vec3 here = end == 0 ? x1 : x2;
   vec3 there = end == 0 ? x2 : x1;
   vec3 to_eye;
@@ -105,6 +147,9 @@ void main() {
   }
   float outward = end == 0 ? -1.0 : 1.0;
   vec3 position = here + along * (outward * reach) + sideways * (side * reach);
+  // The overlay's fringe draw writes no depth of its own: its quad stands a radius further away
+  // along each corner's ray (the same pixels), about where the fringe lies (track_fringe.frag).
+  if (u_overlay_split == 2) position *= 1.0 + radius / max(length(position), 1.0e-6);
   v_position = position;
   gl_Position = u_view_projection * vec4(position, 1.0);
 }

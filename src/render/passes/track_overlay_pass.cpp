@@ -1,0 +1,174 @@
+// The track pass's overlay (track_pass.hpp): its target, the curtains, the hits the terrain
+// hides and the fringe, drawn after the visible tracks from their depth; blended over the frame.
+#include <array>
+
+#include "render/passes/track_pass.hpp"
+#include "render/passes/track_pass_draws.hpp"
+
+namespace trailray::render {
+
+using namespace track_pass_detail;  // NOLINT: this file is the pass's own
+
+TrackOverlayTarget::TrackOverlayTarget(int width, int height) : frame_(width, height) {}
+
+void TrackOverlayTarget::bind_with_depth_of(const GBuffer& gbuffer) const {
+  bind_and_clear();
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, gbuffer.framebuffer_id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, frame_.framebuffer_id());
+  glBlitFramebuffer(0, 0, gbuffer.width(), gbuffer.height(), 0, 0, width(), height(), GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  frame_.bind();
+}
+
+void TrackOverlayTarget::bind_and_clear() const {
+  frame_.bind();
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClearDepthf(1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void TrackPass::draw_curtains(const GBuffer& gbuffer, const scene::Camera& camera, const SceneLighting& lighting,
+                              std::span<const TrackDraw> tracks, const TrackSceneSettings& settings,
+                              const std::array<float, 16>& view_projection) const {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  curtain_.use();
+  curtain_.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
+  curtain_.set_int("u_points", static_cast<int>(kPointsUnit));
+  curtain_.set_int("u_blocks", static_cast<int>(kBlocksUnit));
+  curtain_.set_int("u_drops", static_cast<int>(kDropsUnit));
+  curtain_.set_int("u_colormap", static_cast<int>(kColormapUnit));
+  curtain_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+  curtain_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  curtain_.set_float("u_curtain_alpha", settings.curtain_alpha);
+  const glm::vec3 eye(camera.position());
+  set_vec3(curtain_, "u_eye_ecef", eye);
+  set_vec3(curtain_, "u_sun_radiance", lighting.sun_radiance);
+  set_vec3(curtain_, "u_sky_radiance", lighting.sky_radiance);
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw) || !draw.buffer->has_drops()) continue;
+    set_color_uniforms(curtain_, draw, settings);
+    bind_texture(kDropsUnit, draw.buffer->drops());
+    draw_segments(curtain_, *draw.buffer);
+  }
+  glDisable(GL_BLEND);
+}
+
+void TrackPass::prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target,
+                                      const scene::Camera& camera) const {
+  target.bind_with_depth_of(gbuffer);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  prefill_.use();
+  prefill_.set_int("u_distance", static_cast<int>(kFrameDistanceUnit));
+  prefill_.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+  prefill_.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  prefill_.set_float("u_depth_step_k", depth_step_k(camera));
+  bind_texture(kFrameDistanceUnit, gbuffer.distance());
+  bind_texture(kTerrainDistanceUnit, terrain_copy_.distance);
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_LESS);
+  check_gl("copying the visible tracks' depth into the track overlay");
+}
+
+void TrackPass::set_overlay_uniforms(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
+                                     const SceneLighting& lighting, const TrackSceneSettings& settings,
+                                     const std::array<float, 16>& view_projection) const {
+  const scene::GeoPosition& at = camera.geodetic();
+  const glm::vec3 up(scene::enu_axes_at(at.lat_deg, at.lon_deg).up);
+  const glm::vec3 sun(glm::normalize(lighting.sun_direction_ecef));
+  program.use();
+  program.set_mat4("u_view_projection", std::span<const float, 16>(view_projection));
+  program.set_int("u_orthographic", 0);
+  program.set_float("u_margin_px", kFringeMarginPx);
+  program.set_int("u_colormap", static_cast<int>(kColormapUnit));
+  program.set_int("u_terrain_distance", static_cast<int>(kTerrainDistanceUnit));
+  program.set_int("u_packed_distance", gbuffer.packed_distance() ? 1 : 0);
+  program.set_int("u_terrain_normal", static_cast<int>(kTerrainNormalUnit));
+  const std::array<float, 9> rotation = to_float_mat3(camera.view_rotation());
+  program.set_mat3("u_view_rotation", std::span<const float, 9>(rotation));
+  program.set_int("u_show_occluded", settings.occlusion.enabled ? 1 : 0);
+  program.set_float("u_occluded_alpha", settings.occlusion.alpha);
+  program.set_vec2("u_fade", settings.occlusion.fade_near_m, settings.occlusion.fade_far_m);
+  program.set_float("u_depth_step_k", depth_step_k(camera));
+  program.set_float("u_camera_height_m", static_cast<float>(at.height_m));
+  program.set_float("u_terrain_top_m", static_cast<float>(settings.terrain_top_m.value_or(0.0)));
+  set_vec3(program, "u_sun", sun);
+  set_vec3(program, "u_up", up);
+  set_vec3(program, "u_sun_radiance", lighting.sun_radiance);
+  set_vec3(program, "u_sky_radiance", lighting.sky_radiance);
+  set_width_uniforms(program, camera);
+}
+
+void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
+                             const SceneLighting& lighting, std::span<const TrackDraw> tracks,
+                             const TrackSceneSettings& settings) const {
+  // Split: the visible tracks' depth first, so that the capsules above all the terrain need only
+  // their fringe (track_pass.hpp); else every capsule's own trace writes it.
+  const bool split = settings.terrain_top_m.has_value();
+  if (split) {
+    prefill_overlay_depth(gbuffer, target, camera);
+  } else {
+    target.bind_and_clear();
+  }
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  const std::array<float, 16> view_projection = camera.view_projection_relative_to(camera.position());
+  // The terrain alone: draw_visible's copies (the G-buffer holds the tracks by now).
+  bind_texture(kTerrainDistanceUnit, terrain_copy_.distance);
+  bind_texture(kTerrainNormalUnit, terrain_copy_.normal);
+  bind_colormap(settings.colormap, kColormapUnit);
+  glBindVertexArray(quads_.id());
+
+  // Curtains first, blended, so that a tube in front of a wall replaces it and one behind is
+  // hidden by its depth.
+  if (settings.curtain) draw_curtains(gbuffer, camera, lighting, tracks, settings, view_projection);
+
+  // A dashed draw's gaps show what is behind them: its capsules are all traced.
+  const auto split_of = [&](const TrackDraw& draw) { return split && draw.shape.dash_px <= 0.0f; };
+  set_overlay_uniforms(overlay_, gbuffer, camera, lighting, settings, view_projection);
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw)) continue;
+    overlay_.set_int("u_overlay_split", split_of(draw) ? 1 : 0);
+    set_color_uniforms(overlay_, draw, settings);
+    set_shape_uniforms(overlay_, draw, settings);
+    draw_segments(overlay_, *draw.buffer, draw.shape.capsules);
+  }
+  if (split) {
+    set_overlay_uniforms(fringe_, gbuffer, camera, lighting, settings, view_projection);
+    fringe_.set_int("u_overlay_split", 2);
+    for (const TrackDraw& draw : tracks) {
+      if (!drawable(draw) || !split_of(draw)) continue;
+      set_color_uniforms(fringe_, draw, settings);
+      set_shape_uniforms(fringe_, draw, settings);
+      draw_segments(fringe_, *draw.buffer, draw.shape.capsules);
+    }
+  }
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glActiveTexture(GL_TEXTURE0);
+  check_gl("drawing the track overlay");
+}
+
+void TrackPass::blend_overlay(const TrackOverlayTarget& target) const {
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  blend_.use();
+  blend_.set_int("u_overlay", 0);
+  bind_texture(0, target.color());
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  check_gl("blending the track overlay");
+}
+
+}  // namespace trailray::render
