@@ -62,7 +62,7 @@ bool above_all_terrain(vec3 x1, vec3 x2, float radius) {
   float lowest = min(height_above_camera(x1), height_above_camera(x2)) - radius -
                  dot(axis, axis) / (8.0 * kEarthRadiusMinM);
   float top = u_terrain_top_m - u_camera_height_m + 2.0 + 1.0e-4 * far_m;
-  float margin = 0.2 + 2.0 * far_m * far_m * u_depth_step_k;
+  float margin = 0.1 + 1.01 * far_m * far_m * u_depth_step_k;  // visibility_alpha's 0.07 + t * t * k
   return -sag > top && lowest - sag > top + margin;
 }
 
