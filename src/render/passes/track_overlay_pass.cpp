@@ -70,7 +70,9 @@ void TrackPass::prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlay
   bind_texture(kFrameDistanceUnit, gbuffer.distance());
   bind_texture(kTerrainDistanceUnit, terrain_copy_.distance);
   glBindVertexArray(empty_.id());
+  glDepthRangef(1.0f, 1.0f);  // the triangle's depth: far
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthRangef(0.0f, 1.0f);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_LESS);
   check_gl("copying the visible tracks' depth into the track overlay");

@@ -18,6 +18,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float d = read_distance(u_distance, pixel, u_packed_distance);
   float terrain = read_distance(u_terrain_distance, pixel, u_packed_distance);
+  // Kept: the copy's depth stays. Else the triangle's own depth, far (TrackPass sets the depth
+  // range to 1..1): no gl_FragDepth, so the depth write needs no late test.
   if (d > 0.0 && (terrain <= 0.0 || d < terrain - (0.07 + d * d * u_depth_step_k))) discard;
-  gl_FragDepth = 1.0;
 }
