@@ -1,13 +1,53 @@
 // The track pass's overlay (track_pass.hpp): its target, the curtains, the hits the terrain
 // hides and the fringe, drawn after the visible tracks from their depth; blended over the frame.
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
+#include <span>
 
 #include "render/passes/track_pass.hpp"
 #include "render/passes/track_pass_draws.hpp"
 
 namespace trailray::render {
-
 using namespace track_pass_detail;  // NOLINT: this file is the pass's own
+
+namespace {
+
+// The pixels the tracks' capsules can cover, as GL's scissor box (x, y from the bottom left, width,
+// height): the union of the images of a cube around each track's bounding sphere, grown by the
+// tube's radius in metres and, in pixels, by its width, a pin's lift and the fringe. Nullopt: all
+// of the frame (a cube reaching behind the camera).
+std::optional<std::array<int, 4>> tracks_scissor(std::span<const TrackDraw> tracks, const scene::Camera& camera,
+                                                 const TrackSceneSettings& settings) {
+  const scene::Lens& lens = camera.lens();
+  double min_x = lens.width_px, min_y = lens.height_px, max_x = 0.0, max_y = 0.0;
+  const scene::CameraAxes& axes = camera.axes();
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw)) continue;
+    const scene::TrackWidth width = draw.shape.width.value_or(settings.width);
+    const bool in_pixels = width.unit == scene::TrackWidth::Unit::pixels;
+    const double reach_m = draw.buffer->bounding_radius_m() + (in_pixels ? 0.0 : width.value) + draw.shape.lift_m;
+    const double reach_px = (in_pixels ? width.value : 0.0) + draw.shape.min_width_px.value_or(settings.min_width_px) +
+                            draw.shape.lift_px + 4.0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::dvec3 p = draw.buffer->bounding_centre_ecef() +
+                           reach_m * ((corner & 1 ? 1.0 : -1.0) * axes.forward +
+                                      (corner & 2 ? 1.0 : -1.0) * axes.right + (corner & 4 ? 1.0 : -1.0) * axes.up);
+      const auto at = camera.project(p);
+      if (!at || at->depth_m <= camera.depth_range().near_m) return std::nullopt;
+      min_x = std::min(min_x, at->x_px - reach_px), max_x = std::max(max_x, at->x_px + reach_px);
+      min_y = std::min(min_y, at->y_px - reach_px), max_y = std::max(max_y, at->y_px + reach_px);
+    }
+  }
+  const auto clamp_to = [](double v, double limit) { return static_cast<int>(std::clamp(v, 0.0, limit)); };
+  const int x0 = clamp_to(std::floor(min_x), lens.width_px), x1 = clamp_to(std::ceil(max_x), lens.width_px);
+  const int y0 = clamp_to(std::floor(min_y), lens.height_px), y1 = clamp_to(std::ceil(max_y), lens.height_px);
+  // Image rows run down, GL's window rows up.
+  return std::array<int, 4>{x0, static_cast<int>(lens.height_px) - y1, std::max(x1 - x0, 0), std::max(y1 - y0, 0)};
+}
+
+}  // namespace
 
 TrackOverlayTarget::TrackOverlayTarget(int width, int height) : frame_(width, height) {}
 
@@ -56,7 +96,8 @@ void TrackPass::draw_curtains(const GBuffer& gbuffer, const scene::Camera& camer
 }
 
 void TrackPass::prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target,
-                                      const scene::Camera& camera) const {
+                                      const scene::Camera& camera, std::span<const TrackDraw> tracks,
+                                      const TrackSceneSettings& settings) const {
   target.bind_with_depth_of(gbuffer);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);
@@ -71,7 +112,15 @@ void TrackPass::prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlay
   bind_texture(kTerrainDistanceUnit, terrain_copy_.distance);
   glBindVertexArray(empty_.id());
   glDepthRangef(1.0f, 1.0f);  // the triangle's depth: far
+  // Only where capsules can be (a fullscreen pass costs a CPU rasterizer milliseconds): elsewhere
+  // the copy keeps the terrain's depth, which no capsule fragment is tested against.
+  const auto scissor = tracks_scissor(tracks, camera, settings);
+  if (scissor) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor((*scissor)[0], (*scissor)[1], (*scissor)[2], (*scissor)[3]);
+  }
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
   glDepthRangef(0.0f, 1.0f);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_LESS);
@@ -114,7 +163,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   // their fringe (track_pass.hpp); else every capsule's own trace writes it.
   const bool split = settings.terrain_top_m.has_value();
   if (split) {
-    prefill_overlay_depth(gbuffer, target, camera);
+    prefill_overlay_depth(gbuffer, target, camera, tracks, settings);
   } else {
     target.bind_and_clear();
   }

@@ -155,8 +155,8 @@ class TrackPass {
   mutable TerrainCopy terrain_copy_;
   void copy_terrain(const GBuffer& gbuffer) const;
   // The overlay's depth from the G-buffer's visible tracks (overlay_prefill.frag).
-  void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target,
-                             const scene::Camera& camera) const;
+  void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
+                             std::span<const TrackDraw> tracks, const TrackSceneSettings& settings) const;
   // The uniforms the overlay's two programs share.
   void set_overlay_uniforms(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
                             const SceneLighting& lighting, const TrackSceneSettings& settings,
