@@ -44,6 +44,7 @@ std::optional<double> parse_hms(std::string_view text) {
     total += *number * unit;
     text.remove_prefix(n);
   }
+  if (!std::isfinite(total)) return std::nullopt;  // hundreds of digits: no length at all
   return total;
 }
 
@@ -105,7 +106,7 @@ Result<double> parse_film_speed(std::string_view text) {
   std::string_view t = track::trim(text);
   if (!t.empty() && (t.back() == 'x' || t.back() == 'X')) t.remove_suffix(1);
   const auto v = track::parse_double(t);
-  if (!v || !(*v > 0.0)) return {std::nullopt, fmt::format("--speed: '{}' is not a time factor such as 50x", text)};
+  if (!v || !(*v > 0.0) || !std::isfinite(*v)) return {std::nullopt, fmt::format("--speed: '{}' is not a time factor such as 50x", text)};
   return {*v, {}};
 }
 
