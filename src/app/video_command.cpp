@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <memory>
 #include <vector>
 
 #include "app/airspace_options.hpp"
+#include "app/interrupt_guard.hpp"
 #include "app/output_file.hpp"
 #include "app/render_report.hpp"
 #include "app/scene_setup.hpp"
@@ -23,28 +23,6 @@
 
 namespace trailray::app {
 namespace {
-
-volatile std::sig_atomic_t interrupted = 0;
-extern "C" void on_interrupt(int) { interrupted = 1; }
-
-// Ctrl-C asks the frame loop to stop (after the frame it is drawing) instead of killing the
-// process, so the temporary file is removed; the previous handler is back afterwards.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    interrupted = 0;
-    previous_int_ = std::signal(SIGINT, on_interrupt);
-    previous_term_ = std::signal(SIGTERM, on_interrupt);
-  }
-  ~InterruptGuard() {
-    std::signal(SIGINT, previous_int_);
-    std::signal(SIGTERM, previous_term_);
-  }
-
- private:
-  void (*previous_int_)(int) = SIG_DFL;
-  void (*previous_term_)(int) = SIG_DFL;
-};
 
 // A folder of frames: an earlier film's frames are replaced (all of them) only with --force.
 void check_frames_dir(const std::string& dir, bool force) {
@@ -137,7 +115,7 @@ int run_video(const VideoArgs& a) {
                                                                                         clock.timing.fps, a.crf}));
   const auto started = std::chrono::steady_clock::now();
   while (!recorder.done()) {
-    if (interrupted != 0) {
+    if (interrupt_requested()) {
       recorder.cancel();  // removes the temporary file
       diagnostics.progress_done();
       diagnostics.error(fmt::format("interrupted after {} of {} frames: {} not written", recorder.progress().done,

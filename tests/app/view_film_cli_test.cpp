@@ -121,6 +121,30 @@ TEST(ViewFilmCli, TheWindowShowsTheProgressAndCancelLeavesNoFile) {
   EXPECT_GT(yellow, 8u) << "no progress bar in " << panel;
 }
 
+// Ctrl-C in the terminal while a film records: the viewer stops between frames, cancels the film
+// (no file, no temporary) and exits with 130. Only trailray gets the signal, not the X server.
+TEST(ViewFilmCli, CtrlCWhileRecordingLeavesNoFile) {
+  FilmEnv env;
+  const std::string out = env.file("long.mp4");
+  std::string view = env.prefix();
+  view.replace(view.find(" render "), 8, " view ");
+  const std::string inner = view + shell_quote(env.hike()) + kStyle + " --size 320x180 --script " +
+                            shell_quote(env.script("film-size 160 90\nstart-film " + out + " 600\nwait 100000\n")) +
+                            " & pid=$!; dir=" + shell_quote(env.home.path().string()) +
+                            // Once the film's temporary file is there (the film has started), the
+                            // signal; then at most 20 s for the viewer to end before a kill.
+                            "; i=0; while ! ls -a \"$dir\" | grep -q '[.]tmp-' && [ $i -lt 300 ]; do sleep 0.2; "
+                            "i=$((i+1)); done; kill -INT $pid; i=0; while kill -0 $pid 2>/dev/null && [ $i -lt 100 ]; "
+                            "do sleep 0.2; i=$((i+1)); done; kill -KILL $pid 2>/dev/null; wait $pid; "
+                            "echo \"exit status $?\"";
+  const auto r = run_command(xvfb_command_prefix(env.file("Xauthority")) + "sh -c " + shell_quote(inner) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("exit status 130"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cancelled after"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  expect_no_temporary_files(env);
+}
+
 TEST(ViewFilmCli, AnExistingFilmIsNotOverwritten) {
   FilmEnv env;
   const std::string out = env.file("earlier.mp4");

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numeric>
 
+#include "app/interrupt_guard.hpp"
 #include "app/view/legend_overlay.hpp"
 #include "app/view/profiler_table.hpp"
 #include "app/view/viewer_overlay.hpp"
@@ -259,14 +260,18 @@ void ViewerApp::print_frame_times(const std::vector<double>& all_ms, const std::
 
 int ViewerApp::run() {
   const bool scripted = options_.frames > 0 || !options_.script.empty() || !options_.screenshot.empty();
+  // Ctrl-C in the terminal (or SIGTERM) closes the window as its close button does: a film
+  // being recorded is cancelled and leaves no temporary file; the exit status is then 130.
+  const InterruptGuard guard;
   if (!scripted) {
     Clock::time_point last = Clock::now();
-    while (!window_.should_close()) {
+    while (!window_.should_close() && !interrupt_requested()) {
       const Clock::time_point now = Clock::now();
       frame(std::chrono::duration<double>(now - last).count(), false);
       last = now;
     }
-    return 0;
+    cancel_film();
+    return interrupt_requested() ? 130 : 0;
   }
   // The script is read first: a typo fails before any frame is drawn.
   const std::optional<ViewScript> script =
@@ -275,7 +280,7 @@ int ViewerApp::run() {
   if (options_.frames > 0) {
     // Timed frames, as a person would see them (tiles stream in meanwhile), to standard error.
     std::vector<double> all_ms, settled_ms;
-    for (int i = 0; i < options_.frames; ++i) {
+    for (int i = 0; i < options_.frames && !interrupt_requested(); ++i) {
       const Clock::time_point start = Clock::now();
       frame(0.0, true);
       const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -285,6 +290,10 @@ int ViewerApp::run() {
     print_frame_times(all_ms, settled_ms);
   }
   if (script) run_script(*script);
+  if (interrupt_requested()) {
+    cancel_film();
+    return 130;
+  }
   if (!options_.screenshot.empty()) screenshot(options_.screenshot);
   return 0;
 }

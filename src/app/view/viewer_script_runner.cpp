@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/interrupt_guard.hpp"
 #include "app/view/tooltip.hpp"
 #include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
@@ -13,10 +14,12 @@
 namespace trailray::app::view {
 
 void ViewerApp::run_script(const ViewScript& script) {
+  // Ctrl-C ends the script between frames (run() then cancels a film being recorded).
   for (const ScriptCommand& c : script.commands) {
+    if (interrupt_requested()) return;
     const int frames = run_script_command(c, script);
     std::fflush(stdout);
-    for (int i = 0; i < frames; ++i) frame(0.0, true);
+    for (int i = 0; i < frames && !interrupt_requested(); ++i) frame(0.0, true);
   }
 }
 
@@ -142,7 +145,7 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
           fail(e.what());
         }
         if (c.kind == Kind::record_film) {
-          while (film_) frame(0.0, true);  // each frame draws some of the film
+          while (film_ && !interrupt_requested()) frame(0.0, true);  // each frame draws some of the film
           if (!film_error_.empty()) fail(film_error_);
         }
         break;
