@@ -19,6 +19,7 @@ ImU32 to_imgui(const glm::vec3& srgb, float alpha = 1.0f) {
 constexpr float kMargin = 12.0f, kPadding = 8.0f;
 const ImU32 kPanel = IM_COL32(20, 22, 26, 240);
 const ImU32 kText = IM_COL32(255, 255, 255, 255);
+const ImU32 kQuietText = IM_COL32(200, 202, 206, 255);  // "+N more", as in the rendered key
 
 // Text measured with the interface's font, as ImGui::CalcTextSize does inside a frame, but also
 // before the first one (the viewer frames its first view before it draws anything).
@@ -51,11 +52,15 @@ struct OverlayLayout {
   float bar_width = 0.0f, bar_height = 0.0f;
   float legend_width = 0.0f, legend_height = 0.0f;  // the colour bar's panel
   float swatch = 0.0f, key_width = 0.0f, key_height = 0.0f, key_row = 0.0f;
+  // The names listed, and the rest counted in a last "+N more" row (as the rendered key does): a
+  // season of tracks must not list a thousand names down past the window.
+  std::size_t listed = 0, hidden = 0;
+  std::string more;
   float width = 0.0f, height = 0.0f;  // the whole window
 };
 
 OverlayLayout overlay_layout(const std::optional<scene::ColorLegend>& legend,
-                             const std::vector<scene::TrackKeyEntry>& key, float display_width,
+                             const std::vector<scene::TrackKeyEntry>& key, float display_width, float display_height,
                              const OverlayText& text) {
   OverlayLayout l;
   l.line = text.size;
@@ -68,12 +73,20 @@ OverlayLayout overlay_layout(const std::optional<scene::ColorLegend>& legend,
     l.width = std::max(l.width, l.legend_width);
   }
   if (!key.empty()) {
-    float names = 0.0f;
-    for (const auto& entry : key) names = std::max(names, text.width(entry.name));
     l.swatch = 1.6f * l.line;
     l.key_row = l.line * 1.2f;
-    l.key_width = names + l.swatch + 3.0f * kPadding;
-    l.key_height = static_cast<float>(key.size()) * l.key_row + 2.0f * kPadding;
+    // Rows that fit in what the window leaves (at least one), never more than the rendered key's.
+    const float room = display_height - 2.0f * kMargin - l.height - 2.0f * kPadding;
+    const std::size_t fit = static_cast<std::size_t>(std::max(1.0f, std::floor(room / l.key_row)));
+    const std::size_t rows = std::min(fit, scene::kMaxTrackKeyRows);
+    l.listed = key.size() <= rows ? key.size() : std::max<std::size_t>(rows, 2) - 1;
+    l.hidden = key.size() - l.listed;
+    float names = 0.0f;
+    for (std::size_t i = 0; i < l.listed; ++i) names = std::max(names, text.width(key[i].name));
+    if (l.hidden > 0) l.more = "+" + std::to_string(l.hidden) + " more";
+    l.key_width = std::max(names + l.swatch + 3.0f * kPadding, text.width(l.more) + 2.0f * kPadding);
+    const std::size_t row_count = l.listed + (l.hidden > 0 ? 1 : 0);
+    l.key_height = static_cast<float>(row_count) * l.key_row + 2.0f * kPadding;
     l.height += l.key_height;
     l.width = std::max(l.width, l.key_width);
   }
@@ -83,10 +96,10 @@ OverlayLayout overlay_layout(const std::optional<scene::ColorLegend>& legend,
 }  // namespace
 
 scene::PixelRect legend_overlay_rect(const std::optional<scene::ColorLegend>& legend,
-                                      const std::vector<scene::TrackKeyEntry>& key, float display_width,
-                                      float display_height) {
+                                     const std::vector<scene::TrackKeyEntry>& key, float display_width,
+                                     float display_height) {
   if (!legend && key.empty()) return {};
-  const OverlayLayout l = overlay_layout(legend, key, display_width, overlay_text());
+  const OverlayLayout l = overlay_layout(legend, key, display_width, display_height, overlay_text());
   // Whole pixels that cover the window.
   const float top = display_height - kMargin - l.height;
   return {static_cast<int>(std::floor(kMargin)), static_cast<int>(std::floor(top)),
@@ -98,7 +111,7 @@ void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
                          const std::vector<scene::TrackKeyEntry>& key) {
   if (!legend && key.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const OverlayLayout l = overlay_layout(legend, key, display.x, overlay_text());
+  const OverlayLayout l = overlay_layout(legend, key, display.x, display.y, overlay_text());
   // A window of its own (no title, sized to its content), first in the bottom-left corner: it
   // stacks with the panels and can be moved out of their way.
   ImGui::SetNextWindowPos(ImVec2(kMargin, display.y - kMargin), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
@@ -149,13 +162,15 @@ void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
     const ImVec2 corner(origin.x, top);
     draw->AddRectFilled(corner, ImVec2(corner.x + l.key_width, corner.y + l.key_height), kPanel, 6.0f);
     float y = corner.y + kPadding;
-    for (const auto& entry : key) {
+    for (std::size_t i = 0; i < l.listed; ++i) {
+      const scene::TrackKeyEntry& entry = key[i];
       const float mid = y + 0.5f * line;
       draw->AddLine(ImVec2(corner.x + kPadding, mid), ImVec2(corner.x + kPadding + l.swatch, mid),
                     to_imgui(entry.color_srgb), 0.35f * line);
       draw->AddText(ImVec2(corner.x + 2.0f * kPadding + l.swatch, y), kText, entry.name.c_str());
       y += l.key_row;
     }
+    if (l.hidden > 0) draw->AddText(ImVec2(corner.x + kPadding, y), kQuietText, l.more.c_str());
   }
   ImGui::Dummy(ImVec2(l.width, l.height));  // the window's size
   ImGui::End();

@@ -244,6 +244,33 @@ TEST_F(HeadlessImGui, LegendOverlayRectIsTheLegendWindow) {
   EXPECT_TRUE(legend_overlay_rect(std::nullopt, {}, 1280.0f, 720.0f).empty());
 }
 
+// A season of tracks: the key lists at most the rendered key's rows, the last one "+N more", and
+// stays inside a small window.
+TEST_F(HeadlessImGui, LegendOverlayKeyOfManyTracksEndsInMore) {
+  std::vector<scene::TrackKeyEntry> key;
+  for (int i = 0; i < 1000; ++i) key.push_back({"flight " + std::to_string(i), {1.0f, 0.0f, 0.0f}});
+  const std::vector<scene::TrackKeyEntry> few(key.begin(), key.begin() + 3);
+  const scene::PixelRect three = legend_overlay_rect(std::nullopt, few, 1280.0f, 720.0f);
+  const scene::PixelRect many = legend_overlay_rect(std::nullopt, key, 1280.0f, 720.0f);
+  // Rows are the same height: the many-track key has kMaxTrackKeyRows of them.
+  const double row = (many.height - three.height) / static_cast<double>(scene::kMaxTrackKeyRows - 3);
+  EXPECT_GT(row, 10.0);
+  EXPECT_NEAR(three.height - 3.0 * row, many.height - scene::kMaxTrackKeyRows * row, 1.0);
+  // A window too low for twelve rows gets fewer, still inside it.
+  const scene::PixelRect low = legend_overlay_rect(std::nullopt, key, 1280.0f, 200.0f);
+  EXPECT_GE(low.y, 0);
+  EXPECT_LE(low.bottom(), 200);
+  for (int i = 0; i < 3; ++i) {
+    ImGui::NewFrame();
+    draw_legend_overlay(std::nullopt, key);
+    ImGui::Render();
+  }
+  const ImGuiWindow* window = ImGui::FindWindowByName("Legend");
+  ASSERT_NE(window, nullptr);
+  EXPECT_NEAR(window->Pos.y + window->Size.y, 720.0 - 12.0, 1.0);
+  EXPECT_NEAR(window->Size.y, many.height, 1.0);
+}
+
 TEST(ProfilerTable, RowsForPassesThatRanAndFps) {
   render::FrameProfiler profiler(render::GlCapabilities{}, 4);  // no timer query: CPU times only
   profiler.begin_frame();
