@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/flight_report.hpp"
+#include "app/ordered_jobs.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
@@ -49,8 +50,8 @@ int run_flight(const FlightArgs& a) {
   nlohmann::json doc;
   doc["files"] = nlohmann::json::array();
   int failed = 0;
-  for (std::size_t i = 0; i < a.files.size(); ++i) {
-    const FileFlights f = analyse_flight_file(a.files[i], a.read, options, checked);
+  const auto compute = [&](std::size_t i) { return analyse_flight_file(a.files[i], a.read, options, checked); };
+  const auto consume = [&](std::size_t i, FileFlights& f) {
     for (const auto& w : f.warnings) diagnostics.warning(w);
     if (f.error) {
       diagnostics.error(*f.error);
@@ -64,7 +65,10 @@ int run_flight(const FlightArgs& a) {
       fmt::print("{}{}", i > 0 ? "\n" : "", flight_file_text(f, checked));
       std::fflush(stdout);
     }
-  }
+  };
+  OrderedJobsOptions jobs;
+  jobs.threads = file_job_threads(a.files);
+  run_ordered_jobs<FileFlights>(a.files.size(), compute, consume, jobs);
   if (a.json) {
     doc["settings"] = flight_settings_json(options);
     if (task) doc["task"] = task_json(task->path, task->task, task->distances, {});

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/ordered_jobs.hpp"
 #include "app/stats_report.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
@@ -28,9 +29,8 @@ int run_stats(const StatsArgs& a) {
   nlohmann::json doc;
   doc["files"] = nlohmann::json::array();
   int failed = 0;
-  for (std::size_t i = 0; i < a.files.size(); ++i) {
-    diagnostics.progress(fmt::format("[{}/{}] {}", i + 1, a.files.size(), a.files[i]));
-    FileStats f = compute_file_stats(a.files[i], a.track.read, a.track.analysis);
+  const auto compute = [&](std::size_t i) { return compute_file_stats(a.files[i], a.track.read, a.track.analysis); };
+  const auto consume = [&](std::size_t i, FileStats& f) {
     diagnostics.progress_done();
     for (const auto& w : f.warnings) diagnostics.warning(w);
     if (f.error) {
@@ -43,7 +43,13 @@ int run_stats(const StatsArgs& a) {
       fmt::print("{}{}", i > 0 ? "\n" : "", file_stats_table(f));
       std::fflush(stdout);
     }
-  }
+  };
+  OrderedJobsOptions jobs;
+  jobs.threads = file_job_threads(a.files);
+  jobs.progress = [&](std::size_t done, std::size_t count) {
+    diagnostics.progress(fmt::format("[{}/{}] files read", done, count));
+  };
+  run_ordered_jobs<FileStats>(a.files.size(), compute, consume, jobs);
   if (a.json) std::cout << doc.dump(2) << '\n';
   if (failed > 0 && a.files.size() > 1)
     diagnostics.error(fmt::format("{} of {} files could not be read", failed, a.files.size()));

@@ -3,6 +3,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "run_command.hpp"
 #include "test_support.hpp"
 
@@ -111,6 +115,38 @@ TEST(StatsCli, ABadFileDoesNotStopTheOthers) {
   auto err = run_command("cat " + shell_quote(bad.str() + ".err"));
   EXPECT_NE(err.out.find("trailray: error: " + bad.str() + ":2:"), std::string::npos) << err.out;
   EXPECT_NE(err.out.find("mismatched tag"), std::string::npos) << err.out;
+}
+
+// Many files are read on all cores; the tables and the JSON come in the order of the files, the
+// same as each file alone.
+TEST(StatsCli, ManyFilesComeOutInTheirOrder) {
+  std::vector<std::unique_ptr<TempFile>> files;
+  std::string args;
+  for (int i = 0; i < 40; ++i) {
+    std::string gpx = kTwoSegments;
+    // Each file another track name and length, so that an order mix-up shows.
+    gpx.replace(gpx.find("Loop"), 4, "Loop " + std::to_string(i));
+    for (int k = 0; k < i % 3; ++k) gpx.replace(gpx.find("</trkseg></trk>"), 0, "<trkpt lat=\"46.2\" lon=\"7.0\"/>");
+    files.push_back(std::make_unique<TempFile>("many" + std::to_string(i) + ".gpx", gpx));
+    args += " " + shell_quote(files.back()->str());
+  }
+  auto r = run_command(binary() + " stats --json" + args);
+  ASSERT_EQ(r.status, 0);
+  const json doc = json::parse(r.out);
+  ASSERT_EQ(doc["files"].size(), 40u);
+  for (int i = 0; i < 40; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(doc["files"][i]["path"], files[i]->str());
+    EXPECT_EQ(doc["files"][i]["tracks"][0]["name"], "Loop " + std::to_string(i));
+    EXPECT_EQ(doc["files"][i]["tracks"][0]["raw"]["points"], 5 + i % 3);
+  }
+  auto table = run_command(binary() + " stats" + args);
+  ASSERT_EQ(table.status, 0);
+  std::size_t at = 0;
+  for (int i = 0; i < 40; ++i) {
+    at = table.out.find(files[i]->str(), at);
+    ASSERT_NE(at, std::string::npos) << i;
+  }
 }
 
 TEST(StatsCli, TableShowsCleanFiguresPerTrack) {
