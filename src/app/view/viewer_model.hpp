@@ -101,6 +101,10 @@ struct ViewerModel {
   std::vector<std::string> errors;  // files that could not be read etc., shown in a window
   track::AnalysisOptions analysis;  // how the tracks were cleaned and measured (range statistics)
   bool loading = false;             // terrain still streaming (the shell sets it)
+  // The track list's rows as last drawn (pixels, 0: not drawn yet), so that rows scrolled out of
+  // sight are skipped by their height: a season of 10,000 tracks costs the rows on screen only.
+  std::vector<float> track_row_heights;
+  std::string track_filter;  // the track list's filter (names containing it, any case)
 
   // The colour scale in use (cached).
   const std::optional<track::ValueRange>& color_range() { return color_range_.get(tracks, settings.style); }

@@ -5,10 +5,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
+#include <unordered_set>
 
 #include "app/view/film_panel.hpp"
 #include "app/view/flight_panel.hpp"
@@ -153,6 +156,29 @@ void waypoint_list(const ViewerModel& model, const std::string& source, scene::W
   ImGui::PopID();
 }
 
+bool contains_any_case(std::string_view text, std::string_view part) {
+  const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  return std::search(text.begin(), text.end(), part.begin(), part.end(),
+                     [&](char a, char b) { return lower(a) == lower(b); }) != text.end();
+}
+
+// Above a list of several tracks: show or hide all of them (those the filter lists), and the
+// filter itself.
+void many_tracks_controls(ViewerModel& model) {
+  const auto set_all = [&](bool visible) {
+    for (scene::Track& t : model.tracks.tracks())
+      if (model.track_filter.empty() || contains_any_case(t.name, model.track_filter)) t.visible = visible;
+  };
+  if (ImGui::SmallButton("show all")) set_all(true);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("hide all")) set_all(false);
+  ImGui::SameLine();
+  char filter[128] = {};
+  model.track_filter.copy(filter, sizeof(filter) - 1);
+  ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x));
+  if (ImGui::InputTextWithHint("##filter", "filter by name", filter, sizeof(filter))) model.track_filter = filter;
+}
+
 void track_list_window(ViewerModel& model, PanelActions& actions) {
   place(layout_now(model).tracks);
   if (!ImGui::Begin("Tracks", &model.settings.show_tracks)) {
@@ -162,8 +188,20 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
   if (model.loading) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "loading terrain...");
   if (model.tracks.empty())
     ImGui::TextDisabled("No track: drop a track file (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON) onto the window.");
+  if (model.tracks.size() > 1) many_tracks_controls(model);
+  model.track_row_heights.resize(model.tracks.size(), 0.0f);
+  // Rows out of sight (heights known from an earlier frame) are only stepped over.
+  const float view_top = ImGui::GetScrollY(), view_bottom = view_top + ImGui::GetWindowHeight();
+  const float spacing = ImGui::GetStyle().ItemSpacing.y;
   for (std::size_t i = 0; i < model.tracks.size(); ++i) {
     scene::Track& t = model.tracks[i];
+    if (!model.track_filter.empty() && !contains_any_case(t.name, model.track_filter)) continue;
+    const float y = ImGui::GetCursorPosY();
+    float& height = model.track_row_heights[i];
+    if (height > spacing && (y + height < view_top || y > view_bottom)) {
+      ImGui::Dummy(ImVec2(1.0f, height - spacing));
+      continue;
+    }
     ImGui::PushID(static_cast<int>(i));
     ImGui::Checkbox("##visible", &t.visible);
     ImGui::SameLine();
@@ -188,13 +226,14 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
       waypoint_list(model, t.source, scene::WaypointKind::Thermal, false, actions);
       ImGui::Unindent();
     }
+    height = ImGui::GetCursorPosY() - y;
   }
   // Files of waypoints alone, then the places of --labels, each file once.
   std::vector<std::pair<std::string, scene::WaypointKind>> files;
+  std::unordered_set<std::string_view> track_sources;
+  for (const scene::Track& t : model.tracks.tracks()) track_sources.insert(t.source);
   for (const scene::Waypoint& w : model.waypoints.points) {
-    const bool under_a_track = w.kind != scene::WaypointKind::Place &&
-                               std::any_of(model.tracks.tracks().begin(), model.tracks.tracks().end(),
-                                           [&](const scene::Track& t) { return t.source == w.source; });
+    const bool under_a_track = w.kind != scene::WaypointKind::Place && track_sources.count(w.source) > 0;
     const std::pair<std::string, scene::WaypointKind> file{w.source, w.kind};
     if (!under_a_track && std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
   }

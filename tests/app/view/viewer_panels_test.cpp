@@ -271,6 +271,41 @@ TEST_F(HeadlessImGui, LegendOverlayKeyOfManyTracksEndsInMore) {
   EXPECT_NEAR(window->Size.y, many.height, 1.0);
 }
 
+// A season in the track list: rows out of sight cost nothing (the draw data stays as small as a
+// short list's), the list is still as long as all rows, and the filter lists the matching names.
+TEST_F(HeadlessImGui, TrackListOfManyTracksDrawsTheRowsInSight) {
+  const auto model_of = [](int count) {
+    ViewerModel model;
+    model.settings.show_statistics = false;
+    const scene::Track t = ramp();
+    for (int i = 0; i < count; ++i) {
+      scene::Track copy = t;
+      copy.name = "flight " + std::to_string(i);
+      copy.source = "flight" + std::to_string(i) + ".gpx";
+      model.tracks.add(std::move(copy));
+    }
+    return model;
+  };
+  ViewerModel few = model_of(30), many = model_of(3000);
+  int few_vertices = 0, many_vertices = 0;
+  for (int i = 0; i < 3; ++i) few_vertices = frame(few);
+  for (int i = 0; i < 3; ++i) many_vertices = frame(many);
+  EXPECT_LT(many_vertices, few_vertices * 3 / 2);
+  const ImGuiWindow* list = ImGui::FindWindowByName("Tracks");
+  ASSERT_NE(list, nullptr);
+  // Every row still takes its place: the list is as long as 3000 rows.
+  const float row = many.track_row_heights[0];
+  EXPECT_GT(row, 10.0f);
+  EXPECT_GT(list->ContentSize.y, 2990.0f * row);
+
+  many.track_filter = "FLIGHT 299";  // any case: flight 299, 2990..2999
+  frame(many);
+  frame(many);
+  const ImGuiWindow* filtered = ImGui::FindWindowByName("Tracks");
+  EXPECT_LT(filtered->ContentSize.y, 40.0f * row);
+  EXPECT_GT(filtered->ContentSize.y, 11.0f * row);
+}
+
 TEST(ProfilerTable, RowsForPassesThatRanAndFps) {
   render::FrameProfiler profiler(render::GlCapabilities{}, 4);  // no timer query: CPU times only
   profiler.begin_frame();
