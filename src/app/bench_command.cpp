@@ -29,7 +29,24 @@ struct BenchArgs {
   std::string data = "../shared/data";
   bool json = false;
   std::string overlay = "split";
+  std::string many;  // TRACKSxPOINTS, empty: no many-track scenario
 };
+
+// `--many 10000x1000`: the many-track scenario's size (tracks x points per track).
+std::optional<std::pair<std::size_t, std::size_t>> parse_many(const std::string& text) {
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) return std::nullopt;
+  std::size_t tracks = 0, points = 0;
+  const char* begin = text.data();
+  const auto [t_end, t_ec] = std::from_chars(begin, begin + x, tracks);
+  const auto [p_end, p_ec] = std::from_chars(begin + x + 1, begin + text.size(), points);
+  if (t_ec != std::errc() || t_end != begin + x || p_ec != std::errc() || p_end != begin + text.size())
+    return std::nullopt;
+  if (tracks < 1 || points < 2 || tracks > kMaxBenchPoints || points > kMaxBenchPoints ||
+      tracks * points > 10 * kMaxBenchPoints)
+    return std::nullopt;
+  return std::pair{tracks, points};
+}
 
 std::string trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -112,6 +129,14 @@ int run_bench_tracks(const BenchArgs& a) {
   if (a.frames < 1 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 1..{}", a.frames, kMaxFrames));
 
+  std::optional<std::pair<std::size_t, std::size_t>> many;
+  if (!a.many.empty()) {
+    many = parse_many(a.many);
+    if (!many)
+      throw CLI::ValidationError("--many", fmt::format("'{}' is not TRACKSxPOINTS (e.g. 10000x1000, at most {} points "
+                                                       "a track and {} in all)",
+                                                       a.many, kMaxBenchPoints, 10 * kMaxBenchPoints));
+  }
   TerminalDiagnostics diagnostics;
   RealTracks real;
   if (a.data != "none") real = load_real_tracks(a.data);
@@ -128,7 +153,7 @@ int run_bench_tracks(const BenchArgs& a) {
                                bench.renderer(), lens.width_px, lens.height_px, a.frames, settings.warmup_frames,
                                settings.width_px, timing));
 
-  const std::size_t total = counts.value->size() + real.datasets.size();
+  const std::size_t total = counts.value->size() + (many ? 1 : 0) + real.datasets.size();
   std::vector<BenchRow> rows;
   std::optional<BenchRow> largest_walk;
   std::size_t index = 0;
@@ -147,6 +172,7 @@ int run_bench_tracks(const BenchArgs& a) {
     rows.push_back(std::move(row));
   };
   for (std::size_t points : *counts.value) measure(make_random_walk(points));
+  if (many) measure(make_many_walks(many->first, many->second));
   // A real track that cannot be framed or uploaded is reported and left out; the walks must run.
   for (const BenchDataset& d : real.datasets) try {
       measure(d);
@@ -231,6 +257,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                   "full: every capsule, to compare")
       ->check(CLI::IsMember({"split", "full"}))
       ->type_name("MODE");
+  cmd->add_option("--many", args->many,
+                  "Also draw TRACKS random walks of POINTS points each, spread over 30 km x 30 km, as one buffer\n"
+                  "of that many segments (e.g. 10000x1000: a season of tracks; the tube is left out above 2M points)")
+      ->type_name("TRACKSxPOINTS");
   cmd->callback([args, &exit_code] { exit_code = run_bench_tracks(*args); });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -25,23 +26,21 @@ void add_point(BenchDataset& d, scene::TrackPolyline& segment, const scene::GeoP
 
 }  // namespace
 
-BenchDataset make_random_walk(std::size_t points) {
-  BenchDataset d;
-  d.name = "walk-" + std::to_string(points);
-  d.kind = "random_walk";
-  d.ground_height_m = kWalkGround;
-  d.positions.reserve(points);
+namespace {
+
+// One walk of `points` points around (centre_east, centre_north) of the walks' frame, into `d`
+// as a segment of its own.
+void add_walk(BenchDataset& d, std::size_t points, std::uint64_t seed, double centre_east, double centre_north) {
   scene::TrackPolyline segment;
   segment.points_ecef.reserve(points);
-  // Seeded by the size: each size is its own walk, the same on every run.
-  std::mt19937_64 random(0x7261696c ^ points);
-  std::uniform_real_distribution<double> step_length(2.0, 6.0), unit(0.0, 1.0);
+  std::mt19937_64 random(seed);
   std::normal_distribution<double> turn(0.0, 0.25), climb_change(0.0, 0.08);
+  std::uniform_real_distribution<double> step_length(2.0, 6.0);
   const geo::LocalFrame frame(kWalkLat, kWalkLon, kWalkGround);
   double east = 0.0, north = 0.0, up = 0.0, heading = 0.0, climb = 0.0;
   for (std::size_t i = 0; i < points; ++i) {
     double lat = 0.0, lon = 0.0, height = 0.0;
-    frame.to_geodetic({east, north, up}, lat, lon, height);
+    frame.to_geodetic({centre_east + east, centre_north + north, up}, lat, lon, height);
     add_point(d, segment, {lat, lon, height});
     heading += turn(random);
     // Beyond the radius, turn back towards the centre (a walk that stays a few km across).
@@ -57,6 +56,33 @@ BenchDataset make_random_walk(std::size_t points) {
     if (up == 0.0 || up == kWalkMaxHeightM) climb = -0.5 * climb;
   }
   d.geometry.segments.push_back(std::move(segment));
+}
+
+}  // namespace
+
+BenchDataset make_random_walk(std::size_t points) {
+  BenchDataset d;
+  d.name = "walk-" + std::to_string(points);
+  d.kind = "random_walk";
+  d.ground_height_m = kWalkGround;
+  d.positions.reserve(points);
+  // Seeded by the size: each size is its own walk, the same on every run.
+  add_walk(d, points, 0x7261696c ^ points, 0.0, 0.0);
+  return d;
+}
+
+BenchDataset make_many_walks(std::size_t tracks, std::size_t points) {
+  BenchDataset d;
+  d.name = "walks-" + std::to_string(tracks) + "x" + std::to_string(points);
+  d.kind = "many_walks";
+  d.ground_height_m = kWalkGround;
+  d.positions.reserve(tracks * points);
+  std::mt19937_64 random(0x6d616e79 ^ (tracks * 1000003u + points));
+  std::uniform_real_distribution<double> place(-0.5 * kManyWalksSpanM, 0.5 * kManyWalksSpanM);
+  for (std::size_t t = 0; t < tracks; ++t) {
+    const double east = place(random), north = place(random);
+    add_walk(d, points, random(), east, north);
+  }
   return d;
 }
 
@@ -114,12 +140,14 @@ RealTracks load_real_tracks(const std::filesystem::path& data_dir) {
     const std::filesystem::path folder = data_dir / kind;
     if (!std::filesystem::is_directory(folder, error)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error))
-      if (entry.is_regular_file(error) && entry.path().extension() == std::string(".") + kind) files.push_back(entry.path());
+      if (entry.is_regular_file(error) && entry.path().extension() == std::string(".") + kind)
+        files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end(),
             [](const auto& a, const auto& b) { return a.filename().string() < b.filename().string(); });
   for (const std::filesystem::path& file : files)
-    if (std::string why = add_file(file, r.datasets); !why.empty()) r.skipped.push_back(file.filename().string() + ": " + why);
+    if (std::string why = add_file(file, r.datasets); !why.empty())
+      r.skipped.push_back(file.filename().string() + ": " + why);
   return r;
 }
 

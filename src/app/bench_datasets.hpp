@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.hpp"
 #include "render/passes/track_buffer.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::app {
 
@@ -18,7 +18,7 @@ struct BenchDataset {
   std::string kind;  // "random_walk" or "track"
   scene::TrackGeometry geometry;
   std::vector<scene::GeoPosition> positions;  // the same points, for framing
-  double ground_height_m = 0.0;                // the flat ground: the lowest point's height
+  double ground_height_m = 0.0;               // the flat ground: the lowest point's height
 
   std::size_t point_count() const { return positions.size(); }
 };
@@ -28,6 +28,13 @@ struct BenchDataset {
 // hike or a thermal flight), climbing and sinking by up to a metre a step within 0..1500 m above
 // the ground. The same `points` always gives the same walk.
 BenchDataset make_random_walk(std::size_t points);
+
+// `tracks` walks of `points` points each, one segment each in one geometry (a season of flights, a
+// city's runs): each a walk as make_random_walk makes them (its own seed), each around its own
+// centre, the centres spread uniformly over a square kManyWalksSpanM across, so they cross and
+// overlap as many tracks of one region do. The same sizes always give the same walks.
+inline constexpr double kManyWalksSpanM = 30000.0;
+BenchDataset make_many_walks(std::size_t tracks, std::size_t points);
 
 struct RealTracks {
   std::vector<BenchDataset> datasets;

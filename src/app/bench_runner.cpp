@@ -188,7 +188,9 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     row.ribbon_ms = m.ms.at("ribbon");
     gpu = gpu && m.gpu;
   }
-  {
+  if (dataset.point_count() > s.settings.max_tube_points) {
+    row.tube_ms = std::numeric_limits<double>::quiet_NaN();
+  } else {
     progress("tube");
     row.tube_radius_m = render::reference::radius_for_pixel_width(camera, row.view_distance_m, s.settings.width_px);
     const render::reference::TubeBuffer buffer(dataset.geometry, row.tube_radius_m);

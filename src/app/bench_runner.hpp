@@ -27,6 +27,9 @@ struct BenchSettings {
   // The overlay as the renderer draws it (only capsules the terrain may hide are traced), or
   // false: every capsule traced (TrackSceneSettings::terrain_top_m unset), to compare.
   bool split_overlay = true;
+  // The tube mesh takes 384 bytes a point (CPU copy and GPU): above this many points it is left
+  // out (its figures NaN), so that 10,000 tracks x 1,000 points do not ask for 8 GB.
+  std::size_t max_tube_points = 2'000'000;
 };
 
 struct BenchRow {

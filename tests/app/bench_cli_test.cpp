@@ -143,3 +143,23 @@ TEST(BenchCli, BadPointCountsFailNamingTheOption) {
     EXPECT_NE(r.out.find("is not a point count"), std::string::npos) << bad << ": " << r.out;
   }
 }
+
+// `--many`: the many-track scenario is one more row, its tracks as segments of one buffer.
+TEST(BenchCli, ManyTracksAreOneMoreRowWithATrackPerSegment) {
+  const auto r = run_command(bench() + "--points 2 --many 7x40 --size 64x36 --frames 1 --data none --json");
+  ASSERT_EQ(r.status, 0);
+  const json doc = json::parse(r.out);
+  ASSERT_EQ(doc["datasets"].size(), 2u);
+  const json& many = doc["datasets"][1];
+  EXPECT_EQ(many["name"], "walks-7x40");
+  EXPECT_EQ(many["kind"], "many_walks");
+  EXPECT_EQ(many["points"], 280);
+  EXPECT_EQ(many["segments"], 7);
+  EXPECT_TRUE(positive_finite(many["capsule_total_ms"]));
+  EXPECT_TRUE(positive_finite(many["tube_ms"]));
+  for (const std::string bad : {"7", "7x", "x40", "0x40", "7x1", "20000x20000"}) {
+    const auto e = run_command(bench() + "--many " + shell_quote(bad) + " --data none 2>&1");
+    EXPECT_EQ(e.status, 2) << bad << ": " << e.out;
+    EXPECT_NE(e.out.find("is not TRACKSxPOINTS"), std::string::npos) << bad << ": " << e.out;
+  }
+}
