@@ -52,7 +52,7 @@ int run_render(const RenderArgs& a) {
       scene::legend_clearance(scene::scene_legend_panel(lens.width_px, lens.height_px, scene), lens.height_px);
   const scene::Camera camera =
       initial_camera(camera_request, lens, tracks.tracks, tracks.recorded.lowest_or_sea_level(), sources.heights.get(),
-                     legend, std::nullopt, &tracks.waypoints);
+                     legend, std::nullopt, &tracks.waypoints, &diagnostics);
 
   render::GlContext gl = render::GlContext::create_headless();
   for (const std::string& line : gl.describe()) diagnostics.note(line);

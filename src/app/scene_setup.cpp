@@ -128,7 +128,7 @@ double ground_height_at(terrain::HeightSource* source, double lat, double lon) {
 scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const scene::TrackSet& tracks,
                              double neutral_ground_m, terrain::HeightSource* heights,
                              const scene::KeptClearCorner& keep_clear, const std::optional<scene::ImageArea>& area,
-                             const scene::WaypointSet* waypoints) {
+                             const scene::WaypointSet* waypoints, scene::Diagnostics* diagnostics) {
   if (request.placement || request.look_at) {
     const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
     double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
@@ -153,6 +153,23 @@ scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& le
     auto framed = scene::frame_points(points, framing);
     if (!framed.ok()) throw std::runtime_error("cannot frame the waypoints: " + framed.error);
     return framed.value->camera;
+  }
+  // Tracks far apart (a pilot's flights over several countries, or both sides of the Earth): the
+  // largest group of them near each other, as one view of them all would show little but the
+  // globe; the others are a fly-to away in the viewer, or a --camera away.
+  const std::vector<const scene::Track*> group = scene::largest_track_group(tracks);
+  std::size_t visible = 0;
+  for (const scene::Track& t : tracks.tracks()) visible += t.visible && t.point_count() > 0 ? 1 : 0;
+  if (!group.empty() && group.size() < visible) {
+    auto grouped = scene::frame_tracks(group, framing);
+    if (grouped.ok()) {
+      if (diagnostics != nullptr)
+        diagnostics->warning(
+            fmt::format("the tracks lie too far apart for one view: it shows the {} of {} within "
+                        "{:.0f} km of each other",
+                        group.size(), visible, scene::kTrackGroupRadiusM / 1000.0));
+      return grouped.value->camera;
+    }
   }
   auto framed = scene::frame_tracks(tracks, framing);
   if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);

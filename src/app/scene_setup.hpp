@@ -70,12 +70,13 @@ double sun_time(const std::optional<double>& given, const scene::RecordedPoints&
 // The first camera: the request's (never changed; on the terrain's height there, else on the
 // neutral ground), else one framing the visible tracks out of `keep_clear` (where the legend will
 // be drawn), into `area` of the image (nullopt: all of it); without a track point, the waypoints
-// (files of waypoints alone). Throws CLI::ValidationError for a camera the options make
-// impossible, std::runtime_error when nothing can be framed.
+// (files of waypoints alone). Tracks too far apart for one view: the largest group of them near
+// each other (scene::largest_track_group), with a warning to `diagnostics`. Throws CLI::ValidationError for a camera
+// the options make impossible, std::runtime_error when nothing can be framed.
 scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const scene::TrackSet& tracks,
                              double neutral_ground_m, terrain::HeightSource* heights,
                              const scene::KeptClearCorner& keep_clear = {},
                              const std::optional<scene::ImageArea>& area = std::nullopt,
-                             const scene::WaypointSet* waypoints = nullptr);
+                             const scene::WaypointSet* waypoints = nullptr, scene::Diagnostics* diagnostics = nullptr);
 
 }  // namespace trailray::app

@@ -285,6 +285,16 @@ class Framer {
   double ground_height_m_;
 };
 
+}  // namespace
+
+bool area_holds_centre(const ImageArea& a, const Lens& lens, double margin_fraction) {
+  const double mx = margin_fraction * (a.right_px - a.left_px), my = margin_fraction * (a.bottom_px - a.top_px);
+  const double cx = 0.5 * lens.width_px, cy = 0.5 * lens.height_px;
+  return a.left_px + mx < cx && a.right_px - mx > cx && a.top_px + my < cy && a.bottom_px - my > cy;
+}
+
+namespace {
+
 std::optional<std::string> options_problem(const FramingOptions& o) {
   if (auto problem = lens_problem(o.lens)) return problem;
   if (!(o.pitch_deg >= -90.0 && o.pitch_deg <= -5.0))
@@ -302,9 +312,8 @@ std::optional<std::string> options_problem(const FramingOptions& o) {
                         a.bottom_px <= o.lens.height_px && a.right_px - a.left_px >= 16.0 &&
                         a.bottom_px - a.top_px >= 16.0;  // also false for NaN
     // The framing moves the camera away until the points fit: their image shrinks toward the
-    // image's centre, so an area without the centre is never reached that way.
-    const double cx = 0.5 * o.lens.width_px, cy = 0.5 * o.lens.height_px;
-    const bool centred = a.left_px < cx && a.right_px > cx && a.top_px < cy && a.bottom_px > cy;
+    // image's centre, so an area whose margins leave out the centre is never reached that way.
+    const bool centred = area_holds_centre(a, o.lens, o.margin_fraction);
     if (!inside || !centred)
       return "framing area " + number(a.left_px) + "," + number(a.top_px) + " to " + number(a.right_px) + "," +
              number(a.bottom_px) + " px is not a rectangle of at least 16x16 px within the " +
@@ -424,6 +433,38 @@ Result<Framing> frame_tracks(const TrackSet& tracks, const FramingOptions& optio
   for (const Track& t : tracks.tracks())
     if (t.visible) visible.push_back(&t);
   return frame_tracks(visible, options);
+}
+
+std::vector<const Track*> largest_track_group(const TrackSet& tracks, double radius_m) {
+  std::vector<const Track*> with_points;
+  std::vector<glm::dvec3> centres;
+  for (const Track& t : tracks.tracks()) {
+    if (!t.visible) continue;
+    glm::dvec3 sum(0.0);
+    std::size_t count = 0;
+    for (const TrackPolyline& line : t.geometry.segments)
+      for (const glm::dvec3& p : line.points_ecef) sum += p, ++count;
+    if (count == 0) continue;
+    with_points.push_back(&t);
+    centres.push_back(sum / static_cast<double>(count));
+  }
+  // Quadratic in the tracks, but only asked when one view cannot hold them all (10,000 tracks:
+  // 5e7 distances, a fraction of a second).
+  const double radius2 = radius_m * radius_m;
+  const auto near = [&](std::size_t a, std::size_t b) {
+    const glm::dvec3 d = centres[a] - centres[b];
+    return glm::dot(d, d) <= radius2;
+  };
+  std::size_t best = 0, best_count = 0;
+  for (std::size_t a = 0; a < centres.size(); ++a) {
+    std::size_t count = 0;
+    for (std::size_t b = 0; b < centres.size(); ++b) count += near(a, b) ? 1 : 0;
+    if (count > best_count) best = a, best_count = count;
+  }
+  std::vector<const Track*> group;
+  for (std::size_t b = 0; b < centres.size(); ++b)
+    if (near(best, b)) group.push_back(with_points[b]);
+  return group;
 }
 
 }  // namespace trailray::scene

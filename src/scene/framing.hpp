@@ -21,6 +21,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "scene/camera.hpp"
 #include "scene/track_set.hpp"
@@ -79,5 +80,16 @@ Result<Framing> frame_points(std::span<const GeoPosition> points, const FramingO
 Result<Framing> frame_tracks(std::span<const Track* const> tracks, const FramingOptions& options = {});
 // The visible tracks of a set.
 Result<Framing> frame_tracks(const TrackSet& tracks, const FramingOptions& options = {});
+
+// Whether the image's centre lies inside `area` less its margins (FramingOptions): framing into
+// an area needs it, as the points' image shrinks toward the centre when the camera backs away.
+bool area_holds_centre(const ImageArea& area, const Lens& lens, double margin_fraction);
+
+// Tracks too far apart for one view (a pilot's flights of many years over several countries, or
+// on both sides of the Earth): the visible tracks whose centres (the mean of their points) lie
+// within `radius_m` of the centre of the track that has the most such neighbours (itself included) (the first of
+// those in the set's order on a tie), in the set's order. Empty when no visible track has a point.
+inline constexpr double kTrackGroupRadiusM = 300000.0;
+std::vector<const Track*> largest_track_group(const TrackSet& tracks, double radius_m = kTrackGroupRadiusM);
 
 }  // namespace trailray::scene

@@ -273,3 +273,34 @@ TEST(RenderCli, FramesGoWithProfile) {
     EXPECT_NE(r.out.find("--frames"), std::string::npos) << args << "\n" << r.out;
   }
 }
+
+// Tracks on both sides of the Earth: the picture frames the largest group of tracks near each
+// other (two in the Alps, not the one in New Zealand), with a warning that says so.
+TEST(RenderCli, TracksFarApartFrameTheLargestGroupWithAWarning) {
+  Env env;
+  const auto gpx = [&](const std::string& name, double lat, double lon) {
+    std::string text = R"(<gpx version="1.1"><trk><trkseg>)";
+    for (int i = 0; i < 20; ++i)
+      text += "<trkpt lat=\"" + std::to_string(lat + 0.001 * i) + "\" lon=\"" + std::to_string(lon) + "\"><ele>" +
+              std::to_string(1500 + i) + "</ele></trkpt>";
+    const std::string path = (env.home.path() / name).string();
+    std::ofstream(path) << text << "</trkseg></trk></gpx>";
+    return shell_quote(path);
+  };
+  const std::string files =
+      gpx("interlaken.gpx", 46.7, 7.85) + " " + gpx("nz.gpx", -43.5, 172.6) + " " + gpx("engadin.gpx", 46.6, 10.0);
+  const auto r = run_command(env.prefix() + "--terrain none --size 160x90 --verbose --time 2024-06-18T11:00:00Z -o " +
+                             shell_quote(env.out()) + " " + files + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("too far apart for one view: it shows the 2 of 3"), std::string::npos) << r.out;
+  // The camera (--verbose) looks at the Alps from a regional height.
+  const std::smatch m = [&] {
+    std::smatch found;
+    std::regex_search(r.out, found, std::regex(R"(camera (-?[0-9.]+),(-?[0-9.]+),([0-9.]+) m)"));
+    return found;
+  }();
+  ASSERT_EQ(m.size(), 4u) << r.out;
+  EXPECT_NEAR(std::stod(m[1]), 46.0, 2.0);
+  EXPECT_NEAR(std::stod(m[2]), 9.0, 2.0);
+  EXPECT_LT(std::stod(m[3]), 400000.0);
+}

@@ -458,5 +458,67 @@ TEST(Framing, TracksFramedFromTheirEcefPointsAsFromTheirPositions) {
   EXPECT_FALSE(frame_tracks(set, options).ok()) << "only visible tracks are framed";
 }
 
+// An area that holds the image's centre only inside its margin (a tall legend under the view)
+// is refused by name, not searched in vain: the points' image shrinks toward the centre, which
+// would lie outside the box they must fit in.
+TEST(Framing, AnAreaWhoseMarginsMissTheCentreIsRefused) {
+  const Lens lens{kDefaultVerticalFovDeg, 1280, 720};
+  EXPECT_TRUE(area_holds_centre({340.0, 22.0, 1280.0, 494.0}, lens, 0.08));
+  EXPECT_FALSE(area_holds_centre({340.0, 22.0, 1280.0, 386.0}, lens, 0.08));  // 360 > 386 - 29
+  EXPECT_TRUE(area_holds_centre({340.0, 22.0, 1280.0, 386.0}, lens, 0.0));
+  FramingOptions options;
+  options.lens = lens;
+  options.area = ImageArea{340.0, 22.0, 1280.0, 386.0};
+  const auto r = frame_points(straight_track(46.7, 7.85, 35.0, 8000.0, 1500.0), options);
+  EXPECT_NE(r.error.find("framing area"), std::string::npos) << r.error;
+}
+
+Track track_through(const std::vector<GeoPosition>& points) {
+  Track t;
+  TrackPolyline line;
+  for (const GeoPosition& p : points) {
+    line.points_ecef.push_back(ecef_from(p));
+    t.altitude_m.push_back(p.height_m);
+    t.distance_m.push_back(0.0);
+  }
+  t.geometry.segments.push_back(line);
+  return t;
+}
+
+// Flights over several countries: the group is the tracks near the one with the most neighbours,
+// in the set's order; hidden tracks and tracks without points are not counted.
+TEST(Framing, LargestTrackGroupIsTheTracksNearEachOther) {
+  TrackSet set;
+  set.add(track_through(straight_track(-43.5, 172.6, 10.0, 9000.0, 900.0)));  // New Zealand
+  set.add(track_through(straight_track(46.7, 7.85, 35.0, 8000.0, 1500.0)));   // Interlaken
+  set.add(track_through(straight_track(36.6, 32.0, 80.0, 5000.0, 700.0)));    // Alanya
+  set.add(track_through(straight_track(47.45, 12.4, 0.0, 6000.0, 1500.0)));   // Kitzbuehel, 350 km east
+  set.add(track_through(straight_track(46.6, 10.0, 50.0, 7000.0, 2000.0)));   // the Engadin
+  std::vector<const Track*> group = largest_track_group(set);
+  ASSERT_EQ(group.size(), 3u);  // the Engadin is within 300 km of Interlaken and of Kitzbuehel
+  EXPECT_EQ(group[0], &set[1]);
+  EXPECT_EQ(group[1], &set[3]);
+  EXPECT_EQ(group[2], &set[4]);
+  // A smaller radius: each alone; the first of equals wins.
+  group = largest_track_group(set, 50000.0);
+  ASSERT_EQ(group.size(), 1u);
+  EXPECT_EQ(group[0], &set[0]);
+  set[4].visible = false;  // without the Engadin, Interlaken and Kitzbuehel are 350 km apart
+  group = largest_track_group(set);
+  ASSERT_EQ(group.size(), 1u);
+  EXPECT_EQ(group[0], &set[0]);
+  // The group frames: all its points in the image.
+  set[4].visible = true;
+  group = largest_track_group(set);
+  FramingOptions options;
+  options.lens = {45.0, 960, 540};
+  const auto framed = frame_tracks(group, options);
+  ASSERT_TRUE(framed.ok()) << framed.error;
+  for (const Track* t : group)
+    for (const glm::dvec3& p : t->geometry.segments[0].points_ecef) EXPECT_TRUE(framed.value->camera.project(p));
+  EXPECT_LT(framed.value->look_at.distance_m, 1.5e6);  // a view of the region, not of the globe
+  EXPECT_TRUE(largest_track_group(TrackSet{}).empty());
+}
+
 }  // namespace
 }  // namespace trailray::scene

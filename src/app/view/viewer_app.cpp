@@ -94,7 +94,8 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   // The task's cylinders, then the airspaces; every volume placed on the terrain.
   add_airspace_volumes(model_.volumes, o.airspace_files, airspace_region(model_.tracks, model_.waypoints, o.camera),
                        sources_.heights.get(), diagnostics_);
-  controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens));
+  controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens),
+                           &diagnostics_);
   controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
 

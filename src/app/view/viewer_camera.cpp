@@ -15,12 +15,13 @@ namespace trailray::app::view {
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
 CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks, const scene::WaypointSet& waypoints,
-                            terrain::HeightSource* heights, double neutral, const FramingRoom& room) {
+                            terrain::HeightSource* heights, double neutral, const FramingRoom& room,
+                            scene::Diagnostics* diagnostics) {
   if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
   if (tracks.empty() && waypoints.points.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
   const scene::Camera camera =
-      initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area, &waypoints);
+      initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area, &waypoints, diagnostics);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
   return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
 }
@@ -106,11 +107,19 @@ FramingRoom ViewerApp::framing_room(const scene::Lens& lens) {
   scene::ImageArea area{0.0, menu, w, h};
   if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right();
   if (s.show_chart) area.bottom_px = l.chart.y;
-  if (!legend.empty() && legend.width_px > area.left_px)
-    area.bottom_px = std::min(area.bottom_px, static_cast<double>(h) - legend.height_px);
-  // A window too small for the panels and a view (the free part misses the window's centre,
-  // which framing needs): frame on all of it.
-  if (!(area.left_px < 0.5 * w && area.bottom_px > 0.5 * h)) return {legend, std::nullopt};
+  const double margin = scene::FramingOptions{}.margin_fraction;
+  if (!legend.empty() && legend.width_px > area.left_px) {
+    scene::ImageArea above_legend = area;
+    above_legend.bottom_px = std::min(area.bottom_px, static_cast<double>(h) - legend.height_px);
+    // A tall key (many tracks) under a wide one leaves too little above it: the legend's corner
+    // is kept clear instead, the area stays beside the panels.
+    if (!scene::area_holds_centre(above_legend, lens, margin) && scene::area_holds_centre(area, lens, margin))
+      return {legend, area};
+    area = above_legend;
+  }
+  // A window too small for the panels and a view (the free part, less its margins, misses the
+  // window's centre, which framing needs): frame on all of it.
+  if (!scene::area_holds_centre(area, lens, margin)) return {legend, std::nullopt};
   scene::KeptClearCorner replay;
   if (s.show_replay) replay = {scene::ImageCorner::top_right, w - l.replay.x, l.replay.bottom()};
   return {replay, area};

@@ -106,6 +106,6 @@ class ViewerApp {
 // legend leave the window free; the pivot on the ground.
 CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
                             const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
-                            const FramingRoom& room);
+                            const FramingRoom& room, scene::Diagnostics* diagnostics = nullptr);
 
 }  // namespace trailray::app::view
