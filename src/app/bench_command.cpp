@@ -30,6 +30,7 @@ struct BenchArgs {
   bool json = false;
   std::string overlay = "split";
   std::string many;  // TRACKSxPOINTS, empty: no many-track scenario
+  std::string lod = "on";
 };
 
 // `--many 10000x1000`: the many-track scenario's size (tracks x points per track).
@@ -67,6 +68,8 @@ nlohmann::json row_json(const BenchRow& r) {
           {"capsule_ms", r.capsule_ms},
           {"capsule_overlay_ms", r.capsule_overlay_ms},
           {"capsule_total_ms", r.capsule_total_ms},
+          {"capsules_drawn", r.capsules_drawn},
+          {"capsule_upload_ms", r.capsule_upload_ms},
           {"ribbon_ms", r.ribbon_ms},
           {"tube_ms", r.tube_ms},
           // The capsules' cost is both passes: a frame with tracks always draws the overlay too.
@@ -85,15 +88,17 @@ nlohmann::json row_json(const BenchRow& r) {
 
 std::string table(const std::vector<BenchRow>& rows) {
   // cap/rib and cap/tube compare the capsules' total (visible + overlay) with each reference.
-  std::string out = fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>8} {:>8} {:>8}\n",
-                                "dataset", "points", "capsule", "overlay", "cap total", "ribbon", "tube", "cap/rib",
-                                "cap/tube", "cap B/pt", "tube B/pt", "mem c/t");
-  out += fmt::format("{:<44} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "", "", "ms", "ms", "ms", "ms", "ms");
+  std::string out = fmt::format("{:<44} {:>8} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>8} {:>8} {:>8}\n",
+                                "dataset", "points", "capsules", "capsule", "overlay", "cap total", "ribbon", "tube",
+                                "cap/rib", "cap/tube", "cap B/pt", "tube B/pt", "mem c/t");
+  out += fmt::format("{:<44} {:>8} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "", "", "drawn", "ms", "ms", "ms", "ms",
+                     "ms");
   for (const BenchRow& r : rows)
     out += fmt::format(
-        "{:<44} {:>8} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>8.2f} {:>8.2f} {:>8.1f} {:>8.1f} {:>8.3f}\n",
-        r.name.size() > 44 ? r.name.substr(0, 41) + "..." : r.name, r.points, r.capsule_ms, r.capsule_overlay_ms,
-        r.capsule_total_ms, r.ribbon_ms, r.tube_ms, ratio(r.capsule_total_ms, r.ribbon_ms),
+        "{:<44} {:>8} {:>9} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f} {:>8.2f} {:>8.2f} {:>8.1f} {:>8.1f} "
+        "{:>8.3f}\n",
+        r.name.size() > 44 ? r.name.substr(0, 41) + "..." : r.name, r.points, r.capsules_drawn, r.capsule_ms,
+        r.capsule_overlay_ms, r.capsule_total_ms, r.ribbon_ms, r.tube_ms, ratio(r.capsule_total_ms, r.ribbon_ms),
         ratio(r.capsule_total_ms, r.tube_ms), per_point(r.capsule_bytes, r.points), per_point(r.tube_bytes, r.points),
         ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes)));
   return out;
@@ -146,6 +151,7 @@ int run_bench_tracks(const BenchArgs& a) {
   settings.lens = lens;
   settings.frames = a.frames;
   settings.split_overlay = a.overlay == "split";
+  settings.level_of_detail = a.lod == "on";
   TrackBench bench(settings);
   const std::string timing =
       bench.gpu_timing() ? "gpu (EXT_disjoint_timer_query)" : "cpu (wall time around the draw and glFinish)";
@@ -192,14 +198,15 @@ int run_bench_tracks(const BenchArgs& a) {
                        {"warmup_frames", settings.warmup_frames},
                        {"width_px", settings.width_px},
                        {"overlay", a.overlay},
+                       {"lod", a.lod},
                        {"datasets", nlohmann::json::array()},
                        {"skipped", real.skipped}};
     for (const BenchRow& r : rows) doc["datasets"].push_back(row_json(r));
     if (targets) doc["targets"] = *targets;
     std::cout << doc.dump(2) << '\n';
   } else {
-    fmt::print("renderer: {}; {}x{}; median of {} frames; track width {} px; overlay: {}; timing: {}\n",
-               bench.renderer(), lens.width_px, lens.height_px, a.frames, settings.width_px, a.overlay, timing);
+    fmt::print("renderer: {}; {}x{}; median of {} frames; track width {} px; overlay: {}; LOD: {}; timing: {}\n",
+               bench.renderer(), lens.width_px, lens.height_px, a.frames, settings.width_px, a.overlay, a.lod, timing);
     fmt::print("{}", table(rows));
     if (targets) fmt::print("{}", targets_text(*targets));
   }
@@ -261,6 +268,11 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                   "Also draw TRACKS random walks of POINTS points each, spread over 30 km x 30 km, as one buffer\n"
                   "of that many segments (e.g. 10000x1000: a season of tracks; the tube is left out above 2M points)")
       ->type_name("TRACKSxPOINTS");
+  cmd->add_option("--lod", args->lod,
+                  "on: the capsules' level of detail merges capsules shorter than a pixel, as the renderer draws\n"
+                  "them (default); off: every capsule, to compare")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->type_name("on|off");
   cmd->callback([args, &exit_code] { exit_code = run_bench_tracks(*args); });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -159,10 +160,15 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
 
   {
     progress("capsule");
+    const auto upload_start = std::chrono::steady_clock::now();
     const render::TrackBuffer buffer(dataset.geometry);
+    render::wait_for_gpu();
+    row.capsule_upload_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - upload_start).count();
     row.capsule_bytes = buffer.gpu_bytes();
     const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false, {}, false}};
     render::TrackSceneSettings settings;
+    settings.level_of_detail = s.settings.level_of_detail;
     settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
     if (s.settings.split_overlay) settings.terrain_top_m = dataset.ground_height_m;  // the flat ground
     const render::SceneLighting lighting;
@@ -176,6 +182,7 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     row.capsule_ms = m.ms.at("capsule_visible");
     row.capsule_overlay_ms = m.ms.at("capsule_overlay");
     row.capsule_total_ms = row.capsule_ms + row.capsule_overlay_ms;
+    row.capsules_drawn = s.capsules.visible_capsules();
     gpu = gpu && m.gpu;
   }
   {

@@ -30,6 +30,8 @@ struct BenchSettings {
   // The tube mesh takes 384 bytes a point (CPU copy and GPU): above this many points it is left
   // out (its figures NaN), so that 10,000 tracks x 1,000 points do not ask for 8 GB.
   std::size_t max_tube_points = 2'000'000;
+  // The capsules' level of detail (TrackSceneSettings::level_of_detail); false: every capsule.
+  bool level_of_detail = true;
 };
 
 struct BenchRow {
@@ -38,6 +40,8 @@ struct BenchRow {
   double capsule_ms = 0.0;          // the visible pass (into the G-buffer)
   double capsule_overlay_ms = 0.0;  // the overlay pass (occluded ghosts, silhouette fringe)
   double capsule_total_ms = 0.0;    // the two medians added
+  std::size_t capsules_drawn = 0;   // by the visible pass in the last frame (the segments without LOD)
+  double capsule_upload_ms = 0.0;   // making the TrackBuffer (the LOD hierarchy included), CPU time
   double ribbon_ms = 0.0, tube_ms = 0.0;
   std::size_t capsule_bytes = 0, ribbon_bytes = 0, tube_bytes = 0;
   double tube_radius_m = 0.0;    // the tube's radius: width_px wide at the framing distance

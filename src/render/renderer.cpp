@@ -125,6 +125,7 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
   // The tracks' block origins relative to this camera (the shadow and track passes use them).
   TrackPass::prepare(content.tracks, camera);
   run_passes(content, camera, lighting, target, items, cascades);
+  report.track_capsules = content.tracks.empty() ? 0 : track_pass_.visible_capsules();
 
   // Between frames: the draw lists above point into the caches until here.
   terrain_gpu_.end_frame(options_.mesh_budget_bytes, options_.imagery_budget_bytes);
@@ -176,6 +177,7 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
   ComposeSettings compose;
   compose.atmosphere = content.shading.atmosphere;
   TrackSceneSettings tracks = content.track_settings;
+  tracks.level_of_detail = tracks.level_of_detail && options_.track_level_of_detail;
   if (options_.split_track_overlay)
     tracks.terrain_top_m =
         terrain_span(content.terrain->tiles, static_cast<float>(content.terrain->report.neutral_ground_m)).second;

@@ -55,6 +55,9 @@ struct RendererOptions {
   // The track overlay traces only the capsules the terrain may hide (TrackSceneSettings::
   // terrain_top_m); false: every capsule, as a reference for tests.
   bool split_track_overlay = true;
+  // Level of detail for the tracks' capsules (TrackSceneSettings::level_of_detail); false: every
+  // capsule, as a reference for tests.
+  bool track_level_of_detail = true;
 };
 
 struct FrameReport {
@@ -63,6 +66,7 @@ struct FrameReport {
   std::size_t tiles_with_data = 0;     // of those: from the height source
   std::size_t imagery_tiles_used = 0;  // drawn tiles with imagery
   std::size_t tracks_drawn = 0;        // visible tracks
+  std::size_t track_capsules = 0;      // capsules the tracks' visible pass drew (fewer with LOD)
   std::size_t pin_draws = 0;           // the waypoints' stems and balls (a draw per kind and part)
   std::size_t labels_drawn = 0;        // labels placed (those whose point is hidden included)
   std::size_t volumes_drawn = 0;       // visible airspaces and task cylinders

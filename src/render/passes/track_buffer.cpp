@@ -72,7 +72,8 @@ TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
   }
   std::vector<glm::dvec3> all;
   all.reserve(point_count_);
-  for (const scene::TrackPolyline& line : geometry.segments) all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
+  for (const scene::TrackPolyline& line : geometry.segments)
+    all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
   make_blocks(all);
   // Bounding sphere: the box's centre and the farthest point from it.
   if (!all.empty()) {
@@ -84,6 +85,19 @@ TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
     centre_ = 0.5 * (lo + hi);
     for (const glm::dvec3& p : all) radius_ = std::max(radius_, glm::length(p - centre_));
   }
+  std::vector<float> values;
+  if (has_values_) {
+    values.reserve(point_count_);
+    for (const scene::TrackPolyline& line : geometry.segments) {
+      if (line.values.empty())
+        values.insert(values.end(), line.points_ecef.size(), std::numeric_limits<float>::quiet_NaN());
+      else
+        values.insert(values.end(), line.values.begin(), line.values.end());
+    }
+  }
+  std::vector<TrackLod::Segment> lod_segments;
+  for (const Range& range : segments_) lod_segments.push_back({range.first, range.count});
+  lod_ = TrackLod(all, values, lod_segments);
   upload(geometry);
 }
 
@@ -139,6 +153,16 @@ void TrackBuffer::upload(const scene::TrackGeometry& geometry) {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_width_, rows, GL_RED, GL_FLOAT, drops.data());
     glBindTexture(GL_TEXTURE_2D, 0);
   }
+  // The hierarchy's lists (at least one texel: the programs' integer sampler always has a texture).
+  std::vector<std::int32_t> lists = lod_.indices();
+  if (lists.empty()) lists.push_back(0);
+  lod_texture_width_ = width_for(lists.size());
+  const int lod_rows = std::max(1, rows_for(lists.size(), lod_texture_width_));
+  lists.resize(static_cast<std::size_t>(lod_texture_width_) * lod_rows, 0);
+  lod_indices_ = make_texture_2d(GL_R32I, lod_texture_width_, lod_rows);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, lod_texture_width_, lod_rows, GL_RED_INTEGER, GL_INT, lists.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
   block_texture_width_ = width_for(block_origins_.size());
   std::vector<float> zeros(std::max<std::size_t>(block_origins_.size(), 1) * 4, 0.0f);
   blocks_ = upload_rgba32f(zeros, block_texture_width_);
@@ -151,6 +175,7 @@ std::size_t TrackBuffer::gpu_bytes() const {
   std::size_t bytes = rows(point_count_, texture_width_) * texture_width_ * 16;
   bytes += rows(block_origins_.size(), block_texture_width_) * block_texture_width_ * 16;
   if (has_drops_) bytes += rows(point_count_, texture_width_) * texture_width_ * 4;
+  bytes += rows(std::max<std::size_t>(lod_.indices().size(), 1), lod_texture_width_) * lod_texture_width_ * 4;
   return bytes;
 }
 

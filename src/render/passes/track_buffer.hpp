@@ -13,6 +13,8 @@
 //             ever reaches the GPU, so a track 300 km from anything stays exact to the
 //             millimetre next to the camera (DESIGN.md precision rule).
 //   drops     R32F, optional (curtains): metres from the point down to the ground.
+//   lod       R32I: the level-of-detail hierarchy's index lists (track_lod.hpp), about 1.3 bytes
+//             per point (at most 4); one texel when the track has nothing to merge.
 // A texture wider than 2048 is not guaranteed by WebGL2; the 2D layout holds a million points
 // in 489 rows.
 //
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "render/gl/gl_objects.hpp"
+#include "render/passes/track_lod.hpp"
 #include "scene/track_geometry.hpp"
 
 namespace trailray::render {
@@ -65,6 +68,9 @@ class TrackBuffer {
   const Texture& points() const { return points_; }
   const Texture& blocks() const { return blocks_; }
   const Texture& drops() const { return drops_; }  // 0 without curtain heights
+  // The level-of-detail hierarchy (its chunks index segments()) and its lists on the GPU.
+  const TrackLod& lod() const { return lod_; }
+  const Texture& lod_indices() const { return lod_indices_; }
 
   // The bytes of GPU memory the textures take (the figure the issue asks about).
   std::size_t gpu_bytes() const;
@@ -90,8 +96,10 @@ class TrackBuffer {
   bool eye_set_ = false;
   glm::dvec3 centre_{0.0};
   double radius_ = 0.0;
-  Texture points_, blocks_, drops_;
+  TrackLod lod_;
+  Texture points_, blocks_, drops_, lod_indices_;
   int block_texture_width_ = 1;
+  int lod_texture_width_ = 1;
   int block_shift_ = 8;
 };
 

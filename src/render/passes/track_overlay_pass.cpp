@@ -190,7 +190,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
     overlay_.set_int("u_overlay_split", split_of(draw) ? 1 : 0);
     set_color_uniforms(overlay_, draw, settings);
     set_shape_uniforms(overlay_, draw, settings);
-    draw_segments(overlay_, *draw.buffer, draw.shape.capsules);
+    draw_segments(overlay_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
   }
   if (split) {
     set_overlay_uniforms(fringe_, gbuffer, camera, lighting, settings, view_projection);
@@ -199,7 +199,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
       if (!drawable(draw) || !split_of(draw)) continue;
       set_color_uniforms(fringe_, draw, settings);
       set_shape_uniforms(fringe_, draw, settings);
-      draw_segments(fringe_, *draw.buffer, draw.shape.capsules);
+      draw_segments(fringe_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
     }
   }
   glBindVertexArray(0);

@@ -133,11 +133,13 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const scene::Camera& camera
   set_width_uniforms(visible_, camera);
   bind_colormap(settings.colormap, kColormapUnit);
   glBindVertexArray(quads_.id());
+  visible_capsules_ = 0;
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
     set_color_uniforms(visible_, draw, settings);
     set_shape_uniforms(visible_, draw, settings);
-    draw_segments(visible_, *draw.buffer, draw.shape.capsules);
+    visible_capsules_ +=
+        draw_segments(visible_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
   }
   glBindVertexArray(0);
   glDisable(GL_DEPTH_TEST);
@@ -160,7 +162,8 @@ void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_proj
   for (const TrackDraw& draw : tracks)
     if (drawable(draw)) {
       set_shape_uniforms(shadow_, draw, settings);
-      draw_segments(shadow_, *draw.buffer, draw.shape.capsules);
+      // The camera's levels: a shadow is at most as sharp as the tube that casts it.
+      draw_segments(shadow_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
     }
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);

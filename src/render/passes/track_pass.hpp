@@ -29,6 +29,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <span>
 
@@ -85,6 +86,9 @@ struct TrackSceneSettings {
   // capsules this terrain may hide, and draws the fringe of the others without a ray test where a
   // visible tube covers it (draw_overlay). Unset: it traces every fragment of every capsule.
   std::optional<double> terrain_top_m;
+  // Level of detail (track_lod.hpp): consecutive capsules shorter than about a pixel are drawn as
+  // one, within half a pixel and 1/32 of the colour scale. false: every capsule (tests, bench).
+  bool level_of_detail = true;
 };
 
 // The settings for a track style and the colour scale in use (nullopt: solid colours).
@@ -127,6 +131,9 @@ class TrackPass {
   // Blends the overlay over the bound framebuffer (the composed frame).
   void blend_overlay(const TrackOverlayTarget& target) const;
 
+  // The capsules the last draw_visible drew (with the level of detail, fewer than the segments).
+  std::size_t visible_capsules() const { return visible_capsules_; }
+
   // Inside ShadowMaps::render's callback: the capsules as casters for one cascade.
   // `light_view_projection` is the callback's camera-relative matrix, `towards_sun_ecef` a unit
   // vector, `texel_m` the size of one of the cascade's texels (the quads' margin). The tubes
@@ -153,6 +160,7 @@ class TrackPass {
     bool packed = false;
   };
   mutable TerrainCopy terrain_copy_;
+  mutable std::size_t visible_capsules_ = 0;
   void copy_terrain(const GBuffer& gbuffer) const;
   // The overlay's depth from the G-buffer's visible tracks (overlay_prefill.frag).
   void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,28 +102,87 @@ Buffer make_quad_indices() {
   return buffer;
 }
 
+std::optional<TrackLod::View> lod_view_for(const scene::Camera& camera, const TrackDraw& draw,
+                                           const TrackSceneSettings& settings) {
+  if (!settings.level_of_detail || draw.buffer == nullptr || draw.shape.capsules != CapsuleShape::Capsules::polyline ||
+      draw.shape.dash_px > 0.0f || draw.shape.lift_px > 0.0f || draw.shape.lift_m > 0.0f)
+    return std::nullopt;
+  TrackLod::View view;
+  view.eye = camera.position();
+  view.forward = camera.axes().forward;
+  const scene::Lens& lens = camera.lens();
+  const double tan_v = std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0);
+  const double tan_h = tan_v * lens.width_px / std::max<double>(lens.height_px, 1.0);
+  view.pixel_angle = pixel_angle(camera);
+  view.corner_tangent = std::hypot(tan_v, tan_h);
+  view.by_value = draw.by_value && draw.buffer->has_values();
+  view.value_range = std::abs(static_cast<double>(settings.value_max) - settings.value_min);
+  return view;
+}
+
+namespace {
+
+// Draws `total` capsules from list position `first`, in chunks of kCapsulesPerDraw.
+void draw_capsules(const ShaderProgram& program, std::int32_t first, std::int32_t total,
+                   std::int32_t points_per_capsule) {
+  for (std::int32_t done = 0; done < total; done += kCapsulesPerDraw) {
+    program.set_int("u_chunk_first", first + done * points_per_capsule);
+    const std::int32_t count = std::min(kCapsulesPerDraw, total - done);
+    glDrawElements(GL_TRIANGLES, count * 6, GL_UNSIGNED_SHORT, nullptr);
+  }
+}
+
+}  // namespace
+
 // Draws every segment of the track, a capsule per pair of consecutive points (a segment of one
 // point is a sphere: a zero-length capsule), or per pair or point standing alone (`capsules`),
 // in chunks of kCapsulesPerDraw. The quads' vertex array (with the index buffer) must be bound.
-void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer, CapsuleShape::Capsules capsules) {
+// With `lod`, each chunked segment is drawn as the runs of levels the view picks (TrackLod::plan).
+std::size_t draw_segments(const ShaderProgram& program, const TrackBuffer& buffer, CapsuleShape::Capsules capsules,
+                          const std::optional<TrackLod::View>& lod) {
   bind_texture(kPointsUnit, buffer.points());
   bind_texture(kBlocksUnit, buffer.blocks());
+  // Always bound: an integer sampler must never see another unit's float texture.
+  bind_texture(kLodUnit, buffer.lod_indices());
+  program.set_int("u_lod_indices", static_cast<int>(kLodUnit));
   program.set_int("u_block_shift", buffer.block_shift());
-  for (const TrackBuffer::Range& range : buffer.segments()) {
+  const TrackLod& hierarchy = buffer.lod();
+  std::vector<TrackLod::Run> runs;
+  if (lod) runs = hierarchy.plan(*lod);
+  std::size_t next_run = 0, drawn = 0;
+  const auto& segments = buffer.segments();
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const TrackBuffer::Range& range = segments[s];
     if (range.count <= 0) continue;
     program.set_int("u_first", range.first);
     program.set_int("u_first_block", range.first_block);
     program.set_int("u_last", range.first + range.count - 1);
+    if (lod && hierarchy.chunked(s)) {
+      for (; next_run < runs.size() && runs[next_run].segment == static_cast<std::int32_t>(s); ++next_run) {
+        const TrackLod::Run& run = runs[next_run];
+        program.set_int("u_list_base", run.list_base);
+        program.set_int("u_run_first", run.first);
+        program.set_int("u_run_last", run.last);
+        program.set_int("u_before", run.before);
+        program.set_int("u_after", run.after);
+        draw_capsules(program, run.first, run.last - run.first, 1);
+        drawn += static_cast<std::size_t>(run.last - run.first);
+      }
+      continue;
+    }
+    program.set_int("u_list_base", -1);
+    program.set_int("u_run_first", range.first);
+    program.set_int("u_run_last", range.first + range.count - 1);
+    program.set_int("u_before", -1);
+    program.set_int("u_after", -1);
     const std::int32_t points_per_capsule = capsules == CapsuleShape::Capsules::pairs ? 2 : 1;
     const std::int32_t total = capsules == CapsuleShape::Capsules::polyline ? std::max(range.count - 1, 1)
                                : capsules == CapsuleShape::Capsules::pairs  ? range.count / 2
                                                                             : range.count;
-    for (std::int32_t done = 0; done < total; done += kCapsulesPerDraw) {
-      program.set_int("u_chunk_first", range.first + done * points_per_capsule);
-      const std::int32_t count = std::min(kCapsulesPerDraw, total - done);
-      glDrawElements(GL_TRIANGLES, count * 6, GL_UNSIGNED_SHORT, nullptr);
-    }
+    draw_capsules(program, range.first, total, points_per_capsule);
+    drawn += static_cast<std::size_t>(total);
   }
+  return drawn;
 }
 
 bool drawable(const TrackDraw& draw) { return draw.buffer != nullptr && draw.buffer->point_count() > 0; }

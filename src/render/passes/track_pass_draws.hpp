@@ -6,7 +6,9 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "render/gl/gl_objects.hpp"
@@ -17,7 +19,7 @@ namespace trailray::render::track_pass_detail {
 
 // Texture units of the track programs.
 constexpr GLuint kPointsUnit = 0, kBlocksUnit = 1, kColormapUnit = 2, kTerrainDistanceUnit = 3, kDropsUnit = 4,
-                 kTerrainNormalUnit = 5, kFrameDistanceUnit = 6;
+                 kTerrainNormalUnit = 5, kFrameDistanceUnit = 6, kLodUnit = 7;
 // The quad's margin for the anti-aliased fringe (pixels), and the shadow quad's (texels).
 constexpr float kFringeMarginPx = 1.0f;  // the fringe reaches half a pixel past the silhouette
 constexpr float kShadowMarginTexels = 1.0f;
@@ -37,9 +39,15 @@ void set_color_uniforms(const ShaderProgram& program, const TrackDraw& draw, con
 void bind_texture(GLuint unit, const Texture& texture);
 // The index buffer every capsule draw shares (0 1 2 2 1 3 per quad).
 Buffer make_quad_indices();
-// Draws every capsule of the track in chunks of kCapsulesPerDraw (the quads' vertex array bound).
-void draw_segments(const ShaderProgram& program, const TrackBuffer& buffer,
-                   CapsuleShape::Capsules capsules = CapsuleShape::Capsules::polyline);
+// The level of detail a draw's capsules take for a camera (TrackLod::View), or nullopt: full
+// detail (LOD off in the settings, or pins and dashed routes, whose points all matter).
+std::optional<TrackLod::View> lod_view_for(const scene::Camera& camera, const TrackDraw& draw,
+                                           const TrackSceneSettings& settings);
+// Draws every capsule of the track in chunks of kCapsulesPerDraw (the quads' vertex array bound),
+// through the level of detail when `lod` is given; returns the capsules drawn.
+std::size_t draw_segments(const ShaderProgram& program, const TrackBuffer& buffer,
+                          CapsuleShape::Capsules capsules = CapsuleShape::Capsules::polyline,
+                          const std::optional<TrackLod::View>& lod = std::nullopt);
 bool drawable(const TrackDraw& draw);
 
 }  // namespace trailray::render::track_pass_detail

@@ -1,13 +1,13 @@
 #version 300 es
 // One camera-facing quad per segment, from gl_VertexID alone (no vertex buffer; a shared index
-// buffer only repeats 0 1 2 2 1 3): vertices 4k..4k+3 belong to the capsule from point
-// u_chunk_first + k to the next. The quad is the tight bounding quad
-// of thesis §3.2.2 (Groß and Gumhold), built per end in the plane facing the eye, with three
-// corrections: it is widened to the capsule's true silhouette when the eye is near (a sphere of
-// radius r seen from distance D spans r D / sqrt(D^2 - r^2) in the plane through its centre),
-// both ends get the larger of the two ends' angular size (so a segment seen end-on, a disc,
-// stays covered), and it has a margin for the anti-aliased fringe. u_orthographic: the shadow
-// pass, where every ray runs along -u_towards_light.
+// buffer only repeats 0 1 2 2 1 3): vertices 4k..4k+3 belong to the capsule from list position
+// u_chunk_first + k to the next (a point index at full detail, else through the level's list).
+// The quad is the tight bounding quad of thesis §3.2.2 (Groß and Gumhold), built per end in the
+// plane facing the eye, with three corrections: it is widened to the capsule's true silhouette
+// when the eye is near (a sphere of radius r seen from distance D spans r D / sqrt(D^2 - r^2) in
+// the plane through its centre), both ends get the larger of the two ends' angular size (so a
+// segment seen end-on, a disc, stays covered), and it has a margin for the anti-aliased fringe.
+// u_orthographic: the shadow pass, where every ray runs along -u_towards_light.
 precision highp float;
 precision highp int;
 
@@ -24,6 +24,24 @@ uniform int u_overlay_split;
 uniform float u_camera_height_m;  // above the ellipsoid
 uniform float u_terrain_top_m;    // the highest terrain drawn, above the ellipsoid
 uniform float u_depth_step_k;     // depth-buffer resolution at distance d: d * d * k metres
+// Level of detail (track_lod.hpp): a draw covers a run of list positions u_run_first..u_run_last
+// of one level, whose points come from the level's index list at u_list_base (-1: full detail,
+// a position is a point index). The neighbours across the run's ends (x0 of its first capsule,
+// x3 of its last) are the points the adjacent runs join with (-1: the segment ends there), so
+// a joint between two levels gets the same plane from both sides.
+uniform highp isampler2D u_lod_indices;
+uniform int u_list_base;
+uniform int u_run_first;
+uniform int u_run_last;
+uniform int u_before;
+uniform int u_after;
+
+int list_point(int position) {
+  if (u_list_base < 0) return position;
+  int width = textureSize(u_lod_indices, 0).x;
+  int texel = u_list_base + position;
+  return texelFetch(u_lod_indices, ivec2(texel % width, texel / width), 0).r;
+}
 
 flat out vec3 v_x0;  // the previous point (== v_x1 at a segment start)
 flat out vec3 v_x1;
@@ -76,18 +94,22 @@ void main() {
   float side = (corner & 1) == 1 ? 1.0 : -1.0;
   // Pins' capsules stand alone (u_capsule_mode 1, 2: no neighbours, no joints).
   bool alone = u_capsule_mode != 0;
-  int i1 = u_capsule_mode == 1 ? u_chunk_first + 2 * segment : u_chunk_first + segment;
-  int i2 = u_capsule_mode == 2 ? i1 : min(i1 + 1, u_last);
+  int j1 = u_capsule_mode == 1 ? u_chunk_first + 2 * segment : u_chunk_first + segment;
+  int j2 = u_capsule_mode == 2 ? j1 : min(j1 + 1, u_run_last);
+  int i1 = list_point(j1);
+  int i2 = list_point(j2);
   vec3 x1 = track_point(i1);
   vec3 x2 = track_point(i2);
   float radius = tube_radius(x1, x2);
   v_x1 = x1;
   v_x2 = x2;
   if (end == 1) {
-    bool has_previous = !alone && i1 > u_first;
-    bool has_next = !alone && i2 + 1 <= u_last;
-    vec3 x0 = has_previous ? track_point(i1 - 1) : x1;
-    vec3 x3 = has_next ? track_point(i2 + 1) : x2;
+    int before = j1 > u_run_first ? list_point(j1 - 1) : u_before;
+    int after = j2 < u_run_last ? list_point(j2 + 1) : u_after;
+    bool has_previous = !alone && before >= 0;
+    bool has_next = !alone && after >= 0;
+    vec3 x0 = has_previous ? track_point(before) : x1;
+    vec3 x3 = has_next ? track_point(after) : x2;
     v_x0 = x0;
     v_x3 = x3;
     v_radii = vec3(has_previous ? tube_radius(x0, x1) : radius, radius, has_next ? tube_radius(x2, x3) : radius);
