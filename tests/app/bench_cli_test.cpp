@@ -163,3 +163,26 @@ TEST(BenchCli, ManyTracksAreOneMoreRowWithATrackPerSegment) {
     EXPECT_NE(e.out.find("is not TRACKSxPOINTS"), std::string::npos) << bad << ": " << e.out;
   }
 }
+
+// `--lod on|off`: with the level of detail, a walk of many points a pixel draws far fewer
+// capsules; without it, one per pair of points.
+TEST(BenchCli, LevelOfDetailMergesCapsulesAndOffDrawsEveryOne) {
+  std::size_t drawn_on = 0;
+  for (const std::string mode : {"on", "off"}) {
+    const auto r = run_command(bench() + "--points 20000 --size 160x90 --frames 1 --data none --json --lod " + mode);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const json doc = json::parse(r.out);
+    EXPECT_EQ(doc["lod"], mode);
+    const json& walk = doc["datasets"][0];
+    if (mode == "on") {
+      drawn_on = walk["capsules_drawn"].get<std::size_t>();
+      EXPECT_GT(drawn_on, 0u);
+      EXPECT_LT(drawn_on, 19999u / 4) << "a 20000-point walk in 160x90 pixels has many points a pixel";
+    } else {
+      EXPECT_EQ(walk["capsules_drawn"], 19999);
+    }
+  }
+  const auto bad = run_command(bench() + "--lod maybe --data none 2>&1");
+  EXPECT_EQ(bad.status, 2) << bad.out;
+  EXPECT_NE(bad.out.find("--lod"), std::string::npos) << bad.out;
+}
