@@ -8,10 +8,10 @@
 
 #include <vector>
 
+#include "scene/camera.hpp"
+#include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
-#include "render/passes/gbuffer.hpp"
-#include "scene/camera.hpp"
 
 namespace trailray::render {
 

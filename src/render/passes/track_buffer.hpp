@@ -13,7 +13,7 @@
 //             ever reaches the GPU, so a track 300 km from anything stays exact to the
 //             millimetre next to the camera (DESIGN.md precision rule).
 //   drops     R32F, optional (curtains): metres from the point down to the ground.
-//   lod       R32I: the level-of-detail hierarchy's index lists (track_lod.hpp), about 1.3 bytes
+//   lod       R32I: the level-of-detail hierarchy's index lists (track_lod.hpp), about 2 bytes
 //             per point (at most 4); one texel when the track has nothing to merge.
 // A texture wider than 2048 is not guaranteed by WebGL2; the 2D layout holds a million points
 // in 489 rows.

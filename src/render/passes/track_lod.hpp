@@ -22,7 +22,7 @@
 // every level keeps the points on both sides of each change between those kinds.
 //
 // Memory: the levels' index lists, 4 bytes per kept point; each level keeps at most half the
-// points of the one below, so all of them take at most 4 bytes per point (typically about 1.3).
+// points of the one below, so all of them take at most 4 bytes per point (about 2 on a 1M walk).
 
 #include <glm/glm.hpp>
 
