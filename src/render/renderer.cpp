@@ -78,7 +78,8 @@ Renderer::Renderer(RendererOptions options) : options_(options) {
 
 Renderer::~Renderer() = default;
 
-FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camera, FrameTarget& target) {
+FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camera, FrameTarget& target,
+                           const FrameOptions& frame) {
   scene::TerrainView& terrain = scene.terrain != nullptr ? *scene.terrain : neutral_terrain_;
   const scene::TerrainTiles tiles = terrain.tiles_for(camera, scene.neutral_ground_m);
   FrameContent content;
@@ -96,13 +97,14 @@ FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camer
   if (scene.volumes != nullptr)
     for (const scene::Volume& v : scene.volumes->volumes) content.volume_count += v.visible ? 1 : 0;
   content.label_style = scene.style.labels;
-  FrameReport report = draw(content, camera, target);
+  FrameReport report = draw(content, camera, target, frame);
   track_gpu_.evict(scene.tracks);
   report.gpu_tracks = track_gpu_.stats();
   return report;
 }
 
-FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target) {
+FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target,
+                           const FrameOptions& frame) {
   FrameReport report;
   const scene::TerrainTiles& terrain = *content.terrain;
   report.terrain = terrain.report;
@@ -120,11 +122,12 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
 
   // The sun and sky light of the frame: what decides the shadows and what the passes shade with.
   const SceneLighting lighting = lighting_for(content.sun_direction_ecef, camera, ComposeSettings{}.model);
-  const std::optional<ShadowCascades> cascades = shadow_cascades(content, camera, lighting, neutral);
-  report.shadows_drawn = cascades.has_value();
+  FrameShadows shadows = frame_shadows(content, camera, lighting, items, neutral, frame);
+  report.shadows_drawn = shadows.cascades.has_value();
+  report.shadow_maps_rendered = shadows.render_for.has_value();
   // The tracks' block origins relative to this camera (the shadow and track passes use them).
   TrackPass::prepare(content.tracks, camera);
-  run_passes(content, camera, lighting, target, items, cascades);
+  run_passes(content, camera, lighting, target, items, shadows, frame);
   report.track_capsules = content.tracks.empty() ? 0 : track_pass_.visible_capsules();
 
   // Between frames: the draw lists above point into the caches until here.
@@ -164,14 +167,32 @@ std::optional<ShadowCascades> Renderer::shadow_cascades(const FrameContent& cont
   settings.caster_height_span_m =
       caster_height_span_m(lowest, highest, ShadowCasters{{}, content.tracks, &content.track_settings});
   std::optional<ShadowCascades> cascades(std::in_place, camera, content.sun_direction_ecef, settings);
-  if (!shadow_maps_ || shadow_maps_->map_size_px() != options_.shadow_map_size_px)
+  if (!shadow_maps_ || shadow_maps_->map_size_px() != options_.shadow_map_size_px) {
     shadow_maps_.emplace(options_.shadow_map_size_px);
+    shadow_cache_.clear();
+  }
   return cascades;
 }
 
+Renderer::FrameShadows Renderer::frame_shadows(const FrameContent& content, const scene::Camera& camera,
+                                               const SceneLighting& lighting, std::span<const TerrainDrawItem> items,
+                                               float neutral_m, const FrameOptions& frame) {
+  FrameShadows shadows;
+  shadows.cascades = shadow_cascades(content, camera, lighting, neutral_m);
+  if (!shadows.cascades) return shadows;
+  if (frame.reuse_shadow_maps && shadow_cache_.holds_sun(content.sun_direction_ecef)) {
+    shadows.cascades = shadow_cache_.cascades().seen_from(camera.position());
+    return shadows;
+  }
+  ShadowMapKey key = shadow_map_key(*shadows.cascades, camera, {items, content.tracks, &content.track_settings});
+  if (!shadow_cache_.holds(key)) shadows.render_for = std::move(key);
+  return shadows;
+}
+
 void Renderer::run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
-                          FrameTarget& target, std::span<const TerrainDrawItem> items,
-                          const std::optional<ShadowCascades>& cascades) {
+                          FrameTarget& target, std::span<const TerrainDrawItem> items, FrameShadows& shadows,
+                          const FrameOptions& frame) {
+  const std::optional<ShadowCascades>& cascades = shadows.cascades;
   const scene::Lens& lens = camera.lens();
   const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
   ComposeSettings compose;
@@ -182,9 +203,11 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
     tracks.terrain_top_m =
         terrain_span(content.terrain->tiles, static_cast<float>(content.terrain->report.neutral_ground_m)).second;
   FramePasses passes(debug_groups_, target.profiler);
-  if (cascades)
+  if (shadows.render_for)
     passes.run("shadows", [&] {
+      shadow_cache_.clear();  // until rendered: a throw leaves the maps half drawn
       draw_shadow_pass(*shadow_maps_, *cascades, {items, content.tracks, &tracks}, track_pass_, camera);
+      shadow_cache_.store(std::move(*shadows.render_for), *cascades);
     });
   const GBuffer gbuffer(width, height, distance_encoding_);
   passes.run("tiles", [&] { terrain_pass_.draw(gbuffer, camera, items, content.shading.snow); });
@@ -198,31 +221,36 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
       track_pass_.draw_overlay(gbuffer, *overlay, camera, lighting, content.tracks, tracks);
     });
   const Texture* ambient_occlusion = nullptr;
-  if (content.shading.ssao) passes.run("ssao", [&] { ambient_occlusion = &ssao_pass_.run(gbuffer, camera); });
-  const ColorDepthTarget frame(width, height);
+  if (content.shading.ssao && frame.ssao)
+    passes.run("ssao", [&] {
+      SsaoSettings ssao;
+      ssao.resolution_divisor = options_.ssao_resolution_divisor;
+      ambient_occlusion = &ssao_pass_.run(gbuffer, camera, ssao);
+    });
+  const ColorDepthTarget lit(width, height);
   // The atmosphere (aerial perspective and sky) is drawn by the compose pass's one draw: its time
   // is compose's, and the profiler's "atmosphere" row stays empty.
   passes.run("compose", [&] {
-    frame.bind();
-    const ComposeShadows shadows{cascades ? &*shadow_maps_ : nullptr, cascades ? &*cascades : nullptr};
-    compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &shadows : nullptr, camera, lighting, compose);
+    lit.bind();
+    const ComposeShadows lookup{cascades ? &*shadow_maps_ : nullptr, cascades ? &*cascades : nullptr};
+    compose_pass_.draw(gbuffer, ambient_occlusion, cascades ? &lookup : nullptr, camera, lighting, compose);
   });
   if (overlay) passes.run("overlays", [&] { track_pass_.blend_overlay(*overlay); });
   if (content.volumes != nullptr)
     passes.run("volumes", [&] {
-      frame.bind();
+      lit.bind();
       volume_pass_.draw(gbuffer, camera, *content.volumes, target.pixel_ratio);
     });
   if (!content.labels.empty())
     passes.run("labels", [&] {
-      frame.bind();
+      lit.bind();
       label_pass_.draw(gbuffer, content.labels, content.label_style);
     });
   passes.run(
       "output",
       [&] {
-        frame.bind();
-        target.receive(frame);
+        lit.bind();
+        target.receive(lit);
       },
       target.pass_name());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

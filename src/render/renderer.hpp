@@ -30,6 +30,7 @@
 #include "render/passes/compose_pass.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/passes/label_pass.hpp"
+#include "render/passes/shadow_cache.hpp"
 #include "render/passes/shadow_maps.hpp"
 #include "render/passes/ssao_pass.hpp"
 #include "render/passes/terrain_pass.hpp"
@@ -58,6 +59,8 @@ struct RendererOptions {
   // Level of detail for the tracks' capsules (TrackSceneSettings::level_of_detail); false: every
   // capsule, as a reference for tests.
   bool track_level_of_detail = true;
+  // Ambient occlusion at half resolution each way (2, upsampled) or full (1: the reference).
+  int ssao_resolution_divisor = 2;
 };
 
 struct FrameReport {
@@ -71,10 +74,22 @@ struct FrameReport {
   std::size_t labels_drawn = 0;        // labels placed (those whose point is hidden included)
   std::size_t volumes_drawn = 0;       // visible airspaces and task cylinders
   bool shadows_drawn = false;          // false: switched off, or the sun below the horizon
+  bool shadow_maps_rendered = false;   // false: none, or the maps of an earlier frame reused
   // The GPU caches after this frame's eviction: held, used by the frame, uploaded, evicted.
   GpuCacheStats gpu_meshes;
   GpuCacheStats gpu_imagery;
   GpuCacheStats gpu_tracks;
+};
+
+// How much of a frame is drawn afresh. The default is the full frame; its shadow maps are still
+// reused when nothing they depend on changed (shadow_cache.hpp), which gives the same picture.
+struct FrameOptions {
+  // A frame drawn while the camera moves (the viewer): the shadow maps last rendered are reused
+  // even for another camera or other tiles (their cascades stay where they were: shadows end
+  // early or are cut off where the view left them); only a new sun, or none yet, renders them.
+  bool reuse_shadow_maps = false;
+  // false: no ambient occlusion this frame, whatever the shading asks.
+  bool ssao = true;
 };
 
 // A frame's content once resolved from a scene: the terrain's tiles, the tracks' buffers, the
@@ -104,10 +119,12 @@ class Renderer {
   // view hands out the tiles by its loading policy (waiting for them, or not: the viewer); a
   // scene without one is the neutral ground everywhere. Throws RenderError from GL, and
   // std::invalid_argument for an unusable camera or a shadow map size outside 16..16384.
-  FrameReport draw(const scene::Scene& scene, const scene::Camera& camera, FrameTarget& target);
+  FrameReport draw(const scene::Scene& scene, const scene::Camera& camera, FrameTarget& target,
+                   const FrameOptions& frame = {});
 
   // Draws resolved content: the tracks' buffers are the caller's (they must outlive the call).
-  FrameReport draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target);
+  FrameReport draw(const FrameContent& content, const scene::Camera& camera, FrameTarget& target,
+                   const FrameOptions& frame = {});
 
   // The labels the scene calls for, laid out for a camera and a target's pixel ratio, clear of
   // the legend the picture gets and of scene.label_keep_out.
@@ -126,9 +143,17 @@ class Renderer {
   // The sun's cascades when the frame has shadows (and the maps for them), else nullopt.
   std::optional<ShadowCascades> shadow_cascades(const FrameContent& content, const scene::Camera& camera,
                                                 const SceneLighting& lighting, float neutral_m);
+  // The cascades the frame looks its shadows up in (those the cache's maps hold, or new ones)
+  // and the key to render the maps for (nullopt: the cache's maps serve).
+  struct FrameShadows {
+    std::optional<ShadowCascades> cascades;
+    std::optional<ShadowMapKey> render_for;
+  };
+  FrameShadows frame_shadows(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
+                             std::span<const TerrainDrawItem> items, float neutral_m, const FrameOptions& frame);
   void run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
-                  FrameTarget& target, std::span<const TerrainDrawItem> items,
-                  const std::optional<ShadowCascades>& cascades);
+                  FrameTarget& target, std::span<const TerrainDrawItem> items, FrameShadows& shadows,
+                  const FrameOptions& frame);
 
   RendererOptions options_;
   DistanceEncoding distance_encoding_;
@@ -145,6 +170,7 @@ class Renderer {
   };
   std::optional<LegendPanelCache> legend_panel_;  // the legend labels keep out of
   std::optional<ShadowMaps> shadow_maps_;         // made on first use, remade for another size
+  ShadowMapCache shadow_cache_;                   // what shadow_maps_ hold
   TerrainGpu terrain_gpu_;
   TrackGpu track_gpu_;
   PinGpu pin_gpu_;

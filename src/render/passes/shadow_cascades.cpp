@@ -175,6 +175,12 @@ std::array<float, kShadowCascadeCount> ShadowCascades::split_far_m() const {
   return out;
 }
 
+ShadowCascades ShadowCascades::seen_from(const glm::dvec3& camera_position_ecef) const {
+  ShadowCascades moved = *this;
+  moved.camera_position_ = camera_position_ecef;
+  return moved;
+}
+
 std::array<float, 16> ShadowCascades::camera_relative_matrix(std::size_t cascade) const {
   return cascades_.at(cascade).view_projection_relative_to(camera_position_);
 }

@@ -88,6 +88,9 @@ class ShadowCascades {
   std::array<float, kShadowCascadeCount> split_far_m() const;
   // Each cascade's view-projection for camera-relative positions (what the compose pass has).
   std::array<float, 16> camera_relative_matrix(std::size_t cascade) const;
+  // The same cascades for lookups from another camera position: a frame drawn while the camera
+  // moves reuses maps rendered for an earlier camera (their bounds stay where they were).
+  ShadowCascades seen_from(const glm::dvec3& camera_position_ecef) const;
 
  private:
   ShadowCascadeSettings settings_;

@@ -4,6 +4,8 @@
 // image; a point that lies behind the terrain seen at its pixel is buried, i.e. occluded. The
 // radius grows with distance (a fraction of it), so valleys darken at every scale of the view.
 // The kernel turns by one of 16 angles in a 4x4 pattern, which ssao_blur.frag averages away.
+// It may run at a fraction of the G-buffer's resolution (u_step 2: half each way): each of its
+// pixels then stands for the G-buffer pixel at u_step times its coordinates.
 precision highp float;
 
 #include "gbuffer.glsl"
@@ -18,6 +20,7 @@ uniform vec2 u_tan_half_fov;
 uniform vec3 u_kernel[kSamples];  // unit hemisphere (z up), ssao_pass.hpp
 uniform float u_radius_fraction;  // radius / distance
 uniform float u_intensity;        // ssao_pass.hpp
+uniform int u_step;               // G-buffer pixels per occlusion pixel, each way (1 or 2)
 
 in vec2 v_uv;
 out vec4 frag_ao;
@@ -27,14 +30,15 @@ const float kRotations[16] =
 
 void main() {
   ivec2 size = textureSize(u_distance, 0);
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float distance_m = read_distance(u_distance, pixel, u_packed_distance);
+  ivec2 pixel = ivec2(gl_FragCoord.xy);  // in the occlusion's resolution: the rotation pattern
+  ivec2 source = pixel * u_step;         // the G-buffer pixel it stands for
+  float distance_m = read_distance(u_distance, source, u_packed_distance);
   if (distance_m <= 0.0) {
     frag_ao = vec4(1.0);
     return;
   }
-  vec3 position = view_ray((vec2(pixel) + 0.5) / vec2(size), u_tan_half_fov) * distance_m;
-  vec3 normal = decode_normal(texelFetch(u_normal, pixel, 0));
+  vec3 position = view_ray((vec2(source) + 0.5) / vec2(size), u_tan_half_fov) * distance_m;
+  vec3 normal = decode_normal(texelFetch(u_normal, source, 0));
   float radius = u_radius_fraction * distance_m;
 
   float angle = (kRotations[(pixel.x & 3) + 4 * (pixel.y & 3)] + 0.5) * (6.2831853 / 16.0);
