@@ -32,6 +32,7 @@ struct ViewArgs {
   int frames = 0;
   std::string script, screenshot;
   double timeout_s = 120.0;
+  bool no_moving_frame = false;
 };
 
 int run_view(const ViewArgs& a) {
@@ -60,6 +61,7 @@ int run_view(const ViewArgs& a) {
   o.task_file = a.waypoints.task_file;
   o.airspace_files = a.airspace.files;
   o.thermals = a.waypoints.thermals_for(o.style.tracks.color_by);
+  o.moving_frame = !a.no_moving_frame;
   return view::run_viewer(o);
 }
 
@@ -75,7 +77,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "Files dropped on the window are opened. Needs a display (X11, Wayland, or xvfb-run).\n"
       "Scripted: --frames N renders N frames and prints the frame times; --script FILE runs commands\n"
       "(orbit DX DY, pan DX DY, zoom STEPS, select TRACK, hover X Y, print-hover, print-marker,\n"
-      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH, window-screenshot PATH,\n"
+      "print-camera, play SECONDS, speed X, wait FRAMES, screenshot PATH, window-screenshot PATH, print-frame-times,\n"
       "record-film PATH SECONDS (a film as the replay panel's \"record film\" makes it), start-film PATH SECONDS,\n"
       "cancel-film, film-size W H, film-fps N, film-camera follow|orbit|fixed);\n"
       "--screenshot OUT.png"
@@ -92,6 +94,9 @@ void add_view_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--timeout", args->timeout_s, "Seconds a scripted screenshot waits for terrain tiles (default 120)")
       ->type_name("S");
   cmd->add_flag("--verbose", args->verbose, "Log the GL context");
+  cmd->add_flag("--no-moving-frame", args->no_moving_frame,
+                "Draw the full frame while the camera moves too (by default a moving camera gets half the resolution, "
+                "no ambient occlusion and the last shadows, and the full frame once it rests for 0.2 s)");
   cmd->add_option("--frames", args->frames,
                   "Render N frames, print their mean and median time to standard error, then exit")
       ->type_name("N");

@@ -7,13 +7,16 @@ namespace trailray::render {
 void ImageTarget::receive(const ColorDepthTarget& frame) { image = read_rgba8(0, 0, frame.width(), frame.height()); }
 
 void DefaultFramebufferTarget::receive(const ColorDepthTarget& frame) {
+  const int width = window_width_px > 0 ? window_width_px : frame.width();
+  const int height = window_height_px > 0 ? window_height_px : frame.height();
+  const bool scaled = width != frame.width() || height != frame.height();
   frame.bind();
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, frame.width(), frame.height(), 0, 0, frame.width(), frame.height(), GL_COLOR_BUFFER_BIT,
-                    GL_NEAREST);
+  glBlitFramebuffer(0, 0, frame.width(), frame.height(), 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                    scaled ? GL_LINEAR : GL_NEAREST);
   // Left bound and covered, so what the window draws next (its interface) lands on the frame.
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, frame.width(), frame.height());
+  glViewport(0, 0, width, height);
 }
 
 }  // namespace trailray::render

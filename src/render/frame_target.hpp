@@ -37,11 +37,15 @@ class ImageTarget : public FrameTarget {
   scene::RgbaImage image;  // the last frame received
 };
 
-// The frame copied into the default framebuffer (a window's, which must be the lens's size),
-// which is left bound with a viewport over all of it.
+// The frame copied into the default framebuffer (a window's), which is left bound with a
+// viewport over all of it. The window is the lens's size, or `window_width_px` x
+// `window_height_px` when set: a smaller frame (the viewer's while the camera moves) is then
+// scaled up to it, filtered linearly.
 class DefaultFramebufferTarget : public FrameTarget {
  public:
   void receive(const ColorDepthTarget& frame) override;
+
+  int window_width_px = 0, window_height_px = 0;  // 0: the frame's size
 };
 
 }  // namespace trailray::render

@@ -38,6 +38,7 @@ constexpr Syntax kSyntax[] = {
     {"screenshot", Kind::screenshot, 0, false, "screenshot PATH", true},
     {"window-screenshot", Kind::window_screenshot, 0, false, "window-screenshot PATH", true},
     {"hide-panels", Kind::hide_panels, 0, false, "hide-panels"},
+    {"print-frame-times", Kind::print_frame_times, 0, false, "print-frame-times"},
     {"record-film", Kind::record_film, 1, true, "record-film PATH SECONDS", true},
     {"start-film", Kind::start_film, 1, true, "start-film PATH SECONDS", true},
     {"cancel-film", Kind::cancel_film, 0, false, "cancel-film"},
@@ -83,8 +84,8 @@ ViewScript parse_view_script(std::string_view text, const std::string& file) {
       fail(
           fmt::format("unknown command '{}' (orbit, pan, zoom, select, select-waypoint, print-waypoints, hover, "
                       "print-hover, print-marker, "
-                      "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels, record-film, "
-                      "start-film, cancel-film, film-size, film-fps, film-camera)",
+                      "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels, "
+                      "print-frame-times, record-film, start-film, cancel-film, film-size, film-fps, film-camera)",
                       w[0]));
     ScriptCommand c;
     c.kind = syntax->kind;

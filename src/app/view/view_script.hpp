@@ -18,6 +18,8 @@
 //   screenshot PATH   waits for the view's tiles, then writes the picture (as `render` would)
 //   window-screenshot PATH  the window as shown, panels included (after the next frame)
 //   hide-panels       draws the 3D view alone from now on (no panels, markers or tooltip)
+//   print-frame-times prints the times of the frames drawn since the last print (or the start),
+//                     those drawn while the camera moved and those at rest apart; draws no frame
 //   record-film PATH SECONDS  records a film of SECONDS (as the "record film" window is set:
 //                     camera, size, rate), drawing frames until it is written
 //   start-film PATH SECONDS   starts recording it and goes on (`wait` draws its frames meanwhile)
@@ -58,6 +60,7 @@ struct ScriptCommand {
     screenshot,
     window_screenshot,
     hide_panels,
+    print_frame_times,
     record_film,
     start_film,
     cancel_film,

@@ -25,6 +25,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// A scripted frame counts as this much time for the moving frame's rest (moving_frame.hpp), so
+// scripts see the same frames reduced on any machine: after a move, 6 frames, then the full one.
+constexpr double kScriptedFrameS = 1.0 / 30.0;
+
 // "frames: 100, mean 41.2 ms, median 40.8 ms (24.5 fps)".
 std::string frame_time_summary(const std::string& what, std::vector<double> ms) {
   const double mean = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
@@ -69,6 +73,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.settings.sun_time_unix = sun_time(o.sun_time_unix, recorded_);
   model_.analysis = o.analysis;
   model_.settings.show_waypoints = !o.no_waypoints;
+  model_.settings.moving_frame = o.moving_frame;
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
   // Place labels: a file that cannot be read stops the start, as in `render`.
@@ -154,6 +159,7 @@ scene::Scene ViewerApp::scene() {
 }
 
 void ViewerApp::frame(double wall_s, bool scripted) {
+  const Clock::time_point start = Clock::now();
   window_.poll_events();
   take_dropped_files();
   step_film();  // the film's frames first: the panels show how far it is
@@ -190,6 +196,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     controller_.fly_to(look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
   }
   const scene::Camera camera = controller_.camera();
+  frame_moving_ = motion_.moving(camera, scripted ? kScriptedFrameS : wall_s);
   if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
 
   OverlayState overlay{
@@ -199,7 +206,7 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     const scene::TrackStyle& style = model_.settings.style.tracks;
     draw_legend_overlay(scene::color_legend_for(style, model_.color_range()), legend_key(style));
   }
-  if (width > 0 && height > 0) draw_scene_into_window(wall_s);
+  if (width > 0 && height > 0) draw_scene_into_window(wall_s, frame_moving_ && model_.settings.moving_frame);
   imgui_.render();
   if (!window_grab_.empty() && width > 0 && height > 0) {
     scene::write_srgb_png(window_grab_, window_.read_pixels());
@@ -207,10 +214,11 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     window_grab_.clear();
   }
   window_.swap_buffers();
+  frame_times_.push_back({std::chrono::duration<double, std::milli>(Clock::now() - start).count(), frame_moving_});
 }
 
 // The scene without waiting for tiles, straight into the window; the profiler's figures.
-void ViewerApp::draw_scene_into_window(double wall_s) {
+void ViewerApp::draw_scene_into_window(double wall_s, bool reduced) {
   // Never wait: the tiles stream in coarse-to-fine while the loaders work between frames.
   scene::TileLoadPolicy never_wait;
   never_wait.wait = false;
@@ -218,7 +226,26 @@ void ViewerApp::draw_scene_into_window(double wall_s) {
   render::DefaultFramebufferTarget window;
   window.profiler = &profiler_;
   window.pixel_ratio = window_.content_scale();
-  const render::FrameReport drawn = renderer_.draw(scene(), controller_.camera(), window);
+  const scene::Camera full = controller_.camera();
+  render::FrameReport drawn;
+  if (reduced) {
+    // Fewer pixels, scaled up into the window; labels shrink with them to keep their place.
+    window.window_width_px = static_cast<int>(full.lens().width_px);
+    window.window_height_px = static_cast<int>(full.lens().height_px);
+    window.pixel_ratio /= kMovingFrameDivisor;
+    render::FrameOptions moving;
+    moving.reuse_shadow_maps = true;
+    moving.ssao = false;
+    scene::Scene s = scene();
+    s.style = reduced_style(s.style);
+    for (scene::PixelRect& r : s.label_keep_out)  // in the reduced frame's pixels (rounded outwards)
+      r = {r.x / kMovingFrameDivisor, r.y / kMovingFrameDivisor,
+           (r.width + 2 * kMovingFrameDivisor - 1) / kMovingFrameDivisor,
+           (r.height + 2 * kMovingFrameDivisor - 1) / kMovingFrameDivisor};
+    drawn = renderer_.draw(s, reduced_camera(full), window, moving);
+  } else {
+    drawn = renderer_.draw(scene(), full, window);
+  }
   progress_ = drawn.terrain.progress;
   model_.loading = progress_.pending() > 0;
   model_.profile = profiler_table(profiler_, wall_s);
@@ -257,6 +284,16 @@ void ViewerApp::print_frame_times(const std::vector<double>& all_ms, const std::
     profiler_.finish();
     fmt::print(stderr, "{}", profiler_.table());
   }
+}
+
+std::string ViewerApp::frame_times_since_last_print() {
+  std::vector<double> moving, resting;
+  for (const TimedFrame& f : frame_times_) (f.moving ? moving : resting).push_back(f.ms);
+  frame_times_.clear();
+  const auto part = [](const char* what, const std::vector<double>& ms) {
+    return ms.empty() ? fmt::format("{}: none", what) : frame_time_summary(what, ms);
+  };
+  return part("frames while moving", moving) + "; " + part("frames at rest", resting);
 }
 
 int ViewerApp::run() {

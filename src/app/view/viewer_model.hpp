@@ -52,6 +52,7 @@ struct ViewerSettings {
        show_chart = true, show_replay = true, show_film = false;
   bool show_waypoints = true;  // the pins and labels of waypoints and places (--no-waypoints: false)
   bool show_airspace = true;   // the volumes of --airspace
+  bool moving_frame = true;    // a cheaper frame while the camera moves (moving_frame.hpp)
 };
 
 // The frame profiler's rows as the profiler panel shows them (a plain table, so the panel does not

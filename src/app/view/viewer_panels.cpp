@@ -302,6 +302,10 @@ void shading_window(ViewerModel& model) {
   ImGui::Checkbox("shadows", &shading.shadows);
   ImGui::Checkbox("ambient occlusion (SSAO)", &shading.ssao);
   ImGui::Checkbox("atmosphere", &shading.atmosphere);
+  ImGui::Checkbox("cheaper frame while moving", &s.moving_frame);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "half resolution, no ambient occlusion, shadows not redrawn; the full frame once the camera rests");
   ImGui::Checkbox("snow", &shading.snow.enabled);
   if (shading.snow.enabled) {
     float snowline = static_cast<float>(shading.snow.snowline_m);

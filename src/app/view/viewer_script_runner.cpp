@@ -135,6 +135,10 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
       case Kind::hide_panels:
         panels_ = false;
         break;
+      case Kind::print_frame_times:
+        fmt::print("{}\n", frame_times_since_last_print());
+        frames = 0;
+        break;
       case Kind::record_film:
       case Kind::start_film:
         model_.film.path = c.path;

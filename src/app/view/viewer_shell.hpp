@@ -14,6 +14,7 @@
 #include "app/terminal_diagnostics.hpp"
 #include "app/view/camera_controller.hpp"
 #include "app/view/film_session.hpp"
+#include "app/view/moving_frame.hpp"
 #include "app/view/track_loading.hpp"
 #include "app/view/view_script.hpp"
 #include "app/view/viewer_app.hpp"
@@ -45,7 +46,8 @@ class ViewerApp {
   // One frame: input (unless scripted), scene, panels, overlays, swap. `wall_s` drives the
   // replay clock and the camera's flights.
   void frame(double wall_s, bool scripted);
-  void draw_scene_into_window(double wall_s);
+  // `reduced`: the moving frame (moving_frame.hpp).
+  void draw_scene_into_window(double wall_s, bool reduced);
   void handle_mouse(const scene::Camera& camera);
   void handle_keys(double wall_s);
   void take_dropped_files();
@@ -73,6 +75,8 @@ class ViewerApp {
   void step_film();
   void cancel_film();
   void print_frame_times(const std::vector<double>& all_ms, const std::vector<double>& settled_ms);
+  // `print-frame-times`: the frames drawn since the last call, moving and at rest apart.
+  std::string frame_times_since_last_print();
   double sun_unix_time() const;
   TrackLoadInputs load_inputs(double neutral) const;
 
@@ -92,6 +96,13 @@ class ViewerApp {
   render::Renderer renderer_;
   render::FrameProfiler profiler_;
   CameraController controller_;
+  MotionWatch motion_;
+  bool frame_moving_ = false;  // the last frame's camera was moving
+  struct TimedFrame {
+    double ms;
+    bool moving;
+  };
+  std::vector<TimedFrame> frame_times_;  // since the last print-frame-times
   std::vector<std::future<LoadedViewerTracks>> loading_;
   terrain::LoadProgress progress_;
   std::string status_;                       // a line at the bottom (screenshot written, ...)
