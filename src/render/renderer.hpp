@@ -3,11 +3,12 @@
 // terrain view for the tiles to draw, uploads what is not on the GPU yet (tile meshes, imagery,
 // track buffers by (id, revision)) and runs the frame's passes (DESIGN.md "The frame"):
 //
-//   shadows    the sun's cascaded shadow maps, terrain and tracks as casters
+//   shadows    the sun's cascaded shadow maps, terrain and tracks as casters; rendered only when
+//              what they hold changed (shadow_cache.hpp), else those of an earlier frame serve
 //   tiles      the terrain into the G-buffer (albedo, normal, distance)
 //   tracks     the tracks' visible hits into the G-buffer, then their overlay (ghosts, fringe,
 //              curtains)
-//   ssao       ambient occlusion from the G-buffer
+//   ssao       ambient occlusion from the G-buffer (at half resolution, upsampled)
 //   compose    sun, sky light, shadows, AO, atmosphere: the lit frame
 //   overlays   the track overlay blended over it
 //   volumes    airspaces and task cylinders: translucent walls, floor and ceiling outlines

@@ -20,6 +20,7 @@
 //   hide-panels       draws the 3D view alone from now on (no panels, markers or tooltip)
 //   print-frame-times prints the times of the frames drawn since the last print (or the start),
 //                     those drawn while the camera moved and those at rest apart; draws no frame
+//                     (with --verbose also the profiler's table of the last 60 frames)
 //   record-film PATH SECONDS  records a film of SECONDS (as the "record film" window is set:
 //                     camera, size, rate), drawing frames until it is written
 //   start-film PATH SECONDS   starts recording it and goes on (`wait` draws its frames meanwhile)

@@ -137,6 +137,10 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
         break;
       case Kind::print_frame_times:
         fmt::print("{}\n", frame_times_since_last_print());
+        if (options_.verbose) {  // and the renderer's share, per pass, of the last 60 frames
+          profiler_.finish();
+          fmt::print("{}", profiler_.table());
+        }
         frames = 0;
         break;
       case Kind::record_film:
