@@ -130,9 +130,9 @@ TEST_F(SceneShadowsTest, ProfiledFramesTimeEachPassOfTheFrame) {
   profiler.finish();
   EXPECT_EQ(profiler.frames_ended(), 3u);
   for (const PassTimes& pass : profiler.times()) {
-    const bool drawn = pass.name == "shadows" || pass.name == "tiles" || pass.name == "ssao" ||
-                       pass.name == "compose" || pass.name == "readback";
-    EXPECT_EQ(pass.cpu_samples, drawn ? 3u : 0u) << pass.name;
+    const bool drawn = pass.name == "tiles" || pass.name == "ssao" || pass.name == "compose" || pass.name == "readback";
+    // The same frame three times renders the shadow maps once (shadow_cache.hpp).
+    EXPECT_EQ(pass.cpu_samples, drawn ? 3u : pass.name == "shadows" ? 1u : 0u) << pass.name;
   }
 }
 
