@@ -185,7 +185,7 @@ Renderer::FrameShadows Renderer::frame_shadows(const FrameContent& content, cons
     return shadows;
   }
   ShadowMapKey key = shadow_map_key(*shadows.cascades, camera, {items, content.tracks, &content.track_settings});
-  if (!shadow_cache_.holds(key)) shadows.render_for = std::move(key);
+  if (frame.render_shadow_maps || !shadow_cache_.holds(key)) shadows.render_for = std::move(key);
   return shadows;
 }
 

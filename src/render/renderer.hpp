@@ -91,6 +91,9 @@ struct FrameOptions {
   bool reuse_shadow_maps = false;
   // false: no ambient occlusion this frame, whatever the shading asks.
   bool ssao = true;
+  // true: the shadow maps are rendered even when those of the last frame would serve (`render
+  // --profile` times every pass of the frame as drawn the first time).
+  bool render_shadow_maps = false;
 };
 
 // A frame's content once resolved from a scene: the terrain's tiles, the tracks' buffers, the

@@ -64,6 +64,14 @@ TEST_F(ShadowCacheTest, AFrameWithCachedMapsIsTheFreshlyRenderedFrame) {
   const test::Drawn reference = fresh.draw(camera, low_sun(270.0));
   ASSERT_EQ(again.image.rgba.size(), reference.image.rgba.size());
   EXPECT_EQ(bytes_differing(again.image, reference.image), 0u);
+  // Asked for (render --profile), they are rendered again, to the same picture.
+  scene::Scene lit = low_sun(270.0);
+  lit.terrain = &drawer.terrain();
+  ImageTarget target;
+  FrameOptions whole;
+  whole.render_shadow_maps = true;
+  EXPECT_TRUE(drawer.renderer().draw(lit, camera, target, whole).shadow_maps_rendered);
+  EXPECT_EQ(bytes_differing(target.image, reference.image), 0u);
   // And the shadows are there: without them the picture differs.
   scene::Scene unshadowed = low_sun(270.0);
   unshadowed.style.shading.shadows = false;
