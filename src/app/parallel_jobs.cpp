@@ -79,4 +79,15 @@ std::size_t run_parallel_jobs(std::size_t count, const std::function<bool(std::s
   return ran;
 }
 
+track::ParallelFor parallel_for(unsigned threads) {
+  return [threads](std::size_t count, const std::function<void(std::size_t)>& job) {
+    run_parallel_jobs(count,
+                      [&job](std::size_t i) {
+                        job(i);
+                        return true;
+                      },
+                      {threads, {}});
+  };
+}
+
 }  // namespace trailray::app

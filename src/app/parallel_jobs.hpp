@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <functional>
 
+#include "track/density.hpp"
+
 namespace trailray::app {
 
 // The threads to use: std::thread::hardware_concurrency(), at least 1.
@@ -25,5 +27,8 @@ struct ParallelJobsOptions {
 // (catch inside and keep the exception in its result). Returns the number of jobs that ran.
 std::size_t run_parallel_jobs(std::size_t count, const std::function<bool(std::size_t)>& job,
                               const ParallelJobsOptions& options = {});
+
+// run_parallel_jobs as the track layer's ParallelFor (neighbour counts), every job run.
+track::ParallelFor parallel_for(unsigned threads = 0);
 
 }  // namespace trailray::app

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "track/density.hpp"
 #include "track/io/parse_util.hpp"
 
 namespace trailray::app {
@@ -30,17 +31,26 @@ void add_track_style_options(CLI::App& command, StyleArgs& args) {
       .add_option("--color-by", args.color_by,
                   "Colour tracks by a per-point metric: speed km/h, vspeed m/s, slope %, altitude m, agl m "
                   "(height above the terrain), hr bpm, cadence rpm, power W, time (elapsed), phase (flights: the climb "
-                  "in m/s where circling in thermals, gliding in blue, the ground grey); default solid")
+                  "in m/s where circling in thermals, gliding in blue, the ground grey), density (many tracks: how "
+                  "many passed within --density-radius of each point, its own included), thermals (many flights: "
+                  "how many climbed in a thermal within --density-radius); default solid")
       ->type_name(metrics);
   command
       .add_option("--colormap", args.colormap,
                   "Colormap for --color-by (default turbo; diverging for vspeed: sink blue, zero white, climb red; "
-                  "warm for phase: weak climb yellow, strong dark red)")
+                  "warm for phase and thermals: weak climb or few flights yellow, strong or many dark red; magma "
+                  "for density: few tracks dark, many bright)")
       ->type_name("turbo|viridis|magma|cividis|diverging|warm");
   command
       .add_option("--range", args.range,
                   "Colour scale range in the metric's unit (default: 2nd to 98th percentile of the values)")
       ->type_name("MIN:MAX");
+  command
+      .add_option("--density-radius", args.density_radius_m,
+                  fmt::format("How near (horizontally) a track must pass a point to count for --color-by density "
+                              "or thermals, metres, {:g}..{:g} (default 100 for density, 200 for thermals)",
+                              track::kMinNeighbourRadiusM, track::kMaxNeighbourRadiusM))
+      ->type_name("M");
   command
       .add_option("--color", args.colors,
                   "Solid colour: one for every track, or one per track in order (default: a qualitative palette)")
@@ -117,6 +127,13 @@ scene::Style parse_style(const StyleArgs& args) {
     if (!style.range)
       throw CLI::ValidationError(
           "--range", fmt::format("'{}' is not MIN:MAX with finite numbers and MIN < MAX, e.g. 0:30", args.range));
+  }
+  if (!std::isnan(args.density_radius_m)) {
+    if (!(args.density_radius_m >= track::kMinNeighbourRadiusM && args.density_radius_m <= track::kMaxNeighbourRadiusM))
+      throw CLI::ValidationError("--density-radius",
+                                 fmt::format("'{}' is not a radius in {:g}..{:g} metres", args.density_radius_m,
+                                             track::kMinNeighbourRadiusM, track::kMaxNeighbourRadiusM));
+    style.neighbour_radius_m = args.density_radius_m;
   }
   for (const std::string& text : args.colors) {
     const auto color = scene::parse_hex_color(text);

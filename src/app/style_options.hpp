@@ -1,13 +1,14 @@
 #pragma once
 // How a scene is drawn, as options spelled the same in every command that draws (`render`,
 // `view`), parsed into the one scene::Style: the tracks (--width, --color-by, --colormap,
-// --range, --color, --route-color, --legend, --occlusion, --occluded-alpha, --occlusion-fade, --curtain) and the
-// shading (--time, --no-ssao, --no-atmosphere, --no-shadows, --snow, --snowline) and the labels
+// --range, --density-radius, --color, --route-color, --legend, --occlusion, --occluded-alpha, --occlusion-fade,
+// --curtain) and the shading (--time, --no-ssao, --no-atmosphere, --no-shadows, --snow, --snowline) and the labels
 // (--no-labels, --label-size, --hidden-labels). Parsing checks
 // every value and names the option in its error.
 
 #include <CLI/CLI.hpp>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ struct StyleArgs {
   std::string color_by = "solid";
   std::string colormap;  // empty: turbo, or diverging for signed metrics (vspeed)
   std::string range;     // empty: the robust automatic range
+  // NaN: not given, the metric's default (scene::default_neighbour_radius_m).
+  double density_radius_m = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::string> colors;
   std::string route_color;  // empty: scene::TrackStyle's
   std::string legend = "on";

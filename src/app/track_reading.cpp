@@ -86,7 +86,8 @@ std::vector<scene::Track> build_tracks_parallel(const std::vector<scene::LoadedT
     if (errors[i]) std::rethrow_exception(errors[i]);
     for (scene::Track& t : built[i]) tracks.push_back(std::move(t));
   }
-  scene::finish_tracks(tracks, style, diagnostics, first_palette_index);
+  // Density and thermals count over every track: the targets spread over the same threads.
+  scene::finish_tracks(tracks, style, diagnostics, first_palette_index, parallel_for(threads));
   return tracks;
 }
 

@@ -6,6 +6,7 @@
 
 #include "scene/airspace_volumes.hpp"
 #include "scene/text_raster.hpp"
+#include "scene/track_density.hpp"
 
 namespace trailray::scene {
 namespace {
@@ -36,6 +37,7 @@ std::optional<ColorLegend> color_legend_for(const TrackStyle& style, const std::
       metric == track::ColorMetric::time ? std::string_view("h:mm") : track::color_metric_unit(metric);
   legend.title = unit.empty() ? std::string(track::color_metric_label(metric))
                               : fmt::format("{} ({})", track::color_metric_label(metric), unit);
+  if (track::counts_neighbours(metric)) legend.title = neighbour_legend_title(metric, neighbour_radius_m(style));
   legend.map = style.colormap;
   legend.min_label = track::format_color_value(metric, range->min);
   legend.max_label = track::format_color_value(metric, range->max);

@@ -1,6 +1,7 @@
 #include "scene/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scene/sun_position.hpp"
 
@@ -17,6 +18,12 @@ std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style
       if (!line.values.empty()) values.push_back(line.values);
   }
   const auto range = track::robust_range(values, track::color_metric_is_signed(metric));
+  if (track::counts_neighbours(metric) && range) {
+    // Counts are whole numbers: whole ends, at least one apart. Thermals start at 0 (no flight
+    // climbed here); a density count is at least 1 (the point's own track).
+    const double low = metric == track::ColorMetric::thermals ? 0.0 : std::max(1.0, std::floor(range->min));
+    return track::ValueRange{low, std::max(std::ceil(range->max), low + 1.0)};
+  }
   if (metric != track::ColorMetric::phase) return range;
   // The climb in thermals starts at zero (a circle that loses height is as good as none) and
   // shows at least 1 m/s; gliding alone (no circling value) still gets a scale for the legend.

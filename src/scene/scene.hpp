@@ -44,7 +44,8 @@ struct Scene {
 };
 
 // The colour scale: style.tracks.range, else the robust range over the values of the visible
-// tracks coloured by value (nullopt: solid, or no value anywhere).
+// tracks coloured by value (nullopt: solid, or no value anywhere): 2nd to 98th percentile; the
+// counts of density and thermals to whole ends (thermals from 0, density from at least 1).
 std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style& style);
 
 // Unit vector towards the sun in ECEF: the fixed direction when there is one, else the sun's at

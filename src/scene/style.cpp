@@ -9,8 +9,17 @@
 namespace trailray::scene {
 
 Colormap default_colormap(track::ColorMetric metric) {
-  if (metric == track::ColorMetric::phase) return Colormap::warm;
+  if (metric == track::ColorMetric::phase || metric == track::ColorMetric::thermals) return Colormap::warm;
+  if (metric == track::ColorMetric::density) return Colormap::magma;
   return track::color_metric_is_signed(metric) ? Colormap::diverging : Colormap::turbo;
+}
+
+double default_neighbour_radius_m(track::ColorMetric metric) {
+  return metric == track::ColorMetric::thermals ? 200.0 : 100.0;
+}
+
+double neighbour_radius_m(const TrackStyle& style) {
+  return style.neighbour_radius_m.value_or(default_neighbour_radius_m(style.color_by));
 }
 
 Result<TrackWidth> parse_track_width(std::string_view text) {

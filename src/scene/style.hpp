@@ -44,6 +44,9 @@ struct TrackStyle {
   Colormap colormap = Colormap::turbo;
   std::optional<track::ValueRange> range;  // nullopt: the robust range of the visible tracks' values
   std::vector<glm::vec3> colors;           // `--color`, sRGB: none (the palette), one for all, or one per track
+  // `--density-radius`: how near a track must pass to count for density and thermals; nullopt:
+  // default_neighbour_radius_m of the metric.
+  std::optional<double> neighbour_radius_m;
   // Routes (planned, GPX rte): a solid colour unlike the palette's that reads on terrain
   // (`--route-color`), half the tracks' width, dashed.
   glm::vec3 route_color{1.0f, 0.88f, 0.0f};
@@ -90,8 +93,16 @@ struct LabelStyle {
 inline constexpr int kMinLabelSizePx = 6, kMaxLabelSizePx = 96;
 
 // The colormap a metric gets unless one is asked for: diverging for signed metrics (vspeed),
-// warm for the climb in thermals (phase), turbo for the rest.
+// warm for the climb in thermals (phase, and the thermal map: thermals), magma for density (a
+// heat map: few tracks dark, many bright), turbo for the rest.
 Colormap default_colormap(track::ColorMetric metric);
+
+// The radius of density and thermals unless one is given: 100 m for density (a street, a
+// valley's path: runs on the two pavements count together, the next street not), 200 m for
+// thermals (a thermal's circles and their drift with the wind).
+double default_neighbour_radius_m(track::ColorMetric metric);
+// The style's radius for its metric.
+double neighbour_radius_m(const TrackStyle& style);
 
 struct Style {
   TrackStyle tracks;

@@ -11,6 +11,7 @@
 #include "geo/wgs84.hpp"
 #include "scene/camera.hpp"
 #include "scene/colormap.hpp"
+#include "scene/track_density.hpp"
 #include "terrain/height_sampler.hpp"
 #include "track/clean.hpp"
 #include "track/flight/phase_values.hpp"
@@ -93,7 +94,8 @@ void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
 }
 
 // The colour values of a recorded track for a metric: phase from its flight analysis, the others
-// from its points and metrics.
+// from its points and metrics (density and thermals: none yet, apply_neighbour_counts on all the
+// tracks gives them).
 std::vector<std::vector<float>> values_for(const Track& t, track::ColorMetric metric,
                                            const std::vector<std::vector<double>>* ground) {
   if (metric != track::ColorMetric::phase) return track::color_values(t.cleaned, t.metrics, metric, ground);
@@ -213,7 +215,8 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
       ground = sample_ground_heights(t.cleaned, options.heights);
     t.is_route = named.is_route();
     t.by_value = !t.is_route;
-    if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase))
+    if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase ||
+                        style.color_by == track::ColorMetric::thermals))
       t.flights = std::make_shared<const track::flight::FlightAnalysis>(track::flight::analyse_flights(named.raw()));
     std::vector<std::vector<float>> values;
     if (t.is_route)
@@ -231,8 +234,15 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
 }
 
 void finish_tracks(std::vector<Track>& tracks, const TrackStyle& style, Diagnostics& diagnostics,
-                   std::size_t first_palette_index) {
+                   std::size_t first_palette_index, const track::ParallelFor& parallel) {
   assign_colors(tracks, style, first_palette_index);
+  if (track::counts_neighbours(style.color_by)) {
+    const std::size_t sources = apply_neighbour_counts(tracks, style.color_by, neighbour_radius_m(style), parallel);
+    if (style.color_by == track::ColorMetric::thermals && sources == 0 && !tracks.empty())
+      diagnostics.warning(
+          "--color-by thermals: no flight climbed in a thermal (it needs flights with times and altitudes that "
+          "circled): every point counts 0");
+  }
   std::size_t points_with_value = 0;
   for (const Track& t : tracks)
     if (!t.is_route) points_with_value += t.points_with_value();

@@ -11,6 +11,7 @@
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
 #include "terrain/tile_source.hpp"
+#include "track/density.hpp"
 #include "track/statistics.hpp"
 
 namespace trailray::scene {
@@ -43,10 +44,12 @@ std::vector<Track> build_tracks(const std::vector<LoadedTrackFile>& files, const
 // file, in build_tracks' order, without their colours; throws as build_tracks for agl without terrain.
 std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackStyle& style,
                                      const TrackBuildOptions& options);
-// Then, on all the files' tracks in order: the colours (build_tracks' errors for --color) and the
-// note when no point has a value for the metric.
+// Then, on all the files' tracks in order: the colours (build_tracks' errors for --color), the
+// values of density and thermals (which need every track: track_density.hpp, the tracks spread
+// over `parallel`), and the note when no point has a value for the metric (or, for thermals,
+// no flight climbed).
 void finish_tracks(std::vector<Track>& tracks, const TrackStyle& style, Diagnostics& diagnostics,
-                   std::size_t first_palette_index = 0);
+                   std::size_t first_palette_index = 0, const track::ParallelFor& parallel = {});
 
 // Fills the flat per-point numbers of a track from its cleaned points and metrics; `ground` per
 // segment and point (empty: none). Throws std::invalid_argument when the metrics or the ground
@@ -62,6 +65,7 @@ void set_ground_heights(Track& track, terrain::HeightSource& heights);
 // Replaces the colour values in the track's geometry by `metric`'s (none for solid) and bumps its
 // revision; a route keeps its values (metres along it) and revision. Throws std::invalid_argument
 // for agl on a track without ground heights, and for phase on a track without its flight analysis.
+// density and thermals: no values (NaN); apply_neighbour_counts over all the tracks then gives them.
 void apply_color_metric(Track& track, track::ColorMetric metric);
 
 // Curtains (walls down to the ground) on or off: each line's heights above the ground from

@@ -21,7 +21,7 @@ struct MetricInfo {
 };
 
 // One row per enum value, in enum order (color_metric_names relies on it).
-constexpr std::array<MetricInfo, 11> kMetrics{{
+constexpr std::array<MetricInfo, 13> kMetrics{{
     {ColorMetric::solid, "solid", "", ""},
     {ColorMetric::speed, "speed", "Speed", "km/h"},
     {ColorMetric::vspeed, "vspeed", "Vertical speed", "m/s"},
@@ -33,6 +33,8 @@ constexpr std::array<MetricInfo, 11> kMetrics{{
     {ColorMetric::power, "power", "Power", "W"},
     {ColorMetric::time, "time", "Elapsed time", ""},
     {ColorMetric::phase, "phase", "Climb in thermals", "m/s"},
+    {ColorMetric::density, "density", "Tracks nearby", "tracks"},
+    {ColorMetric::thermals, "thermals", "Flights climbing nearby", "flights"},
 }};
 
 const MetricInfo& info(ColorMetric metric) {
@@ -211,6 +213,8 @@ std::string format_color_value(ColorMetric metric, double value) {
     case ColorMetric::hr:
     case ColorMetric::cadence:
     case ColorMetric::power:
+    case ColorMetric::density:
+    case ColorMetric::thermals:
       return fixed(value, 0);
   }
   return fixed(value, 1);

@@ -18,7 +18,25 @@
 
 namespace trailray::track {
 
-enum class ColorMetric { solid, speed, vspeed, slope, altitude, agl, hr, cadence, power, time, phase };
+enum class ColorMetric {
+  solid,
+  speed,
+  vspeed,
+  slope,
+  altitude,
+  agl,
+  hr,
+  cadence,
+  power,
+  time,
+  phase,
+  density,  // how many tracks pass within a radius (track/density.hpp): needs every track at once
+  thermals  // how many flights climbed in a thermal within a radius: the same, over the climbs
+};
+
+// density and thermals: a count over all the tracks of a scene, not a value of one track's points
+// (scene/track_density.hpp computes them where the tracks are finished together).
+inline bool counts_neighbours(ColorMetric m) { return m == ColorMetric::density || m == ColorMetric::thermals; }
 
 // Flight phases (`phase`, track/flight/phase_values.hpp): circling points carry their climb in
 // m/s, gliding points this marker value (a category drawn in one fixed colour, not a number on
@@ -28,7 +46,8 @@ enum class ColorMetric { solid, speed, vspeed, slope, altitude, agl, hr, cadence
 inline constexpr float kCategoryValue = -1.0e30f;
 inline bool is_category_value(float v) { return v <= -1.0e29f && v >= -1.0e31f; }
 
-// "solid", "speed", "vspeed", "slope", "altitude", "agl", "hr", "cadence", "power", "time", "phase".
+// "solid", "speed", "vspeed", "slope", "altitude", "agl", "hr", "cadence", "power", "time", "phase",
+// "density", "thermals".
 std::string_view color_metric_name(ColorMetric metric);
 std::optional<ColorMetric> parse_color_metric(std::string_view name);  // exact lower-case names
 std::vector<std::string_view> color_metric_names();                    // every name, in enum order
@@ -36,7 +55,8 @@ std::vector<std::string_view> color_metric_names();                    // every 
 // What the legend prints: "Speed", "Vertical speed", "Steepness", "Altitude", "Height above
 // ground", "Heart rate", "Cadence", "Power", "Elapsed time"; and the unit: "km/h", "m/s", "%",
 // "m", "m", "bpm", "rpm", "W", "" (time is printed as h:mm, see format_color_value); phase:
-// "Climb in thermals", "m/s".
+// "Climb in thermals", "m/s"; density: "Tracks nearby", "tracks"; thermals: "Flights climbing
+// nearby", "flights" (the legend names the radius: scene/track_density.hpp).
 std::string_view color_metric_label(ColorMetric metric);
 std::string_view color_metric_unit(ColorMetric metric);
 
@@ -56,7 +76,8 @@ std::string format_color_value(ColorMetric metric, double value);
 // `ground_heights_m` (only for agl): per segment and point, the terrain height below the point
 // (NaN where unknown); agl = ele - ground. solid gives an all-NaN vector per segment.
 // Elapsed time counts from the track's first timestamp. phase needs the flight analysis and
-// gives all-NaN here: its values come from flight::phase_color_values.
+// gives all-NaN here: its values come from flight::phase_color_values; so do density and thermals
+// (their counts need every track: scene/track_density.hpp).
 // Throws std::invalid_argument when the shapes do not match the track (metrics only checked for
 // the metrics that read them: speed, vspeed, slope, time), or for agl without ground heights.
 std::vector<std::vector<float>> color_values(const Track& track, const TrackMetrics& metrics, ColorMetric metric,

@@ -119,7 +119,18 @@ void ViewerApp::adopt(LoadedViewerTracks loaded) {
     diagnostics_.error(e);
     model_.errors.push_back(std::move(e));
   }
+  // Density and thermals count every track open: files added to open ones change all the counts
+  // (the first files were counted together as they were built).
+  const bool recount = !loaded.tracks.empty() && !model_.tracks.empty();
   for (scene::Track& t : loaded.tracks) model_.tracks.add(std::move(t));
+  const scene::TrackStyle& style = model_.settings.style.tracks;
+  if (recount && track::counts_neighbours(style.color_by)) {
+    try {
+      apply_color_metric(model_.tracks, style.color_by, style.neighbour_radius_m);
+    } catch (const std::exception& e) {
+      model_.errors.emplace_back(e.what());
+    }
+  }
   if (!loaded.waypoints.empty()) {
     for (scene::Waypoint& w : loaded.waypoints) {
       w.visible = model_.settings.show_waypoints;

@@ -1,9 +1,11 @@
 // The viewer model's shared computations: the cached colour scale, colouring every track.
 #include <cmath>
 
+#include "app/parallel_jobs.hpp"
 #include "app/view/viewer_model.hpp"
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
+#include "scene/track_density.hpp"
 
 namespace trailray::app::view {
 
@@ -22,8 +24,12 @@ const std::optional<track::ValueRange>& ColorRangeCache::get(const scene::TrackS
   return value_;
 }
 
-void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric) {
+void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric, std::optional<double> neighbour_radius_m) {
   for (scene::Track& t : tracks.tracks()) scene::apply_color_metric(t, metric);
+  if (track::counts_neighbours(metric))
+    scene::apply_neighbour_counts(tracks.tracks(), metric,
+                                  neighbour_radius_m.value_or(scene::default_neighbour_radius_m(metric)),
+                                  parallel_for());
 }
 
 void apply_curtain(scene::TrackSet& tracks, bool on) {

@@ -114,9 +114,11 @@ struct ViewerModel {
   ColorRangeCache color_range_;
 };
 
-// Every track's colour values for `metric` (none for solid); throws std::invalid_argument for agl
-// on a track without ground heights.
-void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric);
+// Every track's colour values for `metric` (none for solid); density and thermals counted over
+// all the tracks within `neighbour_radius_m` (nullopt: the metric's default), on every core.
+// Throws std::invalid_argument for agl on a track without ground heights.
+void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric,
+                        std::optional<double> neighbour_radius_m = std::nullopt);
 // Curtains on or off for every track.
 void apply_curtain(scene::TrackSet& tracks, bool on);
 

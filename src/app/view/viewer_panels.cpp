@@ -20,6 +20,7 @@
 #include "app/view/viewer_panels.hpp"
 #include "scene/volume_shapes.hpp"
 #include "scene/waypoint_building.hpp"
+#include "track/density.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -56,20 +57,31 @@ void colour_scale_controls(ViewerModel& model) {
   int metric = static_cast<int>(s.color_by);
   if (name_combo("colour by", metric, track::color_metric_names())) {
     const track::ColorMetric previous = s.color_by;
+    const auto next = static_cast<track::ColorMetric>(metric);
     try {
-      apply_color_metric(model.tracks, static_cast<track::ColorMetric>(metric));
-      s.color_by = static_cast<track::ColorMetric>(metric);
+      apply_color_metric(model.tracks, next, s.neighbour_radius_m);
+      s.color_by = next;
       s.range.reset();  // another metric's range means nothing for this one
-      // Into or out of phase: its own warm map, which means little for other metrics.
-      if (previous == track::ColorMetric::phase || s.color_by == track::ColorMetric::phase)
+      // Into or out of a metric with a map of its own (phase, density, thermals): it means little
+      // for the others.
+      if (scene::default_colormap(previous) != scene::default_colormap(s.color_by))
         s.colormap = scene::default_colormap(s.color_by);
     } catch (const std::exception& e) {
-      model.errors.push_back(
-          fmt::format("colour by {}: {}", track::color_metric_name(static_cast<track::ColorMetric>(metric)), e.what()));
-      apply_color_metric(model.tracks, previous);
+      model.errors.push_back(fmt::format("colour by {}: {}", track::color_metric_name(next), e.what()));
+      apply_color_metric(model.tracks, previous, s.neighbour_radius_m);
     }
   }
   if (s.color_by == track::ColorMetric::solid) return;
+  if (track::counts_neighbours(s.color_by)) {
+    // Counted again once the slider is let go: a season of tracks takes a moment.
+    auto radius = static_cast<float>(scene::neighbour_radius_m(s));
+    ImGui::SliderFloat("radius", &radius, 10.0f, 5000.0f, "%.0f m", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemDeactivatedAfterEdit() && radius >= track::kMinNeighbourRadiusM &&
+        radius <= track::kMaxNeighbourRadiusM) {
+      s.neighbour_radius_m = static_cast<double>(radius);
+      apply_color_metric(model.tracks, s.color_by, s.neighbour_radius_m);
+    }
+  }
   static constexpr const char* kColormaps[] = {"turbo", "viridis", "magma", "cividis", "diverging", "warm"};
   int map = static_cast<int>(s.colormap);
   if (name_combo("colormap", map, std::vector<std::string>(std::begin(kColormaps), std::end(kColormaps))))
