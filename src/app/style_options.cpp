@@ -46,7 +46,7 @@ void add_track_style_options(CLI::App& command, StyleArgs& args) {
                   "Colour scale range in the metric's unit (default: 2nd to 98th percentile of the values)")
       ->type_name("MIN:MAX");
   command
-      .add_option("--density-radius", args.density_radius_m,
+      .add_option("--density-radius", args.density_radius,
                   fmt::format("How near (horizontally) a track must pass a point to count for --color-by density "
                               "or thermals, metres, {:g}..{:g} (default 100 for density, 200 for thermals)",
                               track::kMinNeighbourRadiusM, track::kMaxNeighbourRadiusM))
@@ -128,12 +128,16 @@ scene::Style parse_style(const StyleArgs& args) {
       throw CLI::ValidationError(
           "--range", fmt::format("'{}' is not MIN:MAX with finite numbers and MIN < MAX, e.g. 0:30", args.range));
   }
-  if (!std::isnan(args.density_radius_m)) {
-    if (!(args.density_radius_m >= track::kMinNeighbourRadiusM && args.density_radius_m <= track::kMaxNeighbourRadiusM))
+  if (!args.density_radius.empty()) {
+    const std::string& text = args.density_radius;
+    double radius = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), radius);
+    if (ec != std::errc() || end != text.data() + text.size() ||
+        !(radius >= track::kMinNeighbourRadiusM && radius <= track::kMaxNeighbourRadiusM))
       throw CLI::ValidationError("--density-radius",
-                                 fmt::format("'{}' is not a radius in {:g}..{:g} metres", args.density_radius_m,
+                                 fmt::format("'{}' is not a radius in {:g}..{:g} metres", args.density_radius,
                                              track::kMinNeighbourRadiusM, track::kMaxNeighbourRadiusM));
-    style.neighbour_radius_m = args.density_radius_m;
+    style.neighbour_radius_m = radius;
   }
   for (const std::string& text : args.colors) {
     const auto color = scene::parse_hex_color(text);

@@ -8,7 +8,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,10 +20,9 @@ struct StyleArgs {
   // Tracks.
   std::string width = "5px";
   std::string color_by = "solid";
-  std::string colormap;  // empty: turbo, or diverging for signed metrics (vspeed)
-  std::string range;     // empty: the robust automatic range
-  // NaN: not given, the metric's default (scene::default_neighbour_radius_m).
-  double density_radius_m = std::numeric_limits<double>::quiet_NaN();
+  std::string colormap;        // empty: turbo, or diverging for signed metrics (vspeed)
+  std::string range;           // empty: the robust automatic range
+  std::string density_radius;  // metres; empty: the metric's default (scene::default_neighbour_radius_m)
   std::vector<std::string> colors;
   std::string route_color;  // empty: scene::TrackStyle's
   std::string legend = "on";
