@@ -21,6 +21,7 @@ constexpr std::uint64_t kNoKey = std::numeric_limits<std::uint64_t>::max();
 constexpr std::int64_t kCellBias = std::int64_t{1} << 20;
 constexpr std::int64_t kMinCellCm = 800;
 constexpr std::int64_t kMinGapCm = 1000000;  // 10 km
+constexpr std::uint32_t kMaxRunSegments = 16;
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   std::int64_t q = a / b;
@@ -58,10 +59,26 @@ void run_all(std::size_t count, const ParallelFor& parallel, const Job& job) {
 
 }  // namespace
 
+// What a point's neighbourhood holds, gathered once for the consecutive points in one cell. Per
+// source bounds on the distance to its gathered segments from where they were last measured (the
+// anchor): as the points move on, the distance changes by at most the way travelled since (the
+// triangle inequality), so a source well inside or well outside the radius is decided without
+// measuring it again. The bounds come cheap from the runs (their boxes below, their first points
+// above); only a source they leave on both sides of the radius is measured segment by segment.
 struct NeighbourIndex::Scratch {
-  std::uint64_t key = kNoKey;            // the cell gathered for
-  std::vector<std::uint32_t> runs;       // the runs of the 27 cells around it, grouped by source
-  std::vector<std::uint32_t> group_end;  // where each source's group ends in `runs`
+  std::uint64_t key = kNoKey;              // the cell gathered for
+  std::vector<std::uint32_t> runs;         // the runs of the 27 cells around it, grouped by source
+  std::vector<std::uint32_t> group_end;    // where each source's group ends in `runs`
+  std::vector<double> lower_cm, upper_cm;  // per group: bounds on the distance at its anchor
+  std::vector<double> anchor_way_cm;       // per group: `way_cm` when they were measured (-inf: never)
+  double way_cm = 0.0;                     // the way travelled since the gathering
+  bool has_previous = false;
+  Cm previous;  // the last point counted
+  // Grouping by source without sorting: each source's group in this gathering (by stamp).
+  std::vector<std::uint32_t> source_stamp, source_group;
+  std::uint32_t stamp = 0;
+  std::vector<std::uint32_t> group_size;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cells;  // [begin, end) of runs per cell
 };
 
 namespace {
@@ -216,7 +233,8 @@ void NeighbourIndex::add_source_runs(const std::vector<Line>& lines, std::uint32
               const auto found = std::find_if(previous.begin(), previous.end(),
                                               [key](const auto& entry) { return entry.first == key; });
               std::size_t run = 0;
-              if (found != previous.end()) {
+              // A run of at most kMaxRunSegments: its box stays tight enough to rule it out whole.
+              if (found != previous.end() && out[found->second].last - out[found->second].first < kMaxRunSegments) {
                 run = found->second;
                 out[run].last = i + 1;
                 grow(out[run].lo, out[run].hi, b);
@@ -266,39 +284,101 @@ std::uint32_t NeighbourIndex::find_cell(std::uint64_t key) const {
 
 void NeighbourIndex::gather(std::uint64_t key, Scratch& scratch) const {
   scratch.key = key;
-  scratch.runs.clear();
-  scratch.group_end.clear();
+  scratch.cells.clear();
   const auto [x, y, z] = unpack(key);
   for (std::int64_t dx = -1; dx <= 1; ++dx)
     for (std::int64_t dy = -1; dy <= 1; ++dy)
       for (std::int64_t dz = -1; dz <= 1; ++dz) {
         const std::uint32_t cell = find_cell(pack(x + dx, y + dy, z + dz));
-        if (cell == kNoCell) continue;
-        for (std::uint32_t r = cell_begin_[cell]; r < cell_begin_[cell + 1]; ++r) scratch.runs.push_back(r);
+        if (cell != kNoCell) scratch.cells.emplace_back(cell_begin_[cell], cell_begin_[cell + 1]);
       }
-  std::sort(scratch.runs.begin(), scratch.runs.end(), [this](std::uint32_t a, std::uint32_t b) {
-    return runs_[a].source != runs_[b].source ? runs_[a].source < runs_[b].source : a < b;
-  });
-  for (std::size_t i = 0; i < scratch.runs.size(); ++i)
-    if (i + 1 == scratch.runs.size() || runs_[scratch.runs[i]].source != runs_[scratch.runs[i + 1]].source)
-      scratch.group_end.push_back(static_cast<std::uint32_t>(i + 1));
+  if (scratch.source_stamp.size() != source_count_) {
+    scratch.source_stamp.assign(source_count_, 0);
+    scratch.source_group.assign(source_count_, 0);
+    scratch.stamp = 0;
+  }
+  if (++scratch.stamp == 0) {  // wrapped: every old stamp could match again
+    std::fill(scratch.source_stamp.begin(), scratch.source_stamp.end(), 0);
+    scratch.stamp = 1;
+  }
+  // Each source's group, numbered in the order met; then the runs placed group by group.
+  scratch.group_size.clear();
+  std::size_t total = 0;
+  for (const auto& [begin, end] : scratch.cells)
+    for (std::uint32_t r = begin; r < end; ++r) {
+      const std::uint32_t source = runs_[r].source;
+      if (scratch.source_stamp[source] != scratch.stamp) {
+        scratch.source_stamp[source] = scratch.stamp;
+        scratch.source_group[source] = static_cast<std::uint32_t>(scratch.group_size.size());
+        scratch.group_size.push_back(0);
+      }
+      ++scratch.group_size[scratch.source_group[source]];
+      ++total;
+    }
+  scratch.group_end.resize(scratch.group_size.size());
+  std::uint32_t at = 0;
+  for (std::size_t g = 0; g < scratch.group_size.size(); ++g) {
+    const std::uint32_t size = scratch.group_size[g];
+    scratch.group_size[g] = at;  // now where the group's next run goes
+    at += size;
+    scratch.group_end[g] = at;
+  }
+  scratch.runs.resize(total);
+  for (const auto& [begin, end] : scratch.cells)
+    for (std::uint32_t r = begin; r < end; ++r)
+      scratch.runs[scratch.group_size[scratch.source_group[runs_[r].source]]++] = r;
+  scratch.lower_cm.assign(scratch.group_end.size(), 0.0);
+  scratch.upper_cm.assign(scratch.group_end.size(), 0.0);
+  scratch.anchor_way_cm.assign(scratch.group_end.size(), -std::numeric_limits<double>::infinity());
+  scratch.way_cm = 0.0;
 }
 
-std::size_t NeighbourIndex::count_at(const Cm& p, const Scratch& scratch) const {
-  const double r2 = radius_cm_ * radius_cm_;
+std::pair<double, double> NeighbourIndex::group_bounds(const Cm& p, const Scratch& scratch, std::uint32_t begin,
+                                                       std::uint32_t end) const {
+  double lower2 = std::numeric_limits<double>::infinity(), upper2 = lower2;
+  for (std::uint32_t g = begin; g < end; ++g) {
+    const Run& run = runs_[scratch.runs[g]];
+    lower2 = std::min(lower2, box_distance2(p, run.lo, run.hi));
+    upper2 = std::min(upper2, segment_distance2(p, points_[run.first], points_[run.first]));
+  }
+  return {std::sqrt(lower2), std::sqrt(upper2)};
+}
+
+double NeighbourIndex::distance_to_group(const Cm& p, const Scratch& scratch, std::uint32_t begin,
+                                         std::uint32_t end) const {
+  double best2 = std::numeric_limits<double>::infinity();
+  for (std::uint32_t g = begin; g < end; ++g) {
+    const Run& run = runs_[scratch.runs[g]];
+    if (box_distance2(p, run.lo, run.hi) >= best2) continue;
+    if (run.first == run.last) {
+      best2 = std::min(best2, segment_distance2(p, points_[run.first], points_[run.first]));
+      continue;
+    }
+    for (std::uint32_t i = run.first; i < run.last; ++i)
+      best2 = std::min(best2, segment_distance2(p, points_[i], points_[i + 1]));
+  }
+  return std::sqrt(best2);
+}
+
+std::size_t NeighbourIndex::count_at(const Cm& p, Scratch& scratch) const {
+  if (scratch.has_previous) scratch.way_cm += distance_cm(scratch.previous, p);
+  scratch.previous = p;
+  scratch.has_previous = true;
   std::size_t count = 0;
   std::uint32_t begin = 0;
-  for (const std::uint32_t end : scratch.group_end) {
-    bool near = false;
-    for (std::uint32_t g = begin; g < end && !near; ++g) {
-      const Run& run = runs_[scratch.runs[g]];
-      if (box_distance2(p, run.lo, run.hi) > r2) continue;
-      if (run.first == run.last) {
-        near = segment_distance2(p, points_[run.first], points_[run.first]) <= r2;
-        continue;
-      }
-      for (std::uint32_t i = run.first; i < run.last && !near; ++i)
-        near = segment_distance2(p, points_[i], points_[i + 1]) <= r2;
+  for (std::size_t group = 0; group < scratch.group_end.size(); ++group) {
+    const std::uint32_t end = scratch.group_end[group];
+    // How far the distance may have moved since it was bounded; 1 mm more for rounding.
+    const double moved = scratch.way_cm - scratch.anchor_way_cm[group] + 0.1;
+    bool near = scratch.upper_cm[group] + moved <= radius_cm_;
+    const bool far = scratch.lower_cm[group] - moved > radius_cm_;
+    if (!near && !far) {
+      auto [lower, upper] = group_bounds(p, scratch, begin, end);
+      if (lower <= radius_cm_ && upper > radius_cm_) lower = upper = distance_to_group(p, scratch, begin, end);
+      scratch.lower_cm[group] = lower;
+      scratch.upper_cm[group] = upper;
+      scratch.anchor_way_cm[group] = scratch.way_cm;
+      near = upper <= radius_cm_;
     }
     count += near ? 1 : 0;
     begin = end;

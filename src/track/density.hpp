@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "track/model.hpp"
@@ -87,7 +88,10 @@ class NeighbourIndex {
   void build_table();
   std::uint32_t find_cell(std::uint64_t key) const;  // kNoCell: no run there
   void gather(std::uint64_t key, Scratch& scratch) const;
-  std::size_t count_at(const Cm& p, const Scratch& scratch) const;
+  std::size_t count_at(const Cm& p, Scratch& scratch) const;
+  std::pair<double, double> group_bounds(const Cm& p, const Scratch& scratch, std::uint32_t begin,
+                                         std::uint32_t end) const;
+  double distance_to_group(const Cm& p, const Scratch& scratch, std::uint32_t begin, std::uint32_t end) const;
 
   double radius_m_ = 0.0;
   double radius_cm_ = 0.0;
