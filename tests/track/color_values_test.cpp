@@ -328,9 +328,10 @@ TEST(ColorValueFormat, ElapsedTimeAsHoursAndWholeMinutes) {
 
 TEST(ColorMetricNames, RoundTripAndLabels) {
   const auto names = color_metric_names();
-  ASSERT_EQ(names.size(), 11u);
+  ASSERT_EQ(names.size(), 13u);
   EXPECT_EQ(names.front(), "solid");
-  EXPECT_EQ(names.back(), "phase");
+  EXPECT_EQ(names[10], "phase");
+  EXPECT_EQ(names.back(), "thermals");
   for (std::string_view name : names) {
     const auto m = parse_color_metric(name);
     ASSERT_TRUE(m) << name;
@@ -346,6 +347,13 @@ TEST(ColorMetricNames, RoundTripAndLabels) {
   EXPECT_TRUE(color_metric_is_signed(ColorMetric::vspeed));
   EXPECT_FALSE(color_metric_is_signed(ColorMetric::speed));
   EXPECT_FALSE(color_metric_is_signed(ColorMetric::altitude));
+  // Counts over all the tracks: whole numbers, no values of a track alone.
+  EXPECT_TRUE(counts_neighbours(ColorMetric::density));
+  EXPECT_TRUE(counts_neighbours(ColorMetric::thermals));
+  EXPECT_FALSE(counts_neighbours(ColorMetric::phase));
+  EXPECT_EQ(color_metric_unit(ColorMetric::density), "tracks");
+  EXPECT_EQ(format_color_value(ColorMetric::density, 12.4), "12");
+  EXPECT_EQ(format_color_value(ColorMetric::thermals, 0.0), "0");
 }
 
 }  // namespace
