@@ -390,7 +390,10 @@ void NeighbourIndex::count_near(PointLine points, std::span<float> out) const {
   if (out.size() != points.size())
     throw std::invalid_argument("count_near: " + std::to_string(out.size()) + " values for " +
                                 std::to_string(points.size()) + " points");
-  Scratch scratch;
+  // One per thread, kept from line to line: its per-source arrays are as long as the sources.
+  thread_local Scratch scratch;
+  scratch.key = kNoKey;
+  scratch.has_previous = false;
   const auto cell_of = [this](std::int32_t v) { return floor_div(v, cell_cm_); };
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto p = surface_cm<Cm>(points[i].lat, points[i].lon);
