@@ -26,15 +26,22 @@ int width_for(std::size_t texels) {
 }
 
 // Uploads `texels` RGBA32F texels into a width x rows texture (padding the last row).
-Texture upload_rgba32f(std::vector<float>& texels, int width) {
-  const std::size_t count = texels.size() / 4;
+// `texels` (`channels` values each) as a texture `width` wide, the last row padded with zeros.
+template <typename T>
+Texture upload_texels(std::vector<T>& texels, int channels, int width, GLenum internal_format, GLenum format,
+                      GLenum type) {
+  const std::size_t count = texels.size() / static_cast<std::size_t>(channels);
   const int rows = std::max(1, rows_for(count, width));
-  texels.resize(static_cast<std::size_t>(width) * rows * 4, 0.0f);
-  Texture texture = make_texture_2d(GL_RGBA32F, width, rows);
+  texels.resize(static_cast<std::size_t>(width) * rows * channels, T{0});
+  Texture texture = make_texture_2d(internal_format, width, rows);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, rows, GL_RGBA, GL_FLOAT, texels.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, rows, format, type, texels.data());
   glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
+}
+
+Texture upload_rgba32f(std::vector<float>& texels, int width) {
+  return upload_texels(texels, 4, width, GL_RGBA32F, GL_RGBA, GL_FLOAT);
 }
 
 // Values and heights one per point (or none), every point finite.
@@ -145,24 +152,12 @@ void TrackBuffer::upload(const scene::TrackGeometry& geometry) {
     }
   }
   points_ = upload_rgba32f(texels, texture_width_);
-  if (has_drops_) {
-    const int rows = std::max(1, rows_for(drops.size(), texture_width_));
-    drops.resize(static_cast<std::size_t>(texture_width_) * rows, 0.0f);
-    drops_ = make_texture_2d(GL_R32F, texture_width_, rows);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture_width_, rows, GL_RED, GL_FLOAT, drops.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
-  }
+  if (has_drops_) drops_ = upload_texels(drops, 1, texture_width_, GL_R32F, GL_RED, GL_FLOAT);
   // The hierarchy's lists (at least one texel: the programs' integer sampler always has a texture).
   std::vector<std::int32_t> lists = lod_.indices();
   if (lists.empty()) lists.push_back(0);
   lod_texture_width_ = width_for(lists.size());
-  const int lod_rows = std::max(1, rows_for(lists.size(), lod_texture_width_));
-  lists.resize(static_cast<std::size_t>(lod_texture_width_) * lod_rows, 0);
-  lod_indices_ = make_texture_2d(GL_R32I, lod_texture_width_, lod_rows);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, lod_texture_width_, lod_rows, GL_RED_INTEGER, GL_INT, lists.data());
-  glBindTexture(GL_TEXTURE_2D, 0);
+  lod_indices_ = upload_texels(lists, 1, lod_texture_width_, GL_R32I, GL_RED_INTEGER, GL_INT);
   block_texture_width_ = width_for(block_origins_.size());
   std::vector<float> zeros(std::max<std::size_t>(block_origins_.size(), 1) * 4, 0.0f);
   blocks_ = upload_rgba32f(zeros, block_texture_width_);
