@@ -109,20 +109,30 @@ Comparison compare(const scene::RgbaImage& a, const std::vector<std::uint8_t>& m
   return out;
 }
 
-class TrackLodRenderTest : public GlTest {};
+// Two renderers, with and without the level of detail, and a dense spiral coloured along its
+// points over a plain ground.
+class TrackLodRenderTest : public GlTest {
+ protected:
+  static constexpr std::size_t kPoints = 30000;
+  static RendererOptions without_lod() {
+    RendererOptions o;
+    o.track_level_of_detail = false;
+    return o;
+  }
+  static scene::Scene spiral_scene() {
+    scene::Scene s = test::plain_scene(kPlace, 1000.0);
+    s.style.tracks.width = {3.0, scene::TrackWidth::Unit::pixels};
+    s.color_range = track::ValueRange{0.0, static_cast<double>(kPoints - 1)};
+    return s;
+  }
+  test::SceneDrawer full{nullptr, nullptr, without_lod()};
+  test::SceneDrawer lod{nullptr, nullptr};
+  const scene::TrackSet tracks = test::track_set({test::track_of(
+      test::geometry_of({dense_spiral(LocalFrame(kPlace), kPoints)}), test::kTrackRed, /*by_value=*/true)});
+  scene::Scene options = spiral_scene();
+};
 
 TEST_F(TrackLodRenderTest, FromAfarADenseTrackDrawsFewerCapsulesWithinAPixelAndItsColoursOfTheFullPicture) {
-  RendererOptions full_options;
-  full_options.track_level_of_detail = false;
-  test::SceneDrawer full(nullptr, nullptr, full_options);
-  test::SceneDrawer lod(nullptr, nullptr);
-  const LocalFrame frame(kPlace);
-  constexpr std::size_t kPoints = 30000;
-  const scene::TrackSet tracks = test::track_set(
-      {test::track_of(test::geometry_of({dense_spiral(frame, kPoints)}), test::kTrackRed, /*by_value=*/true)});
-  scene::Scene options = test::plain_scene(kPlace, 1000.0);
-  options.style.tracks.width = {3.0, scene::TrackWidth::Unit::pixels};
-  options.color_range = track::ValueRange{0.0, static_cast<double>(kPoints - 1)};
   const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 6000.0}, kLens, 100.0);
 
   const test::WithAndWithout reference = test::render_both(full, camera, options, tracks);
@@ -158,17 +168,6 @@ TEST_F(TrackLodRenderTest, FromAfarADenseTrackDrawsFewerCapsulesWithinAPixelAndI
 }
 
 TEST_F(TrackLodRenderTest, FromNearWhereNoPointCanBeDroppedThePicturesAreTheSame) {
-  RendererOptions full_options;
-  full_options.track_level_of_detail = false;
-  test::SceneDrawer full(nullptr, nullptr, full_options);
-  test::SceneDrawer lod(nullptr, nullptr);
-  const LocalFrame frame(kPlace);
-  constexpr std::size_t kPoints = 30000;
-  const scene::TrackSet tracks = test::track_set(
-      {test::track_of(test::geometry_of({dense_spiral(frame, kPoints)}), test::kTrackRed, /*by_value=*/true)});
-  scene::Scene options = test::plain_scene(kPlace, 1000.0);
-  options.style.tracks.width = {3.0, scene::TrackWidth::Unit::pixels};
-  options.color_range = track::ValueRange{0.0, static_cast<double>(kPoints - 1)};
   // 40 m above the spiral's start, 100 m east of the centre (a pixel: 0.03 m there; the points
   // stray up to half a metre from a line).
   const double east_deg = 100.0 / (111320.0 * std::cos(kPlace.lat_deg * M_PI / 180.0));
