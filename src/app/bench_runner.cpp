@@ -166,7 +166,7 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
     row.capsule_upload_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - upload_start).count();
     row.capsule_bytes = buffer.gpu_bytes();
-    const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false, {}, false}};
+    const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false, {}, false, {}}};
     render::TrackSceneSettings settings;
     settings.level_of_detail = s.settings.level_of_detail;
     settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
@@ -178,7 +178,7 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
                       {{"capsule_visible", [&] { s.capsules.draw_visible(s.gbuffer, camera, draws, settings); }},
                        {"capsule_overlay",
                         [&] { s.capsules.draw_overlay(s.gbuffer, s.overlay, camera, lighting, draws, settings); }}},
-                      [&] { render::TrackPass::prepare(draws, camera); });
+                      [&] { s.capsules.prepare(draws, camera, settings); });
     row.capsule_ms = m.ms.at("capsule_visible");
     row.capsule_overlay_ms = m.ms.at("capsule_overlay");
     row.capsule_total_ms = row.capsule_ms + row.capsule_overlay_ms;

@@ -62,7 +62,7 @@ std::vector<TrackDraw> PinGpu::draws(const scene::WaypointSet* set, const scene:
   }
   std::vector<TrackDraw> out;
   const auto add = [&](const std::optional<TrackBuffer>& buffer, const glm::vec3& color, const CapsuleShape& shape) {
-    if (buffer) out.push_back({&*buffer, color, false, shape, true});
+    if (buffer) out.push_back({&*buffer, color, false, shape, true, {}});
   };
   add(place_stems_, style.stem_color, stem_shape(style, style.place_lift_px, style.place_lift_m));
   add(place_balls_, style.place_color,

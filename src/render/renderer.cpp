@@ -116,7 +116,8 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
     if (t.has_data) ++report.tiles_with_data;
     if (t.image) ++report.imagery_tiles_used;
   }
-  for (const TrackDraw& draw : content.tracks) (draw.is_pin ? report.pin_draws : report.tracks_drawn) += 1;
+  for (const TrackDraw& draw : content.tracks)
+    (draw.is_pin ? report.pin_draws : report.tracks_drawn) += draw.is_pin ? 1 : draw.shown_tracks();
   report.labels_drawn = content.labels.size();
   report.volumes_drawn = content.volumes != nullptr ? content.volume_count : 0;
 
@@ -125,8 +126,11 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
   FrameShadows shadows = frame_shadows(content, camera, lighting, items, neutral, frame);
   report.shadows_drawn = shadows.cascades.has_value();
   report.shadow_maps_rendered = shadows.render_for.has_value();
-  // The tracks' block origins relative to this camera (the shadow and track passes use them).
-  TrackPass::prepare(content.tracks, camera);
+  // The tracks' block origins relative to this camera (the shadow and track passes use them),
+  // and what their capsules are this frame (the level of detail as run_passes draws it).
+  TrackSceneSettings planned = content.track_settings;
+  planned.level_of_detail = planned.level_of_detail && options_.track_level_of_detail;
+  track_pass_.prepare(content.tracks, camera, planned);
   run_passes(content, camera, lighting, target, items, shadows, frame);
   report.track_capsules = content.tracks.empty() ? 0 : track_pass_.visible_capsules();
 

@@ -1,7 +1,9 @@
 #include "render/track_gpu.hpp"
 
 #include <algorithm>
+#include <span>
 #include <unordered_set>
+#include <vector>
 
 namespace trailray::render {
 
@@ -15,8 +17,38 @@ CapsuleShape route_shape(const scene::TrackStyle& style) {
 
 std::vector<TrackDraw> TrackGpu::draws(const scene::TrackSet& tracks, bool by_value, const scene::TrackStyle& style) {
   std::vector<TrackDraw> out;
+  std::vector<Key> recorded;
+  std::vector<const scene::TrackGeometry*> geometries;
+  styles_.clear();
+  bool any_shown = false;
   for (const scene::Track& track : tracks.tracks()) {
-    if (!track.visible) continue;
+    if (track.is_route) continue;
+    recorded.push_back({track.id, track.revision});
+    geometries.push_back(&track.geometry);
+    styles_.push_back({track.color_srgb, by_value && track.by_value, track.visible});
+    any_shown = any_shown || track.visible;
+  }
+  if (recorded != recorded_) {
+    recorded_ = std::move(recorded);
+    ++recorded_revision_;
+  }
+  if (!recorded_.empty()) {
+    const Key key{kRecordedId, recorded_revision_};
+    TrackBuffer* buffer = buffers_.find(key);
+    if (buffer == nullptr) {
+      TrackBuffer uploaded{std::span<const scene::TrackGeometry* const>(geometries)};
+      const std::size_t bytes = uploaded.gpu_bytes();
+      buffer = &buffers_.insert(key, std::move(uploaded), bytes);
+    }
+    if (any_shown) {
+      TrackDraw draw;
+      draw.buffer = buffer;
+      draw.track_styles = styles_;
+      out.push_back(draw);
+    }
+  }
+  for (const scene::Track& track : tracks.tracks()) {
+    if (!track.is_route || !track.visible) continue;
     const Key key{track.id, track.revision};
     TrackBuffer* buffer = buffers_.find(key);
     if (buffer == nullptr) {
@@ -24,8 +56,7 @@ std::vector<TrackDraw> TrackGpu::draws(const scene::TrackSet& tracks, bool by_va
       const std::size_t bytes = uploaded.gpu_bytes();
       buffer = &buffers_.insert(key, std::move(uploaded), bytes);
     }
-    out.push_back({buffer, track.color_srgb, by_value && track.by_value && !track.is_route,
-                   track.is_route ? route_shape(style) : CapsuleShape{}, false});
+    out.push_back({buffer, track.color_srgb, false, route_shape(style), false, {}});
   }
   return out;
 }
@@ -33,7 +64,14 @@ std::vector<TrackDraw> TrackGpu::draws(const scene::TrackSet& tracks, bool by_va
 void TrackGpu::evict(const scene::TrackSet* tracks) {
   std::unordered_set<Key, KeyHash> current;
   if (tracks != nullptr)
-    for (const scene::Track& track : tracks->tracks()) current.insert({track.id, track.revision});
+    for (const scene::Track& track : tracks->tracks())
+      if (track.is_route) current.insert({track.id, track.revision});
+  // The recorded tracks' buffer while the set still holds exactly what it was built from.
+  std::vector<Key> recorded;
+  if (tracks != nullptr)
+    for (const scene::Track& track : tracks->tracks())
+      if (!track.is_route) recorded.push_back({track.id, track.revision});
+  if (!recorded.empty() && recorded == recorded_) current.insert({kRecordedId, recorded_revision_});
   buffers_.retain_if([&](const Key& key) { return current.contains(key); });
 }
 

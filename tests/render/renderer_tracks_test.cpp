@@ -1,8 +1,10 @@
-// The renderer keeps the scene's tracks on the GPU by (track id, revision): a track is uploaded
-// the first frame that draws it and reused after, uploaded again when its revision changes, kept
-// while hidden, and freed once it has left the scene. Only visible tracks are drawn.
+// The renderer keeps the scene's recorded tracks on the GPU in one buffer (track_gpu.hpp): uploaded
+// the first frame that draws them and reused after, rebuilt when a track's revision changes or a
+// track arrives or leaves, kept while a track is hidden (hiding uploads nothing), and freed once
+// the tracks have left the scene. Only visible tracks are drawn, each in its own colour.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <vector>
 
 #include "gl_test_support.hpp"
@@ -29,7 +31,7 @@ class RendererTracksTest : public GlTest {
   scene::Camera camera_ = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 1000.0}, kLens, 10.0);
 };
 
-TEST_F(RendererTracksTest, ATrackIsUploadedOncePerRevisionAndFreedWhenItLeavesTheScene) {
+TEST_F(RendererTracksTest, TheTracksAreUploadedOncePerRevisionAndFreedWhenTheyLeaveTheScene) {
   test::SceneDrawer drawer(nullptr, nullptr);
   scene::TrackSet tracks = test::track_set({test::track_of(line(-20)), test::track_of(line(20))});
   scene::Scene scene = test::plain_scene(kPlace, 0.0);
@@ -37,22 +39,27 @@ TEST_F(RendererTracksTest, ATrackIsUploadedOncePerRevisionAndFreedWhenItLeavesTh
 
   const FrameReport first = drawer.draw(camera_, scene).report;
   EXPECT_EQ(first.tracks_drawn, 2u);
-  EXPECT_EQ(first.gpu_tracks.uploads, 2u);
-  EXPECT_EQ(first.gpu_tracks.entries, 2u);
+  EXPECT_EQ(first.gpu_tracks.uploads, 1u);  // both in one buffer
+  EXPECT_EQ(first.gpu_tracks.entries, 1u);
   EXPECT_GT(first.gpu_tracks.bytes, 0u);
 
   const FrameReport again = drawer.draw(camera_, scene).report;
   EXPECT_EQ(again.gpu_tracks.uploads, 0u);
-  EXPECT_EQ(again.gpu_tracks.entries, 2u);
+  EXPECT_EQ(again.gpu_tracks.entries, 1u);
 
-  // A new revision replaces the old buffer; a hidden track keeps its own but is not drawn.
+  // Hiding a track uploads nothing; it is not drawn.
+  tracks[1].visible = false;
+  const FrameReport hidden = drawer.draw(camera_, scene).report;
+  EXPECT_EQ(hidden.tracks_drawn, 1u);
+  EXPECT_EQ(hidden.gpu_tracks.uploads, 0u);
+
+  // A new revision rebuilds the buffer and frees the old one.
   tracks[0].geometry = line(-30);
   tracks[0].bump_revision();
-  tracks[1].visible = false;
   const FrameReport changed = drawer.draw(camera_, scene).report;
   EXPECT_EQ(changed.tracks_drawn, 1u);
   EXPECT_EQ(changed.gpu_tracks.uploads, 1u);
-  EXPECT_EQ(changed.gpu_tracks.entries, 2u);
+  EXPECT_EQ(changed.gpu_tracks.entries, 1u);
   EXPECT_EQ(changed.gpu_tracks.evictions, 1u);
 
   // Without tracks every buffer goes.
@@ -74,6 +81,44 @@ TEST_F(RendererTracksTest, AHiddenTrackIsNotDrawn) {
   const scene::RgbaImage hidden = drawer.draw(camera_, scene).image;
   EXPECT_NE(shown.rgba, ground.rgba);
   EXPECT_EQ(hidden.rgba, ground.rgba);
+}
+
+// Tracks that share one buffer are each drawn where, and in the colour, their own render puts them:
+// every pixel one track covers alone is the same in the picture of all of them.
+TEST_F(RendererTracksTest, TracksSharingABufferAreEachDrawnAsTheirOwnRenderDrawsThem) {
+  test::SceneDrawer drawer(nullptr, nullptr);
+  const scene::Lens lens{30.0, 160, 120};
+  const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 2000.0}, lens, 10.0);
+  const auto across = [&](double north_m) {
+    return test::geometry_of({polyline(frame_, {{-300, north_m, 800}, {-100, north_m + 30, 800}, {300, north_m, 800}})});
+  };
+  const std::vector<scene::Track> each{test::track_of(across(-200), {0.9f, 0.1f, 0.1f}),
+                                       test::track_of(across(0), {0.1f, 0.4f, 0.9f}),
+                                       test::track_of(across(200), {0.1f, 0.8f, 0.2f})};
+  scene::Scene scene = test::plain_scene(kPlace, 0.0);
+  const scene::RgbaImage ground = drawer.draw(camera, scene).image;
+  scene::TrackSet all = test::track_set({each[0], each[1], each[2]});
+  scene.tracks = &all;
+  const test::Drawn together = drawer.draw(camera, scene);
+  EXPECT_EQ(together.report.tracks_drawn, 3u);
+
+  for (std::size_t i = 0; i < each.size(); ++i) {
+    scene::TrackSet alone_set = test::track_set({each[i]});
+    scene.tracks = &alone_set;
+    const scene::RgbaImage alone = drawer.draw(camera, scene).image;
+    std::size_t covered = 0, same = 0;
+    for (std::uint32_t y = 0; y < lens.height_px; ++y)
+      for (std::uint32_t x = 0; x < lens.width_px; ++x) {
+        if (alone.pixel(x, y) == ground.pixel(x, y)) continue;
+        ++covered;
+        const auto a = alone.pixel(x, y), b = together.image.pixel(x, y);
+        bool close = true;
+        for (int c = 0; c < 3; ++c) close = close && std::abs(int{a[c]} - int{b[c]}) <= 2;
+        same += close ? 1 : 0;
+      }
+    EXPECT_GT(covered, 400u) << "track " << i;
+    EXPECT_EQ(same, covered) << "track " << i;
+  }
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ void set_vec3(const ShaderProgram& program, std::string_view name, const glm::ve
 
 }  // namespace
 
-SceneLighting lighting_for(const glm::dvec3& sun_direction_ecef, const scene::Camera& camera, const AtmosphereModel& model) {
+SceneLighting lighting_for(const glm::dvec3& sun_direction_ecef, const scene::Camera& camera,
+                           const AtmosphereModel& model) {
   const scene::GeoPosition& at = camera.geodetic();
   const double elevation = elevation_deg(sun_direction_ecef, scene::enu_axes_at(at.lat_deg, at.lon_deg).up);
   SceneLighting lighting;
@@ -58,7 +59,8 @@ ComposePass::ComposePass()
       fullscreen_(VertexArray::create()) {}
 
 void ComposePass::draw(const GBuffer& gbuffer, const Texture* ambient_occlusion, const ComposeShadows* shadows,
-                       const scene::Camera& camera, const SceneLighting& lighting, const ComposeSettings& settings) const {
+                       const scene::Camera& camera, const SceneLighting& lighting,
+                       const ComposeSettings& settings) const {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   program_.use();

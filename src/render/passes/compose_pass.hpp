@@ -6,12 +6,12 @@
 
 #include <glm/glm.hpp>
 
-#include "render/passes/atmosphere.hpp"
-#include "scene/camera.hpp"
-#include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
+#include "render/passes/atmosphere.hpp"
+#include "render/passes/gbuffer.hpp"
 #include "render/passes/shadow_maps.hpp"
+#include "scene/camera.hpp"
 
 namespace trailray::render {
 

@@ -65,6 +65,9 @@ ShadowMapKey shadow_map_key(const ShadowCascades& cascades, const scene::Camera&
   w.add_int(casters.tracks.size());
   for (const TrackDraw& d : casters.tracks) {
     w.add(d.buffer);
+    // A buffer of many tracks casts the shown ones only.
+    w.add_int(d.track_styles.size());
+    for (const TrackDrawStyle& style : d.track_styles) w.add_int(style.visible ? 1 : 0);
     const CapsuleShape& shape = d.shape;
     w.add(shape.width ? shape.width->value : -1.0);
     w.add_int(shape.width ? static_cast<std::uint64_t>(shape.width->unit) : 9);

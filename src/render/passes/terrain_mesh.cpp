@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "geo/tile_id.hpp"
-#include "scene/camera.hpp"
 #include "render/gl/render_error.hpp"
+#include "scene/camera.hpp"
 #include "terrain/lod_selection.hpp"
 
 namespace trailray::render {
@@ -121,7 +121,6 @@ void add_grid(TerrainMesh& mesh, const std::vector<float>& heights, const std::v
       mesh.indices.insert(mesh.indices.end(), {v00, v01, v10, v10, v01, v11});
     }
   }
-
 }
 
 // Skirts: the perimeter once around, each vertex with a copy hanging straight down below it.
@@ -230,8 +229,8 @@ TerrainTileGpu upload_terrain_mesh(const TerrainMesh& mesh) {
                       std::to_string(error) + ")");
   gpu.index_count = static_cast<GLsizei>(mesh.indices.size());
   gpu.gpu_bytes = mesh.vertices.size() * sizeof(TerrainVertex) + mesh.indices.size() * sizeof(std::uint32_t);
-  gpu.has_holes = std::any_of(mesh.vertices.begin(), mesh.vertices.end(),
-                              [](const TerrainVertex& v) { return v.covered < 1.0f; });
+  gpu.has_holes =
+      std::any_of(mesh.vertices.begin(), mesh.vertices.end(), [](const TerrainVertex& v) { return v.covered < 1.0f; });
   return gpu;
 }
 

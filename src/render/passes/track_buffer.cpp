@@ -1,12 +1,14 @@
 #include "render/passes/track_buffer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "render/gl/render_error.hpp"
+#include "render/passes/texel_table.hpp"
 
 namespace trailray::render {
 namespace {
@@ -15,33 +17,11 @@ namespace {
 // math): the shader tests `value < kMissingValueBelow`.
 constexpr float kMissingValue = -3.0e38f;
 
-int rows_for(std::size_t texels, int width) { return static_cast<int>((texels + width - 1) / width); }
-
-// The narrowest width (at most kMaxTextureWidth) that holds `texels` in as few rows as the widest
-// would: the last row is then nearly full (2049 points take 2 rows of 1025, not of 2048).
-int width_for(std::size_t texels) {
-  const auto max_width = static_cast<std::size_t>(TrackBuffer::kMaxTextureWidth);
-  const std::size_t rows = std::max<std::size_t>(1, (texels + max_width - 1) / max_width);
-  return static_cast<int>(std::max<std::size_t>(1, (texels + rows - 1) / rows));
-}
-
-// Uploads `texels` RGBA32F texels into a width x rows texture (padding the last row).
-// `texels` (`channels` values each) as a texture `width` wide, the last row padded with zeros.
-template <typename T>
-Texture upload_texels(std::vector<T>& texels, int channels, int width, GLenum internal_format, GLenum format,
-                      GLenum type) {
-  const std::size_t count = texels.size() / static_cast<std::size_t>(channels);
-  const int rows = std::max(1, rows_for(count, width));
-  texels.resize(static_cast<std::size_t>(width) * rows * channels, T{0});
-  Texture texture = make_texture_2d(internal_format, width, rows);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, rows, format, type, texels.data());
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return texture;
-}
+using texel_table::rows_for;
+using texel_table::width_for;
 
 Texture upload_rgba32f(std::vector<float>& texels, int width) {
-  return upload_texels(texels, 4, width, GL_RGBA32F, GL_RGBA, GL_FLOAT);
+  return texel_table::upload(texels, 4, width, GL_RGBA32F, GL_RGBA, GL_FLOAT);
 }
 
 // Values and heights one per point (or none), every point finite.
@@ -64,23 +44,32 @@ void check_segment(const scene::TrackPolyline& line, std::size_t s) {
 
 }  // namespace
 
-TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
-  for (std::size_t s = 0; s < geometry.segments.size(); ++s) {
-    const scene::TrackPolyline& line = geometry.segments[s];
-    check_segment(line, s);
-    const std::size_t n = line.points_ecef.size();
-    if (n == 0) continue;
-    if (point_count_ + n > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 8))
-      throw RenderError("track: too many points for the GPU layout (" + std::to_string(point_count_ + n) + ")");
-    segments_.push_back({static_cast<std::int32_t>(point_count_), static_cast<std::int32_t>(n)});
-    point_count_ += n;
-    has_values_ = has_values_ || !line.values.empty();
-    has_drops_ = has_drops_ || !line.heights_above_ground_m.empty();
-  }
+TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry)
+    : TrackBuffer(std::span<const scene::TrackGeometry* const>(std::array{&geometry})) {}
+
+TrackBuffer::TrackBuffer(std::span<const scene::TrackGeometry* const> tracks) : track_count_(tracks.size()) {
+  for (std::size_t t = 0; t < tracks.size(); ++t)
+    for (std::size_t s = 0; s < tracks[t]->segments.size(); ++s) {
+      const scene::TrackPolyline& line = tracks[t]->segments[s];
+      check_segment(line, s);
+      const std::size_t n = line.points_ecef.size();
+      if (n == 0) continue;
+      if (point_count_ + n > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 8))
+        throw RenderError("track: too many points for the GPU layout (" + std::to_string(point_count_ + n) + ")");
+      Range range;
+      range.first = static_cast<std::int32_t>(point_count_);
+      range.count = static_cast<std::int32_t>(n);
+      range.track = static_cast<std::int32_t>(t);
+      segments_.push_back(range);
+      point_count_ += n;
+      has_values_ = has_values_ || !line.values.empty();
+      has_drops_ = has_drops_ || !line.heights_above_ground_m.empty();
+    }
   std::vector<glm::dvec3> all;
   all.reserve(point_count_);
-  for (const scene::TrackPolyline& line : geometry.segments)
-    all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
+  for (const scene::TrackGeometry* track : tracks)
+    for (const scene::TrackPolyline& line : track->segments)
+      all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
   make_blocks(all);
   // Bounding sphere: the box's centre and the farthest point from it.
   if (!all.empty()) {
@@ -95,34 +84,35 @@ TrackBuffer::TrackBuffer(const scene::TrackGeometry& geometry) {
   std::vector<float> values;
   if (has_values_) {
     values.reserve(point_count_);
-    for (const scene::TrackPolyline& line : geometry.segments) {
-      if (line.values.empty())
-        values.insert(values.end(), line.points_ecef.size(), std::numeric_limits<float>::quiet_NaN());
-      else
-        values.insert(values.end(), line.values.begin(), line.values.end());
-    }
+    for (const scene::TrackGeometry* track : tracks)
+      for (const scene::TrackPolyline& line : track->segments) {
+        if (line.values.empty())
+          values.insert(values.end(), line.points_ecef.size(), std::numeric_limits<float>::quiet_NaN());
+        else
+          values.insert(values.end(), line.values.begin(), line.values.end());
+      }
   }
   std::vector<TrackLod::Segment> lod_segments;
   for (const Range& range : segments_) lod_segments.push_back({range.first, range.count});
   lod_ = TrackLod(all, values, lod_segments);
-  upload(geometry);
+  upload(tracks);
 }
 
 // Block origins, kept in double: each segment's points in blocks from its own first point (a gap
 // between segments, however wide, costs no precision), blocks as large as the points' spread
-// within them allows (see the header).
+// within them allows (see the header), segment by segment.
 void TrackBuffer::make_blocks(const std::vector<glm::dvec3>& all) {
-  const auto blocks_reach = [&](std::int32_t size) {
-    for (const Range& range : segments_)
-      for (std::int32_t first = range.first; first < range.first + range.count; first += size)
-        for (std::int32_t i = first + 1; i < std::min(range.first + range.count, first + size); ++i)
-          if (glm::length(all[static_cast<std::size_t>(i)] - all[static_cast<std::size_t>(first)]) > kMaxBlockReachM)
-            return false;
+  const auto blocks_reach = [&](const Range& range, std::int32_t size) {
+    for (std::int32_t first = range.first; first < range.first + range.count; first += size)
+      for (std::int32_t i = first + 1; i < std::min(range.first + range.count, first + size); ++i)
+        if (glm::length(all[static_cast<std::size_t>(i)] - all[static_cast<std::size_t>(first)]) > kMaxBlockReachM)
+          return false;
     return true;
   };
-  while (block_shift_ > 0 && !blocks_reach(std::int32_t{1} << block_shift_)) --block_shift_;
-  const std::int32_t block_size = std::int32_t{1} << block_shift_;
   for (Range& range : segments_) {
+    range.block_shift = 8;
+    while (range.block_shift > 0 && !blocks_reach(range, std::int32_t{1} << range.block_shift)) --range.block_shift;
+    const std::int32_t block_size = std::int32_t{1} << range.block_shift;
     range.first_block = static_cast<std::int32_t>(block_origins_.size());
     for (std::int32_t i = range.first; i < range.first + range.count; i += block_size)
       block_origins_.push_back(all[static_cast<std::size_t>(i)]);
@@ -130,34 +120,36 @@ void TrackBuffer::make_blocks(const std::vector<glm::dvec3>& all) {
 }
 
 // The points (offsets from their blocks' origins, with values), the drops and the blocks texture.
-void TrackBuffer::upload(const scene::TrackGeometry& geometry) {
+void TrackBuffer::upload(std::span<const scene::TrackGeometry* const> tracks) {
   texture_width_ = width_for(point_count_);
   std::vector<float> texels;
   texels.reserve(point_count_ * 4);
   std::vector<float> drops;
   if (has_drops_) drops.reserve(point_count_);
   std::size_t segment = 0;
-  for (const scene::TrackPolyline& line : geometry.segments) {
-    if (line.points_ecef.empty()) continue;
-    const auto first_block = static_cast<std::size_t>(segments_[segment++].first_block);
-    for (std::size_t i = 0; i < line.points_ecef.size(); ++i) {
-      const glm::dvec3 offset = line.points_ecef[i] - block_origins_[first_block + (i >> block_shift_)];
-      const float value = line.values.empty() || std::isnan(line.values[i]) ? kMissingValue : line.values[i];
-      texels.insert(texels.end(),
-                    {static_cast<float>(offset.x), static_cast<float>(offset.y), static_cast<float>(offset.z), value});
-      if (has_drops_) {
-        const float drop = line.heights_above_ground_m.empty() ? 0.0f : line.heights_above_ground_m[i];
-        drops.push_back(std::isfinite(drop) ? std::max(drop, 0.0f) : 0.0f);
+  for (const scene::TrackGeometry* track : tracks)
+    for (const scene::TrackPolyline& line : track->segments) {
+      if (line.points_ecef.empty()) continue;
+      const Range& range = segments_[segment++];
+      const auto first_block = static_cast<std::size_t>(range.first_block);
+      for (std::size_t i = 0; i < line.points_ecef.size(); ++i) {
+        const glm::dvec3 offset = line.points_ecef[i] - block_origins_[first_block + (i >> range.block_shift)];
+        const float value = line.values.empty() || std::isnan(line.values[i]) ? kMissingValue : line.values[i];
+        texels.insert(texels.end(), {static_cast<float>(offset.x), static_cast<float>(offset.y),
+                                     static_cast<float>(offset.z), value});
+        if (has_drops_) {
+          const float drop = line.heights_above_ground_m.empty() ? 0.0f : line.heights_above_ground_m[i];
+          drops.push_back(std::isfinite(drop) ? std::max(drop, 0.0f) : 0.0f);
+        }
       }
     }
-  }
   points_ = upload_rgba32f(texels, texture_width_);
-  if (has_drops_) drops_ = upload_texels(drops, 1, texture_width_, GL_R32F, GL_RED, GL_FLOAT);
+  if (has_drops_) drops_ = texel_table::upload(drops, 1, texture_width_, GL_R32F, GL_RED, GL_FLOAT);
   // The hierarchy's lists (at least one texel: the programs' integer sampler always has a texture).
   std::vector<std::int32_t> lists = lod_.indices();
   if (lists.empty()) lists.push_back(0);
   lod_texture_width_ = width_for(lists.size());
-  lod_indices_ = upload_texels(lists, 1, lod_texture_width_, GL_R32I, GL_RED_INTEGER, GL_INT);
+  lod_indices_ = texel_table::upload(lists, 1, lod_texture_width_, GL_R32I, GL_RED_INTEGER, GL_INT);
   block_texture_width_ = width_for(block_origins_.size());
   std::vector<float> zeros(std::max<std::size_t>(block_origins_.size(), 1) * 4, 0.0f);
   blocks_ = upload_rgba32f(zeros, block_texture_width_);

@@ -4,10 +4,10 @@
 // points it needs.
 //
 // Layout, 16 bytes per point plus 1/16 byte per point of block origins (for recorded tracks):
-//   points    RGBA32F, 2D (at most kMaxTextureWidth wide, as narrow as keeps the row count): texel i is
+//   points    RGBA32F, 2D (at most 2048 wide (texel_table.hpp), as narrow as keeps the row count): texel i is
 //             point i of the track (segments one after the other): xyz = float offset from the
 //             point's block origin (ECEF metres), w = the colour attribute (NaN: no value).
-//   blocks    RGBA32F, one texel per block (block_points() points of a segment): "block origin minus eye", rewritten
+//   blocks    RGBA32F, one texel per block (up to 256 points of a segment): "block origin minus eye", rewritten
 //             each frame by set_eye() from the origins kept in double on the CPU. A point's
 //             camera-relative position is its offset plus its block's texel: no large number
 //             ever reaches the GPU, so a track 300 km from anything stays exact to the
@@ -19,19 +19,25 @@
 // in 489 rows.
 //
 // Blocks: each segment's points are cut into blocks from the segment's own first point, so a
-// jump between segments (tracks of one file far apart) costs nothing. Block size:
-// kMaxBlockPoints (256), halved until every point lies within kMaxBlockReachM of its block's
-// origin (its first point), so that a float offset never loses more than about a millimetre. A
-// track recorded every second keeps 256; only sparse points within a segment (a straight 300 km
-// segment, a GPS jump) get small blocks, down to a block per point.
+// jump between segments (tracks of one file far apart) costs nothing. Block size, per segment:
+// kMaxBlockPoints (256), halved until every point of the segment lies within kMaxBlockReachM of
+// its block's origin (its first point), so that a float offset never loses more than about a
+// millimetre. A track recorded every second keeps 256; only a segment with sparse points (a
+// straight 300 km segment, a GPS jump) gets small blocks, down to a block per point, and the
+// other segments of the buffer keep theirs.
 //
-// Segments are never bridged: the pass draws each segment on its own, and the shader clamps the
-// neighbour lookups (x0, x3) to the segment, so nothing is read past a segment's points.
+// Many tracks, one buffer: a season of 10,000 tracks is one buffer whose segments name the track
+// they belong to (Range::track), so the track pass draws all of them in a few draws and takes
+// each track's colour and visibility from a small table (TrackDraw::track_styles).
+//
+// Segments are never bridged: the shader clamps the neighbour lookups (x0, x3) to the segment, so
+// nothing is read past a segment's points.
 
 #include <glm/glm.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "render/gl/gl_objects.hpp"
@@ -42,7 +48,6 @@ namespace trailray::render {
 
 class TrackBuffer {
  public:
-  static constexpr int kMaxTextureWidth = 2048;
   static constexpr int kMaxBlockPoints = 256;
   static constexpr double kMaxBlockReachM = 16000.0;  // float spacing there: 1 mm
 
@@ -50,20 +55,24 @@ class TrackBuffer {
     std::int32_t first = 0;        // index of the segment's first point in the points texture
     std::int32_t count = 0;        // its points (a segment of one point is a sphere)
     std::int32_t first_block = 0;  // its first block in the blocks texture: point first + k is
-                                   // relative to block first_block + (k >> block_shift())
+                                   // relative to block first_block + (k >> block_shift)
+    std::int32_t block_shift = 8;  // log2 of the segment's points per block
+    std::int32_t track = 0;        // the track it belongs to (index into the geometries given)
   };
 
   // Uploads (the GL context must be current). Throws std::invalid_argument when a segment's
   // values or heights are neither empty nor one per point, or a point is not finite; RenderError
   // when GL refuses the textures (more points than the largest texture holds).
   explicit TrackBuffer(const scene::TrackGeometry& geometry);
+  // Many tracks in one buffer: track k's segments get Range::track k (empty segments, and so
+  // tracks without points, take no range).
+  explicit TrackBuffer(std::span<const scene::TrackGeometry* const> tracks);
 
   std::size_t point_count() const { return point_count_; }
   const std::vector<Range>& segments() const { return segments_; }
   bool has_values() const { return has_values_; }
   bool has_drops() const { return has_drops_; }
-  int block_points() const { return 1 << block_shift_; }
-  int block_shift() const { return block_shift_; }  // log2 of block_points(), for the shaders
+  std::size_t track_count() const { return track_count_; }  // the geometries given
   int texture_width() const { return texture_width_; }
   const Texture& points() const { return points_; }
   const Texture& blocks() const { return blocks_; }
@@ -85,9 +94,10 @@ class TrackBuffer {
 
  private:
   void make_blocks(const std::vector<glm::dvec3>& all);
-  void upload(const scene::TrackGeometry& geometry);
+  void upload(std::span<const scene::TrackGeometry* const> tracks);
 
   std::size_t point_count_ = 0;
+  std::size_t track_count_ = 0;
   std::vector<Range> segments_;
   bool has_values_ = false, has_drops_ = false;
   int texture_width_ = 1;
@@ -100,7 +110,6 @@ class TrackBuffer {
   Texture points_, blocks_, drops_, lod_indices_;
   int block_texture_width_ = 1;
   int lod_texture_width_ = 1;
-  int block_shift_ = 8;
 };
 
 }  // namespace trailray::render

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "render/passes/track_pass.hpp"
 #include "render/passes/track_pass_draws.hpp"
@@ -86,11 +87,30 @@ void TrackPass::draw_curtains(const GBuffer& gbuffer, const scene::Camera& camer
   set_vec3(curtain_, "u_eye_ecef", eye);
   set_vec3(curtain_, "u_sun_radiance", lighting.sun_radiance);
   set_vec3(curtain_, "u_sky_radiance", lighting.sky_radiance);
+  set_scale_uniforms(curtain_, settings);
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw) || !draw.buffer->has_drops()) continue;
-    set_color_uniforms(curtain_, draw, settings);
+    bind_buffer(curtain_, *draw.buffer);
     bind_texture(kDropsUnit, draw.buffer->drops());
-    draw_segments(curtain_, *draw.buffer);
+    const std::vector<float> styles = style_texels(draw);
+    // Segment by segment in its track's colour (a wall per segment: curtains are few).
+    for (const TrackBuffer::Range& range : draw.buffer->segments()) {
+      const auto style = static_cast<std::size_t>(draw.track_styles.empty() ? 0 : range.track);
+      if (!draw.track_styles.empty() && (style >= draw.track_styles.size() || !draw.track_styles[style].visible))
+        continue;
+      if (range.count < 2) continue;
+      set_vec3(curtain_, "u_color", {styles[style * 4], styles[style * 4 + 1], styles[style * 4 + 2]});
+      curtain_.set_int("u_by_value", styles[style * 4 + 3] > 0.0f ? 1 : 0);
+      curtain_.set_int("u_first", range.first);
+      curtain_.set_int("u_last", range.first + range.count - 1);
+      curtain_.set_int("u_first_block", range.first_block);
+      curtain_.set_int("u_block_shift", range.block_shift);
+      for (std::int32_t done = 0; done < range.count - 1; done += kCapsulesPerDraw) {
+        curtain_.set_int("u_chunk_first", range.first + done);
+        glDrawElements(GL_TRIANGLES, std::min(kCapsulesPerDraw, range.count - 1 - done) * 6, GL_UNSIGNED_SHORT,
+                       nullptr);
+      }
+    }
   }
   glDisable(GL_BLEND);
 }
@@ -154,6 +174,7 @@ void TrackPass::set_overlay_uniforms(const ShaderProgram& program, const GBuffer
   set_vec3(program, "u_sun_radiance", lighting.sun_radiance);
   set_vec3(program, "u_sky_radiance", lighting.sky_radiance);
   set_width_uniforms(program, camera);
+  set_scale_uniforms(program, settings);
 }
 
 void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
@@ -188,18 +209,16 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
     overlay_.set_int("u_overlay_split", split_of(draw) ? 1 : 0);
-    set_color_uniforms(overlay_, draw, settings);
     set_shape_uniforms(overlay_, draw, settings);
-    draw_segments(overlay_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
+    draw_pieces(overlay_, draw);
   }
   if (split) {
     set_overlay_uniforms(fringe_, gbuffer, camera, lighting, settings, view_projection);
     fringe_.set_int("u_overlay_split", 2);
     for (const TrackDraw& draw : tracks) {
       if (!drawable(draw) || !split_of(draw)) continue;
-      set_color_uniforms(fringe_, draw, settings);
       set_shape_uniforms(fringe_, draw, settings);
-      draw_segments(fringe_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
+      draw_pieces(fringe_, draw);
     }
   }
   glBindVertexArray(0);

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "render/gl/render_error.hpp"
+#include "render/passes/texel_table.hpp"
 #include "render/passes/track_pass_draws.hpp"
 
 namespace trailray::render {
@@ -65,9 +67,59 @@ void TrackPass::bind_colormap(scene::Colormap map, GLuint unit) const {
   bind_texture(unit, colormap_);
 }
 
-void TrackPass::prepare(std::span<const TrackDraw> tracks, const scene::Camera& camera) {
-  for (const TrackDraw& draw : tracks)
-    if (draw.buffer != nullptr) const_cast<TrackBuffer*>(draw.buffer)->set_eye(camera.position());
+std::size_t TrackDraw::shown_tracks() const {
+  if (track_styles.empty()) return 1;
+  return static_cast<std::size_t>(
+      std::count_if(track_styles.begin(), track_styles.end(), [](const TrackDrawStyle& s) { return s.visible; }));
+}
+
+void TrackPass::prepare(std::span<const TrackDraw> tracks, const scene::Camera& camera,
+                        const TrackSceneSettings& settings) {
+  frame_pieces_.clear();
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw)) continue;
+    const_cast<TrackBuffer*>(draw.buffer)->set_eye(camera.position());
+    const PiecesKey key{draw.buffer, static_cast<int>(draw.shape.capsules)};
+    if (frame_pieces_.contains(key)) continue;
+    std::function<bool(std::int32_t)> shown;
+    if (!draw.track_styles.empty())
+      shown = [styles = draw.track_styles](std::int32_t track) {
+        return track >= 0 && static_cast<std::size_t>(track) < styles.size() &&
+               styles[static_cast<std::size_t>(track)].visible;
+      };
+    const CapsulePieces pieces =
+        plan_capsule_pieces(*draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings), shown);
+    FramePieces frame;
+    frame.classes = pieces.classes;
+    frame.capsules = pieces.capsule_count;
+    std::vector<std::int32_t> table = pieces.texels();
+    frame.table =
+        texel_table::upload(table, 4, texel_table::width_for(table.size() / 4), GL_RGBA32I, GL_RGBA_INTEGER, GL_INT);
+    std::vector<float> styles = style_texels(draw);
+    frame.styles =
+        texel_table::upload(styles, 4, texel_table::width_for(styles.size() / 4), GL_RGBA32F, GL_RGBA, GL_FLOAT);
+    frame_pieces_.emplace(key, std::move(frame));
+  }
+  check_gl("uploading the tracks' pieces for the frame");
+}
+
+// The quads' vertex array (with the index buffer) must be bound: each size class of pieces is one
+// instanced draw, an instance per piece (track.vert reads its texels by gl_InstanceID).
+std::size_t TrackPass::draw_pieces(const ShaderProgram& program, const TrackDraw& draw) const {
+  const auto found = frame_pieces_.find(PiecesKey{draw.buffer, static_cast<int>(draw.shape.capsules)});
+  if (found == frame_pieces_.end()) throw RenderError("track pass: a draw was not prepared for this frame");
+  const FramePieces& frame = found->second;
+  bind_buffer(program, *draw.buffer);
+  bind_texture(kPiecesUnit, frame.table);
+  bind_texture(kStylesUnit, frame.styles);
+  program.set_int("u_pieces", static_cast<int>(kPiecesUnit));
+  program.set_int("u_track_styles", static_cast<int>(kStylesUnit));
+  for (const CapsulePieces::Class& c : frame.classes) {
+    if (c.count == 0) continue;
+    program.set_int("u_piece_base", c.first);
+    glDrawElementsInstanced(GL_TRIANGLES, c.capsules * 6, GL_UNSIGNED_SHORT, nullptr, c.count);
+  }
+  return frame.capsules;
 }
 
 void TrackPass::copy_terrain(const GBuffer& gbuffer) const {
@@ -131,15 +183,14 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const scene::Camera& camera
   visible_.set_float("u_margin_px", 0.0f);
   visible_.set_int("u_colormap", static_cast<int>(kColormapUnit));
   set_width_uniforms(visible_, camera);
+  set_scale_uniforms(visible_, settings);
   bind_colormap(settings.colormap, kColormapUnit);
   glBindVertexArray(quads_.id());
   visible_capsules_ = 0;
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
-    set_color_uniforms(visible_, draw, settings);
     set_shape_uniforms(visible_, draw, settings);
-    visible_capsules_ +=
-        draw_segments(visible_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
+    visible_capsules_ += draw_pieces(visible_, draw);
   }
   glBindVertexArray(0);
   glDisable(GL_DEPTH_TEST);
@@ -162,8 +213,8 @@ void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_proj
   for (const TrackDraw& draw : tracks)
     if (drawable(draw)) {
       set_shape_uniforms(shadow_, draw, settings);
-      // The camera's levels: a shadow is at most as sharp as the tube that casts it.
-      draw_segments(shadow_, *draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings));
+      // The camera's levels (prepare): a shadow is at most as sharp as the tube that casts it.
+      draw_pieces(shadow_, draw);
     }
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);

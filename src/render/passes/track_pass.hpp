@@ -32,13 +32,16 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <unordered_map>
 
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
+#include "render/passes/capsule_shape.hpp"
 #include "render/passes/compose_pass.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_buffer.hpp"
+#include "render/passes/track_pieces.hpp"
 #include "scene/camera.hpp"
 #include "scene/colormap.hpp"
 #include "scene/style.hpp"
@@ -46,22 +49,11 @@
 
 namespace trailray::render {
 
-// How a draw's capsules differ from a recorded track's (the pass settings'): a route is thinner
-// and dashed, a pin's stem and ball have widths of their own and stand raised above the ground.
-struct CapsuleShape {
-  std::optional<scene::TrackWidth> width;  // else the settings' width
-  std::optional<double> min_width_px;      // else the settings' minimum
-  // > 0: dashed along the line, dashes and gaps of about this many pixels (a power of two of
-  // metres, so the pattern holds still while the camera moves); the buffer's values are the
-  // metres along the line.
-  float dash_px = 0.0f;
-  // Each segment's last point is raised along the local vertical by max(lift_px pixels, lift_m):
-  // a pin's stem reaches up to its ball (a segment of one point), which rests on it.
-  float lift_px = 0.0f, lift_m = 0.0f;
-  // How a segment's points make capsules: a polyline (a track), or standing alone, so that
-  // thousands of pins are one draw: pairs (points 2k, 2k+1: stems) or singles (each point: balls).
-  enum class Capsules { polyline = 0, pairs = 1, singles = 2 };
-  Capsules capsules = Capsules::polyline;
+// One track of a buffer that holds many (TrackBuffer::Range::track).
+struct TrackDrawStyle {
+  glm::vec3 color_srgb{0.9f, 0.1f, 0.1f};
+  bool by_value = false;
+  bool visible = true;  // hidden tracks' pieces are left out of the frame's table
 };
 
 struct TrackDraw {
@@ -70,6 +62,11 @@ struct TrackDraw {
   bool by_value = false;                   // colour by the buffer's values through the scale
   CapsuleShape shape;
   bool is_pin = false;  // a waypoint's stem or ball (not counted as a track)
+  // A buffer of many tracks: each track's own colour and visibility, indexed by the segments'
+  // Range::track (color_srgb and by_value are then unused). Empty: one track, the fields above.
+  std::span<const TrackDrawStyle> track_styles;
+  // How many of its tracks are shown (counted as tracks drawn).
+  std::size_t shown_tracks() const;
 };
 
 // The pass's settings: a scene's track style with its colour scale (track_settings_for).
@@ -114,8 +111,10 @@ class TrackPass {
  public:
   TrackPass();  // compiles the programs (the GL context must be current); throws ShaderError
 
-  // Rewrites each buffer's block origins for the camera (call once per frame, before drawing).
-  static void prepare(std::span<const TrackDraw> tracks, const scene::Camera& camera);
+  // Once per frame, before drawing: rewrites each buffer's block origins for the camera and
+  // plans what each draw's capsules are this frame (track_pieces.hpp: the level of detail's runs
+  // of the shown tracks), which the visible, overlay and shadow draws then share.
+  void prepare(std::span<const TrackDraw> tracks, const scene::Camera& camera, const TrackSceneSettings& settings);
 
   // Into the G-buffer (as TerrainPass left it: the terrain's depth in the depth buffer, no
   // tracks yet); binds it.
@@ -161,6 +160,26 @@ class TrackPass {
   };
   mutable TerrainCopy terrain_copy_;
   mutable std::size_t visible_capsules_ = 0;
+  // The frame's plan per draw (prepare): its piece table and its tracks' styles on the GPU.
+  struct FramePieces {
+    std::array<CapsulePieces::Class, CapsulePieces::kClasses> classes{};
+    std::size_t capsules = 0;
+    Texture table;   // RGBA32I, three texels per piece (CapsulePieces::texels)
+    Texture styles;  // RGBA32F, per track: linear colour, 1 when by value
+  };
+  struct PiecesKey {
+    const TrackBuffer* buffer = nullptr;
+    int capsules = 0;  // CapsuleShape::Capsules
+    bool operator==(const PiecesKey&) const = default;
+  };
+  struct PiecesKeyHash {
+    std::size_t operator()(const PiecesKey& k) const noexcept {
+      return std::hash<const void*>{}(k.buffer) * 3u + static_cast<std::size_t>(k.capsules);
+    }
+  };
+  std::unordered_map<PiecesKey, FramePieces, PiecesKeyHash> frame_pieces_;
+  // Binds a prepared draw's tables and draws its pieces with `program`; returns the capsules.
+  std::size_t draw_pieces(const ShaderProgram& program, const TrackDraw& draw) const;
   void copy_terrain(const GBuffer& gbuffer) const;
   // The overlay's depth from the G-buffer's visible tracks (overlay_prefill.frag).
   void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,

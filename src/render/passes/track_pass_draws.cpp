@@ -11,6 +11,14 @@
 namespace trailray::render::track_pass_detail {
 namespace {
 
+// The camera's pixel size per metre of view depth.
+float pixel_angle(const scene::Camera& camera) {
+  const scene::Lens& lens = camera.lens();
+  return static_cast<float>(2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px);
+}
+
+}  // namespace
+
 glm::vec3 srgb_to_linear(const glm::vec3& c) {
   const auto one = [](float v) {
     v = std::clamp(v, 0.0f, 1.0f);
@@ -19,13 +27,21 @@ glm::vec3 srgb_to_linear(const glm::vec3& c) {
   return {one(c.r), one(c.g), one(c.b)};
 }
 
-// The camera's pixel size per metre of view depth.
-float pixel_angle(const scene::Camera& camera) {
-  const scene::Lens& lens = camera.lens();
-  return static_cast<float>(2.0 * std::tan(0.5 * lens.vertical_fov_deg * M_PI / 180.0) / lens.height_px);
+std::vector<float> style_texels(const TrackDraw& draw) {
+  const bool values = draw.buffer->has_values();
+  std::vector<float> out;
+  const auto add = [&](const glm::vec3& srgb, bool by_value) {
+    const glm::vec3 linear = srgb_to_linear(srgb);
+    for (const float v : {linear.r, linear.g, linear.b, by_value && values ? 1.0f : 0.0f}) out.push_back(v);
+  };
+  if (draw.track_styles.empty()) {
+    add(draw.color_srgb, draw.by_value);
+  } else {
+    out.reserve(draw.track_styles.size() * 4);
+    for (const TrackDrawStyle& style : draw.track_styles) add(style.color_srgb, style.by_value);
+  }
+  return out;
 }
-
-}  // namespace
 
 void check_gl(const char* what) {
   const GLenum error = glGetError();
@@ -72,9 +88,7 @@ float depth_step_k(const scene::Camera& camera) {
   return static_cast<float>(2.0 / (camera.depth_range().near_m * 16777216.0));
 }
 
-void set_color_uniforms(const ShaderProgram& program, const TrackDraw& draw, const TrackSceneSettings& settings) {
-  program.set_int("u_by_value", draw.by_value && draw.buffer->has_values() ? 1 : 0);
-  set_vec3(program, "u_color", srgb_to_linear(draw.color_srgb));
+void set_scale_uniforms(const ShaderProgram& program, const TrackSceneSettings& settings) {
   set_vec3(program, "u_missing_color", srgb_to_linear(scene::kMissingValueColorSrgb));
   set_vec3(program, "u_category_color", srgb_to_linear(scene::kCategoryColorSrgb));
   program.set_vec2("u_value_range", settings.value_min, settings.value_max);
@@ -120,69 +134,12 @@ std::optional<TrackLod::View> lod_view_for(const scene::Camera& camera, const Tr
   return view;
 }
 
-namespace {
-
-// Draws `total` capsules from list position `first`, in chunks of kCapsulesPerDraw.
-void draw_capsules(const ShaderProgram& program, std::int32_t first, std::int32_t total,
-                   std::int32_t points_per_capsule) {
-  for (std::int32_t done = 0; done < total; done += kCapsulesPerDraw) {
-    program.set_int("u_chunk_first", first + done * points_per_capsule);
-    const std::int32_t count = std::min(kCapsulesPerDraw, total - done);
-    glDrawElements(GL_TRIANGLES, count * 6, GL_UNSIGNED_SHORT, nullptr);
-  }
-}
-
-}  // namespace
-
-// Draws every segment of the track, a capsule per pair of consecutive points (a segment of one
-// point is a sphere: a zero-length capsule), or per pair or point standing alone (`capsules`),
-// in chunks of kCapsulesPerDraw. The quads' vertex array (with the index buffer) must be bound.
-// With `lod`, each chunked segment is drawn as the runs of levels the view picks (TrackLod::plan).
-std::size_t draw_segments(const ShaderProgram& program, const TrackBuffer& buffer, CapsuleShape::Capsules capsules,
-                          const std::optional<TrackLod::View>& lod) {
+void bind_buffer(const ShaderProgram& program, const TrackBuffer& buffer) {
   bind_texture(kPointsUnit, buffer.points());
   bind_texture(kBlocksUnit, buffer.blocks());
   // Always bound: an integer sampler must never see another unit's float texture.
   bind_texture(kLodUnit, buffer.lod_indices());
   program.set_int("u_lod_indices", static_cast<int>(kLodUnit));
-  program.set_int("u_block_shift", buffer.block_shift());
-  const TrackLod& hierarchy = buffer.lod();
-  std::vector<TrackLod::Run> runs;
-  if (lod) runs = hierarchy.plan(*lod);
-  std::size_t next_run = 0, drawn = 0;
-  const auto& segments = buffer.segments();
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    const TrackBuffer::Range& range = segments[s];
-    if (range.count <= 0) continue;
-    program.set_int("u_first", range.first);
-    program.set_int("u_first_block", range.first_block);
-    program.set_int("u_last", range.first + range.count - 1);
-    if (lod && hierarchy.chunked(s)) {
-      for (; next_run < runs.size() && runs[next_run].segment == static_cast<std::int32_t>(s); ++next_run) {
-        const TrackLod::Run& run = runs[next_run];
-        program.set_int("u_list_base", run.list_base);
-        program.set_int("u_run_first", run.first);
-        program.set_int("u_run_last", run.last);
-        program.set_int("u_before", run.before);
-        program.set_int("u_after", run.after);
-        draw_capsules(program, run.first, run.last - run.first, 1);
-        drawn += static_cast<std::size_t>(run.last - run.first);
-      }
-      continue;
-    }
-    program.set_int("u_list_base", -1);
-    program.set_int("u_run_first", range.first);
-    program.set_int("u_run_last", range.first + range.count - 1);
-    program.set_int("u_before", -1);
-    program.set_int("u_after", -1);
-    const std::int32_t points_per_capsule = capsules == CapsuleShape::Capsules::pairs ? 2 : 1;
-    const std::int32_t total = capsules == CapsuleShape::Capsules::polyline ? std::max(range.count - 1, 1)
-                               : capsules == CapsuleShape::Capsules::pairs  ? range.count / 2
-                                                                            : range.count;
-    draw_capsules(program, range.first, total, points_per_capsule);
-    drawn += static_cast<std::size_t>(total);
-  }
-  return drawn;
 }
 
 bool drawable(const TrackDraw& draw) { return draw.buffer != nullptr && draw.buffer->point_count() > 0; }

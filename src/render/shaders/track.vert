@@ -1,7 +1,8 @@
 #version 300 es
 // One camera-facing quad per segment, from gl_VertexID alone (no vertex buffer; a shared index
-// buffer only repeats 0 1 2 2 1 3): vertices 4k..4k+3 belong to the capsule from list position
-// u_chunk_first + k to the next (a point index at full detail, else through the level's list).
+// buffer only repeats 0 1 2 2 1 3): each instance is a piece of the frame's table (track_pieces.hpp,
+// u_piece_base + gl_InstanceID), and its vertices 4k..4k+3 belong to its capsule k, from list
+// position start + k to the next (a point index at full detail, else through the level's list).
 // The quad is the tight bounding quad of thesis §3.2.2 (Groß and Gumhold), built per end in the
 // plane facing the eye, with three corrections: it is widened to the capsule's true silhouette
 // when the eye is near (a sphere of radius r seen from distance D spans r D / sqrt(D^2 - r^2) in
@@ -24,23 +25,31 @@ uniform int u_overlay_split;
 uniform float u_camera_height_m;  // above the ellipsoid
 uniform float u_terrain_top_m;    // the highest terrain drawn, above the ellipsoid
 uniform float u_depth_step_k;     // depth-buffer resolution at distance d: d * d * k metres
-// Level of detail (track_lod.hpp): a draw covers a run of list positions u_run_first..u_run_last
-// of one level, whose points come from the level's index list at u_list_base (-1: full detail,
-// a position is a point index). The neighbours across the run's ends (x0 of its first capsule,
-// x3 of its last) are the points the adjacent runs join with (-1: the segment ends there), so
-// a joint between two levels gets the same plane from both sides.
+// The frame's pieces (track_pieces.hpp CapsulePieces::texels, three texels each) and the styles
+// of the buffer's tracks (per track: linear colour, w 1 when coloured by value).
+uniform highp isampler2D u_pieces;
+uniform highp sampler2D u_track_styles;
+uniform int u_piece_base;  // this draw's first piece (a size class)
+// Level of detail (track_lod.hpp): a piece lies in a run of list positions run_first..run_last of
+// one level, whose points come from the level's index list at list_base (-1: full detail, a
+// position is a point index). The neighbours across the run's ends (x0 of its first capsule, x3
+// of its last) are the points the adjacent runs join with (-1: the segment ends there), so a
+// joint between two levels gets the same plane from both sides.
 uniform highp isampler2D u_lod_indices;
-uniform int u_list_base;
-uniform int u_run_first;
-uniform int u_run_last;
-uniform int u_before;
-uniform int u_after;
+int g_list_base;
+int g_run_first;
+int g_run_last;
+int g_before;
+int g_after;
+
+ivec4 fetch_int_texel(highp isampler2D texture_2d, int index) {
+  int width = textureSize(texture_2d, 0).x;
+  return texelFetch(texture_2d, ivec2(index % width, index / width), 0);
+}
 
 int list_point(int position) {
-  if (u_list_base < 0) return position;
-  int width = textureSize(u_lod_indices, 0).x;
-  int texel = u_list_base + position;
-  return texelFetch(u_lod_indices, ivec2(texel % width, texel / width), 0).r;
+  if (g_list_base < 0) return position;
+  return fetch_int_texel(u_lod_indices, g_list_base + position).r;
 }
 
 flat out vec3 v_x0;  // the previous point (== v_x1 at a segment start)
@@ -52,6 +61,7 @@ flat out vec2 v_values;  // at v_x1 and v_x2
 flat out int v_neighbours;  // bit 0: there is a previous capsule, bit 1: a next one
 flat out vec3 v_start_plane;  // the joint planes' normals at v_x1 and v_x2 (joint_normal)
 flat out vec3 v_end_plane;
+flat out vec4 v_style;   // the track's linear colour, w 1: by value (track_trace.glsl track_albedo)
 out vec3 v_position;     // the quad's point, camera-relative ECEF
 
 // Heights from camera-relative positions: along the camera's vertical plus the Earth's curve over
@@ -92,10 +102,30 @@ void main() {
   int corner = gl_VertexID & 3;
   int end = corner >> 1;
   float side = (corner & 1) == 1 ? 1.0 : -1.0;
+  int piece = 3 * (u_piece_base + gl_InstanceID);
+  ivec4 run = fetch_int_texel(u_pieces, piece);
+  ivec4 place = fetch_int_texel(u_pieces, piece + 1);
+  if (segment >= place.z) {
+    // Past the piece's capsules (an instance has as many quads as the largest piece of its class).
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    v_position = vec3(0.0);
+    return;
+  }
+  ivec4 range = fetch_int_texel(u_pieces, piece + 2);
+  g_list_base = run.x;
+  g_run_first = run.y;
+  g_run_last = run.z;
+  g_before = run.w;
+  g_after = place.x;
+  g_first = range.x;
+  g_last = range.y;
+  g_first_block = range.z;
+  g_block_shift = range.w;
+  int start = place.y;
   // Pins' capsules stand alone (u_capsule_mode 1, 2: no neighbours, no joints).
   bool alone = u_capsule_mode != 0;
-  int j1 = u_capsule_mode == 1 ? u_chunk_first + 2 * segment : u_chunk_first + segment;
-  int j2 = u_capsule_mode == 2 ? j1 : min(j1 + 1, u_run_last);
+  int j1 = u_capsule_mode == 1 ? start + 2 * segment : start + segment;
+  int j2 = u_capsule_mode == 2 ? j1 : min(j1 + 1, g_run_last);
   int i1 = list_point(j1);
   int i2 = list_point(j2);
   vec3 x1 = track_point(i1);
@@ -104,8 +134,8 @@ void main() {
   v_x1 = x1;
   v_x2 = x2;
   if (end == 1) {
-    int before = j1 > u_run_first ? list_point(j1 - 1) : u_before;
-    int after = j2 < u_run_last ? list_point(j2 + 1) : u_after;
+    int before = j1 > g_run_first ? list_point(j1 - 1) : g_before;
+    int after = j2 < g_run_last ? list_point(j2 + 1) : g_after;
     bool has_previous = !alone && before >= 0;
     bool has_next = !alone && after >= 0;
     vec3 x0 = has_previous ? track_point(before) : x1;
@@ -117,6 +147,7 @@ void main() {
     v_neighbours = (has_previous ? 1 : 0) + (has_next ? 2 : 0);
     v_start_plane = has_previous ? joint_normal(x0, x1, x2) : vec3(0.0);
     v_end_plane = has_next ? joint_normal(x1, x2, x3) : vec3(0.0);
+    v_style = fetch_texel(u_track_styles, place.w);
   } else {
     v_x0 = x1;
     v_x3 = x2;
@@ -125,6 +156,7 @@ void main() {
     v_neighbours = 0;
     v_start_plane = vec3(0.0);
     v_end_plane = vec3(0.0);
+    v_style = vec4(0.0);
   }
 
   if (u_overlay_split != 0 && above_all_terrain(x1, x2, radius) != (u_overlay_split == 2)) {

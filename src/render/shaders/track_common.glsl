@@ -4,16 +4,18 @@
 
 uniform highp sampler2D u_points;  // xyz: offset from the block origin, w: value
 uniform highp sampler2D u_blocks;  // xyz: block origin minus the camera
-uniform int u_first;               // the segment's first and last point index
-uniform int u_last;
-uniform int u_chunk_first;         // the point of this draw's first capsule (draws go in chunks)
+// The segment being drawn: its first and last point index, its first block and log2 of its points
+// per block (TrackBuffer::Range). Set by the vertex shader's main (track.vert from its piece's
+// texels, track_curtain.vert from uniforms) before any point is fetched.
+int g_first;
+int g_last;
+int g_first_block;
+int g_block_shift;
 uniform float u_width_value;     // the tube's diameter: metres, or pixels when u_width_in_pixels
 uniform bool u_width_in_pixels;
 uniform float u_min_width_px;    // a tube is never thinner on screen than this
 uniform float u_pixel_angle;     // the camera's pixel size per metre of view depth
 uniform vec3 u_camera_forward;   // unit, ECEF: the camera's view axis
-uniform int u_block_shift;       // log2 of the points per block origin (TrackBuffer::block_shift)
-uniform int u_first_block;       // the segment's first block (TrackBuffer::Range::first_block)
 
 const float kMissingValueBelow = -1.0e38;  // track_buffer.cpp stores -3e38 for "no value"
 // A category (track::kCategoryValue, -1e30: gliding) is drawn in u_category_color, not on the scale.
@@ -48,12 +50,12 @@ uniform int u_capsule_mode;
 
 // Whether a point is the last of its capsule, which u_lift raises.
 bool lifted(int index) {
-  if (u_capsule_mode == 1) return ((index - u_first) & 1) == 1;
-  return u_capsule_mode == 2 || index == u_last;
+  if (u_capsule_mode == 1) return ((index - g_first) & 1) == 1;
+  return u_capsule_mode == 2 || index == g_last;
 }
 
 vec3 track_point(int index) {
-  vec3 p = fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, u_first_block + ((index - u_first) >> u_block_shift)).xyz;
+  vec3 p = fetch_texel(u_points, index).xyz + fetch_texel(u_blocks, g_first_block + ((index - g_first) >> g_block_shift)).xyz;
   if ((u_lift.x > 0.0 || u_lift.y > 0.0) && lifted(index)) p += u_up * max(u_lift.x * pixel_size_at(p), u_lift.y);
   return p;
 }

@@ -10,6 +10,7 @@ flat in vec2 v_values;
 flat in int v_neighbours;
 flat in vec3 v_start_plane;
 flat in vec3 v_end_plane;
+flat in vec4 v_style;  // the track's linear colour, w 1: coloured by value
 in vec3 v_position;
 
 uniform mat4 u_view_projection;
@@ -218,8 +219,6 @@ float window_depth(vec3 p) {
 }
 
 // --- colour ---
-uniform bool u_by_value;
-uniform vec3 u_color;          // linear: the solid colour
 uniform vec3 u_missing_color;  // linear: a point without a value
 uniform vec3 u_category_color;  // linear: a point of the category (kCategoryValueBelow)
 uniform highp sampler2D u_colormap;  // 256x1 sRGB texture: sampled as linear
@@ -228,7 +227,7 @@ uniform vec2 u_value_range;    // min, max of the colour scale
 // The value at a point of the segment: interpolated between the ends; where an end has no
 // value or a category instead, the nearer end decides (a category is never blended into the scale).
 vec3 track_albedo(vec3 p) {
-  if (!u_by_value) return u_color;
+  if (v_style.w < 0.5) return v_style.rgb;
   vec3 ab = v_x2 - v_x1;
   float length2 = dot(ab, ab);
   float s = length2 > 0.0 ? clamp(dot(p - v_x1, ab) / length2, 0.0, 1.0) : 0.0;
