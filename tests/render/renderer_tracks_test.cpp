@@ -83,32 +83,24 @@ TEST_F(RendererTracksTest, AHiddenTrackIsNotDrawn) {
   EXPECT_EQ(hidden.rgba, ground.rgba);
 }
 
-// Tracks that share one buffer are each drawn where, and in the colour, their own render puts them:
-// every pixel one track covers alone is the same in the picture of all of them.
-TEST_F(RendererTracksTest, TracksSharingABufferAreEachDrawnAsTheirOwnRenderDrawsThem) {
-  test::SceneDrawer drawer(nullptr, nullptr);
-  const scene::Lens lens{30.0, 160, 120};
-  const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 2000.0}, lens, 10.0);
-  const auto across = [&](double north_m) {
-    return test::geometry_of({polyline(frame_, {{-300, north_m, 800}, {-100, north_m + 30, 800}, {300, north_m, 800}})});
-  };
-  const std::vector<scene::Track> each{test::track_of(across(-200), {0.9f, 0.1f, 0.1f}),
-                                       test::track_of(across(0), {0.1f, 0.4f, 0.9f}),
-                                       test::track_of(across(200), {0.1f, 0.8f, 0.2f})};
-  scene::Scene scene = test::plain_scene(kPlace, 0.0);
+// Every pixel that `one` (of `all`) changes when drawn alone is the same, within 2/255, in the
+// picture of all of them; at least `min_pixels` such pixels.
+void expect_drawn_as_alone(test::SceneDrawer& drawer, const scene::Camera& camera, scene::Scene scene,
+                           const std::vector<scene::Track>& all, std::size_t min_pixels) {
+  scene.tracks = nullptr;
   const scene::RgbaImage ground = drawer.draw(camera, scene).image;
-  scene::TrackSet all = test::track_set({each[0], each[1], each[2]});
-  scene.tracks = &all;
+  scene::TrackSet together_set;
+  for (const scene::Track& t : all) together_set.add(t);
+  scene.tracks = &together_set;
   const test::Drawn together = drawer.draw(camera, scene);
-  EXPECT_EQ(together.report.tracks_drawn, 3u);
-
-  for (std::size_t i = 0; i < each.size(); ++i) {
-    scene::TrackSet alone_set = test::track_set({each[i]});
+  EXPECT_EQ(together.report.tracks_drawn, all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    scene::TrackSet alone_set = test::track_set({all[i]});
     scene.tracks = &alone_set;
     const scene::RgbaImage alone = drawer.draw(camera, scene).image;
     std::size_t covered = 0, same = 0;
-    for (std::uint32_t y = 0; y < lens.height_px; ++y)
-      for (std::uint32_t x = 0; x < lens.width_px; ++x) {
+    for (std::uint32_t y = 0; y < alone.height; ++y)
+      for (std::uint32_t x = 0; x < alone.width; ++x) {
         if (alone.pixel(x, y) == ground.pixel(x, y)) continue;
         ++covered;
         const auto a = alone.pixel(x, y), b = together.image.pixel(x, y);
@@ -116,9 +108,45 @@ TEST_F(RendererTracksTest, TracksSharingABufferAreEachDrawnAsTheirOwnRenderDraws
         for (int c = 0; c < 3; ++c) close = close && std::abs(int{a[c]} - int{b[c]}) <= 2;
         same += close ? 1 : 0;
       }
-    EXPECT_GT(covered, 400u) << "track " << i;
+    EXPECT_GT(covered, min_pixels) << "track " << i;
     EXPECT_EQ(same, covered) << "track " << i;
   }
+}
+
+// Tracks that share one buffer are each drawn where, and in the colour, their own render puts them.
+TEST_F(RendererTracksTest, TracksSharingABufferAreEachDrawnAsTheirOwnRenderDrawsThem) {
+  test::SceneDrawer drawer(nullptr, nullptr);
+  const scene::Lens lens{30.0, 160, 120};
+  const scene::Camera camera = test::looking_down({kPlace.lat_deg, kPlace.lon_deg, 2000.0}, lens, 10.0);
+  const auto across = [&](double north_m) {
+    return test::geometry_of(
+        {polyline(frame_, {{-300, north_m, 800}, {-100, north_m + 30, 800}, {300, north_m, 800}})});
+  };
+  expect_drawn_as_alone(
+      drawer, camera, test::plain_scene(kPlace, 0.0),
+      {test::track_of(across(-200), {0.9f, 0.1f, 0.1f}), test::track_of(across(0), {0.1f, 0.4f, 0.9f}),
+       test::track_of(across(200), {0.1f, 0.8f, 0.2f})},
+      400);
+}
+
+// The same with shadows, seen obliquely: tracks near and far fall into different shadow cascades,
+// and each cascade draws only the tracks that reach it (TrackPass::draw_shadow_casters): every
+// track's shadow is where its own render casts it.
+TEST_F(RendererTracksTest, TracksSharingABufferCastTheShadowsOfTheirOwnRenders) {
+  test::SceneDrawer drawer(nullptr, nullptr);
+  const scene::Lens lens{40.0, 200, 120};
+  const scene::Camera camera(frame_.point(0.0, -1500.0, 700.0), 0.0, -20.0, lens, scene::DepthRange{5.0, 1.0e5});
+  const auto across = [&](double north_m, double up_m) {
+    return test::geometry_of(
+        {polyline(frame_, {{-200, north_m, up_m}, {-50, north_m + 40, up_m}, {200, north_m, up_m}})});
+  };
+  scene::Scene scene = test::plain_scene(kPlace, 0.0);
+  scene.style.shading.shadows = true;
+  expect_drawn_as_alone(
+      drawer, camera, scene,
+      {test::track_of(across(-400, 60), {0.9f, 0.1f, 0.1f}), test::track_of(across(2500, 120), {0.1f, 0.4f, 0.9f}),
+       test::track_of(across(12000, 600), {0.1f, 0.8f, 0.2f})},
+      20);
 }
 
 }  // namespace

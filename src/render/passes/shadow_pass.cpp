@@ -58,7 +58,9 @@ void draw_shadow_pass(const ShadowMaps& maps, const ShadowCascades& cascades, co
     if (casting.empty()) return;
     const std::array<float, 16> relative = light.view_projection_relative_to(camera.position());
     track_pass.draw_shadow_casters(relative, cascades.sun_direction_ecef(), 2.0 * light.radius_m / map_size_px, camera,
-                                   casting, *casters.track_settings);
+                                   casting, *casters.track_settings, [&light](const glm::dvec3& centre, double radius) {
+                                     return light.may_hold(centre, radius);
+                                   });
   });
 }
 

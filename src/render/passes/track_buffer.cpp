@@ -24,6 +24,21 @@ Texture upload_rgba32f(std::vector<float>& texels, int width) {
   return texel_table::upload(texels, 4, width, GL_RGBA32F, GL_RGBA, GL_FLOAT);
 }
 
+// A sphere around the points: the box's centre and the farthest point from it.
+TrackBuffer::Sphere bounding_sphere(std::vector<glm::dvec3>::const_iterator first,
+                                    std::vector<glm::dvec3>::const_iterator last) {
+  TrackBuffer::Sphere sphere;
+  if (first == last) return sphere;
+  glm::dvec3 lo = *first, hi = *first;
+  for (auto p = first; p != last; ++p) {
+    lo = glm::min(lo, *p);
+    hi = glm::max(hi, *p);
+  }
+  sphere.centre = 0.5 * (lo + hi);
+  for (auto p = first; p != last; ++p) sphere.radius = std::max(sphere.radius, glm::length(*p - sphere.centre));
+  return sphere;
+}
+
 // Values and heights one per point (or none), every point finite.
 void check_segment(const scene::TrackPolyline& line, std::size_t s) {
   const std::size_t n = line.points_ecef.size();
@@ -71,15 +86,18 @@ TrackBuffer::TrackBuffer(std::span<const scene::TrackGeometry* const> tracks) : 
     for (const scene::TrackPolyline& line : track->segments)
       all.insert(all.end(), line.points_ecef.begin(), line.points_ecef.end());
   make_blocks(all);
-  // Bounding sphere: the box's centre and the farthest point from it.
-  if (!all.empty()) {
-    glm::dvec3 lo = all.front(), hi = all.front();
-    for (const glm::dvec3& p : all) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    centre_ = 0.5 * (lo + hi);
-    for (const glm::dvec3& p : all) radius_ = std::max(radius_, glm::length(p - centre_));
+  const Sphere all_sphere = bounding_sphere(all.begin(), all.end());
+  centre_ = all_sphere.centre;
+  radius_ = all_sphere.radius;
+  // Each track's: its segments are consecutive in `all`.
+  track_spheres_.resize(track_count_);
+  for (std::size_t s = 0; s < segments_.size();) {
+    std::size_t end = s;
+    while (end < segments_.size() && segments_[end].track == segments_[s].track) ++end;
+    const auto first = all.begin() + segments_[s].first;
+    const auto last = all.begin() + (segments_[end - 1].first + segments_[end - 1].count);
+    track_spheres_[static_cast<std::size_t>(segments_[s].track)] = bounding_sphere(first, last);
+    s = end;
   }
   std::vector<float> values;
   if (has_values_) {

@@ -87,6 +87,12 @@ class TrackBuffer {
   // A sphere around every point (ECEF), for culling and the shadow cascades' may_hold.
   glm::dvec3 bounding_centre_ecef() const { return centre_; }
   double bounding_radius_m() const { return radius_; }
+  // The same per track (index: Range::track; radius 0 around the origin for a track without points).
+  struct Sphere {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;
+  };
+  const std::vector<Sphere>& track_spheres() const { return track_spheres_; }
 
   // Rewrites the block texture for an eye (the camera's position: the passes work in
   // camera-relative ECEF). Cheap (a texel per block); a no-op when the eye is unchanged.
@@ -106,6 +112,7 @@ class TrackBuffer {
   bool eye_set_ = false;
   glm::dvec3 centre_{0.0};
   double radius_ = 0.0;
+  std::vector<Sphere> track_spheres_;
   TrackLod lod_;
   Texture points_, blocks_, drops_, lod_indices_;
   int block_texture_width_ = 1;

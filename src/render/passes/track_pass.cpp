@@ -67,6 +67,15 @@ void TrackPass::bind_colormap(scene::Colormap map, GLuint unit) const {
   bind_texture(unit, colormap_);
 }
 
+namespace {
+
+Texture upload_pieces(const CapsulePieces& pieces) {
+  std::vector<std::int32_t> table = pieces.texels();
+  return texel_table::upload(table, 4, texel_table::width_for(table.size() / 4), GL_RGBA32I, GL_RGBA_INTEGER, GL_INT);
+}
+
+}  // namespace
+
 std::size_t TrackDraw::shown_tracks() const {
   if (track_styles.empty()) return 1;
   return static_cast<std::size_t>(
@@ -87,14 +96,11 @@ void TrackPass::prepare(std::span<const TrackDraw> tracks, const scene::Camera& 
         return track >= 0 && static_cast<std::size_t>(track) < styles.size() &&
                styles[static_cast<std::size_t>(track)].visible;
       };
-    const CapsulePieces pieces =
+    CapsulePieces pieces =
         plan_capsule_pieces(*draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings), shown);
     FramePieces frame;
-    frame.classes = pieces.classes;
-    frame.capsules = pieces.capsule_count;
-    std::vector<std::int32_t> table = pieces.texels();
-    frame.table =
-        texel_table::upload(table, 4, texel_table::width_for(table.size() / 4), GL_RGBA32I, GL_RGBA_INTEGER, GL_INT);
+    frame.table = upload_pieces(pieces);
+    frame.pieces = std::move(pieces);
     std::vector<float> styles = style_texels(draw);
     frame.styles =
         texel_table::upload(styles, 4, texel_table::width_for(styles.size() / 4), GL_RGBA32F, GL_RGBA, GL_FLOAT);
@@ -105,21 +111,27 @@ void TrackPass::prepare(std::span<const TrackDraw> tracks, const scene::Camera& 
 
 // The quads' vertex array (with the index buffer) must be bound: each size class of pieces is one
 // instanced draw, an instance per piece (track.vert reads its texels by gl_InstanceID).
-std::size_t TrackPass::draw_pieces(const ShaderProgram& program, const TrackDraw& draw) const {
-  const auto found = frame_pieces_.find(PiecesKey{draw.buffer, static_cast<int>(draw.shape.capsules)});
-  if (found == frame_pieces_.end()) throw RenderError("track pass: a draw was not prepared for this frame");
-  const FramePieces& frame = found->second;
+std::size_t TrackPass::draw_pieces(const ShaderProgram& program, const TrackDraw& draw,
+                                   const std::pair<const CapsulePieces*, const Texture*>& only) const {
+  const FramePieces& frame = prepared(draw);
+  const CapsulePieces& pieces = only.first != nullptr ? *only.first : frame.pieces;
   bind_buffer(program, *draw.buffer);
-  bind_texture(kPiecesUnit, frame.table);
+  bind_texture(kPiecesUnit, only.second != nullptr ? *only.second : frame.table);
   bind_texture(kStylesUnit, frame.styles);
   program.set_int("u_pieces", static_cast<int>(kPiecesUnit));
   program.set_int("u_track_styles", static_cast<int>(kStylesUnit));
-  for (const CapsulePieces::Class& c : frame.classes) {
+  for (const CapsulePieces::Class& c : pieces.classes) {
     if (c.count == 0) continue;
     program.set_int("u_piece_base", c.first);
     glDrawElementsInstanced(GL_TRIANGLES, c.capsules * 6, GL_UNSIGNED_SHORT, nullptr, c.count);
   }
-  return frame.capsules;
+  return pieces.capsule_count;
+}
+
+const TrackPass::FramePieces& TrackPass::prepared(const TrackDraw& draw) const {
+  const auto found = frame_pieces_.find(PiecesKey{draw.buffer, static_cast<int>(draw.shape.capsules)});
+  if (found == frame_pieces_.end()) throw RenderError("track pass: a draw was not prepared for this frame");
+  return found->second;
 }
 
 void TrackPass::copy_terrain(const GBuffer& gbuffer) const {
@@ -200,7 +212,8 @@ void TrackPass::draw_visible(const GBuffer& gbuffer, const scene::Camera& camera
 
 void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_projection,
                                     const glm::dvec3& towards_sun_ecef, double texel_m, const scene::Camera& camera,
-                                    std::span<const TrackDraw> tracks, const TrackSceneSettings& settings) const {
+                                    std::span<const TrackDraw> tracks, const TrackSceneSettings& settings,
+                                    const SphereTest& may_hold) const {
   shadow_.use();
   shadow_.set_mat4("u_view_projection", std::span<const float, 16>(light_view_projection));
   shadow_.set_int("u_orthographic", 1);
@@ -210,12 +223,32 @@ void TrackPass::draw_shadow_casters(const std::array<float, 16>& light_view_proj
   shadow_.set_float("u_texel_m", static_cast<float>(texel_m));
   set_width_uniforms(shadow_, camera);
   glBindVertexArray(quads_.id());
-  for (const TrackDraw& draw : tracks)
-    if (drawable(draw)) {
-      set_shape_uniforms(shadow_, draw, settings);
-      // The camera's levels (prepare): a shadow is at most as sharp as the tube that casts it.
+  for (const TrackDraw& draw : tracks) {
+    if (!drawable(draw)) continue;
+    set_shape_uniforms(shadow_, draw, settings);
+    // The camera's levels (prepare): a shadow is at most as sharp as the tube that casts it.
+    const std::vector<TrackBuffer::Sphere>& spheres = draw.buffer->track_spheres();
+    if (!may_hold || spheres.size() < 2) {
       draw_pieces(shadow_, draw);
+      continue;
     }
+    // Many tracks: only the pieces of those that can reach this cascade.
+    std::vector<std::uint8_t> reaches(spheres.size());
+    bool all = true;
+    for (std::size_t t = 0; t < spheres.size(); ++t) {
+      reaches[t] = may_hold(spheres[t].centre, spheres[t].radius) ? 1 : 0;
+      all = all && reaches[t] != 0;
+    }
+    if (all) {
+      draw_pieces(shadow_, draw);
+      continue;
+    }
+    const CapsulePieces kept = prepared(draw).pieces.filtered(
+        [&](const CapsulePiece& p) { return reaches[static_cast<std::size_t>(p.track)] != 0; });
+    if (kept.pieces.empty()) continue;
+    const Texture table = upload_pieces(kept);
+    draw_pieces(shadow_, draw, {&kept, &table});
+  }
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);
   check_gl("drawing the tracks into the shadow maps");

@@ -30,9 +30,11 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <unordered_map>
+#include <utility>
 
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
@@ -137,9 +139,12 @@ class TrackPass {
   // `light_view_projection` is the callback's camera-relative matrix, `towards_sun_ecef` a unit
   // vector, `texel_m` the size of one of the cascade's texels (the quads' margin). The tubes
   // keep the radius the camera sees them with, so shadow and tube agree.
+  // `may_hold` (the cascade's ShadowCascade::may_hold) leaves out the tracks of a many-track
+  // buffer that cannot reach the cascade.
+  using SphereTest = std::function<bool(const glm::dvec3& centre_ecef, double radius_m)>;
   void draw_shadow_casters(const std::array<float, 16>& light_view_projection, const glm::dvec3& towards_sun_ecef,
                            double texel_m, const scene::Camera& camera, std::span<const TrackDraw> tracks,
-                           const TrackSceneSettings& settings) const;
+                           const TrackSceneSettings& settings, const SphereTest& may_hold = {}) const;
 
  private:
   ShaderProgram visible_, overlay_, fringe_, prefill_, shadow_, curtain_, blend_;
@@ -162,8 +167,7 @@ class TrackPass {
   mutable std::size_t visible_capsules_ = 0;
   // The frame's plan per draw (prepare): its piece table and its tracks' styles on the GPU.
   struct FramePieces {
-    std::array<CapsulePieces::Class, CapsulePieces::kClasses> classes{};
-    std::size_t capsules = 0;
+    CapsulePieces pieces;
     Texture table;   // RGBA32I, three texels per piece (CapsulePieces::texels)
     Texture styles;  // RGBA32F, per track: linear colour, 1 when by value
   };
@@ -178,8 +182,11 @@ class TrackPass {
     }
   };
   std::unordered_map<PiecesKey, FramePieces, PiecesKeyHash> frame_pieces_;
-  // Binds a prepared draw's tables and draws its pieces with `program`; returns the capsules.
-  std::size_t draw_pieces(const ShaderProgram& program, const TrackDraw& draw) const;
+  const FramePieces& prepared(const TrackDraw& draw) const;  // throws RenderError when not prepared
+  // Binds a prepared draw's tables and draws its pieces with `program` (else `only`'s, a subset
+  // with its own table); returns the capsules.
+  std::size_t draw_pieces(const ShaderProgram& program, const TrackDraw& draw,
+                          const std::pair<const CapsulePieces*, const Texture*>& only = {}) const;
   void copy_terrain(const GBuffer& gbuffer) const;
   // The overlay's depth from the G-buffer's visible tracks (overlay_prefill.frag).
   void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,

@@ -5,11 +5,35 @@
 namespace trailray::render {
 namespace {
 
-// The class of a piece of `capsules` (1 .. kPieceCapsules): the smallest k with 2^k >= capsules.
+// The class of a piece of `capsules` (a power of two, 1 .. kPieceCapsules): log2.
 int class_of(std::int32_t capsules) {
   int k = 0;
   while ((std::int32_t{1} << k) < capsules) ++k;
   return k;
+}
+
+// The pieces sorted into their classes.
+CapsulePieces sorted(const std::vector<CapsulePiece>& unsorted) {
+  CapsulePieces out;
+  std::array<std::int32_t, CapsulePieces::kClasses> counts{};
+  for (const CapsulePiece& p : unsorted) {
+    ++counts[static_cast<std::size_t>(class_of(p.capsules))];
+    out.capsule_count += static_cast<std::size_t>(p.capsules);
+  }
+  std::int32_t first = 0;
+  for (int k = 0; k < CapsulePieces::kClasses; ++k) {
+    CapsulePieces::Class& c = out.classes[static_cast<std::size_t>(k)];
+    c.first = first;
+    c.count = 0;
+    c.capsules = std::int32_t{1} << k;
+    first += counts[static_cast<std::size_t>(k)];
+  }
+  out.pieces.resize(unsorted.size());
+  for (const CapsulePiece& p : unsorted) {
+    CapsulePieces::Class& c = out.classes[static_cast<std::size_t>(class_of(p.capsules))];
+    out.pieces[static_cast<std::size_t>(c.first + c.count++)] = p;
+  }
+  return out;
 }
 
 }  // namespace
@@ -31,13 +55,17 @@ CapsulePieces plan_capsule_pieces(const TrackBuffer& buffer, CapsuleShape::Capsu
   std::vector<TrackLod::Run> runs;
   if (through_lod) runs = hierarchy.plan(*lod);
   std::vector<CapsulePiece> unsorted;
+  // `total` capsules from base.start: whole kPieceCapsules, then the rest by its binary digits.
   const auto add = [&](CapsulePiece base, std::int32_t total, std::int32_t points_per_capsule) {
-    for (std::int32_t done = 0; done < total; done += CapsulePieces::kPieceCapsules) {
-      CapsulePiece piece = base;
-      piece.start = base.start + done * points_per_capsule;
-      piece.capsules = std::min(CapsulePieces::kPieceCapsules, total - done);
-      unsorted.push_back(piece);
-    }
+    std::int32_t done = 0;
+    for (std::int32_t size = CapsulePieces::kPieceCapsules; size >= 1; size /= 2)
+      while (total - done >= size && (size == CapsulePieces::kPieceCapsules || ((total - done) & size) != 0)) {
+        CapsulePiece piece = base;
+        piece.start = base.start + done * points_per_capsule;
+        piece.capsules = size;
+        unsorted.push_back(piece);
+        done += size;
+      }
   };
   std::size_t next_run = 0;
   const auto& segments = buffer.segments();
@@ -79,26 +107,14 @@ CapsulePieces plan_capsule_pieces(const TrackBuffer& buffer, CapsuleShape::Capsu
     add(piece, total, mode == CapsuleShape::Capsules::pairs ? 2 : 1);
   }
 
-  CapsulePieces out;
-  std::array<std::int32_t, CapsulePieces::kClasses> counts{};
-  for (const CapsulePiece& p : unsorted) {
-    ++counts[static_cast<std::size_t>(class_of(p.capsules))];
-    out.capsule_count += static_cast<std::size_t>(p.capsules);
-  }
-  std::int32_t first = 0;
-  for (int k = 0; k < CapsulePieces::kClasses; ++k) {
-    CapsulePieces::Class& c = out.classes[static_cast<std::size_t>(k)];
-    c.first = first;
-    c.count = 0;
-    c.capsules = std::int32_t{1} << k;
-    first += counts[static_cast<std::size_t>(k)];
-  }
-  out.pieces.resize(unsorted.size());
-  for (const CapsulePiece& p : unsorted) {
-    CapsulePieces::Class& c = out.classes[static_cast<std::size_t>(class_of(p.capsules))];
-    out.pieces[static_cast<std::size_t>(c.first + c.count++)] = p;
-  }
-  return out;
+  return sorted(unsorted);
+}
+
+CapsulePieces CapsulePieces::filtered(const std::function<bool(const CapsulePiece&)>& keep) const {
+  std::vector<CapsulePiece> kept;
+  for (const CapsulePiece& p : pieces)
+    if (keep(p)) kept.push_back(p);
+  return sorted(kept);
 }
 
 }  // namespace trailray::render

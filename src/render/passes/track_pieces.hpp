@@ -2,13 +2,12 @@
 // What the track pass draws of a buffer in a frame, as a table the vertex shader reads (built on
 // the CPU once per frame, shared by the visible, overlay and shadow draws; no GL calls here).
 //
-// A piece is up to kPieceCapsules consecutive capsules of one segment at one level of detail
-// (a TrackLod::Run, or a whole segment at full detail, cut into pieces). The pass draws every
-// piece of a buffer as an instance of one quad strip (gl_InstanceID picks its texels), so a
-// buffer of 10,000 tracks costs a few draw calls instead of one per segment and run: pieces are
-// sorted by size class (up to 1, 2, 4, ... kPieceCapsules capsules) and each class is one
-// instanced draw of as many quads as its largest piece; a piece's unused quads collapse in the
-// vertex shader (at most half of a class's quads, and cheap: they fetch one texel and stop).
+// A piece is a power of two of consecutive capsules (1 .. kPieceCapsules) of one segment at one
+// level of detail: a TrackLod::Run, or a whole segment at full detail, cut into pieces by the
+// binary digits of its capsule count (200 capsules: 128 + 64 + 8). The pass draws every piece of
+// a buffer as an instance of a quad list (gl_InstanceID picks its texels), so a buffer of 10,000
+// tracks costs a few draw calls instead of one per segment and run: one instanced draw per size,
+// whose pieces all have exactly that many capsules (no vertex runs for nothing).
 
 #include <array>
 #include <cstdint>
@@ -36,17 +35,19 @@ struct CapsulePiece {
 
 struct CapsulePieces {
   static constexpr std::int32_t kPieceCapsules = 256;
-  static constexpr int kClasses = 9;  // pieces of up to 1, 2, 4, ... 256 capsules
+  static constexpr int kClasses = 9;  // pieces of 1, 2, 4, ... 256 capsules
   std::vector<CapsulePiece> pieces;   // class by class
   struct Class {
     std::int32_t first = 0, count = 0;  // its pieces
-    std::int32_t capsules = 0;          // quads per instance: the class's largest piece size
+    std::int32_t capsules = 0;          // quads per instance: each of its pieces' capsules
   };
   std::array<Class, kClasses> classes{};
   std::size_t capsule_count = 0;  // capsules drawn (the pieces' sum)
 
   // The table as the shader reads it: three RGBA32I texels per piece (track.vert).
   std::vector<std::int32_t> texels() const;
+  // The pieces `keep` accepts, classes kept.
+  CapsulePieces filtered(const std::function<bool(const CapsulePiece&)>& keep) const;
 };
 
 // The pieces of every segment of `buffer` whose track `shown` accepts (empty function: all),
