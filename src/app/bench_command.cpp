@@ -70,6 +70,7 @@ nlohmann::json row_json(const BenchRow& r) {
           {"capsule_total_ms", r.capsule_total_ms},
           {"capsules_drawn", r.capsules_drawn},
           {"capsule_upload_ms", r.capsule_upload_ms},
+          {"capsule_per_track_total_ms", r.capsule_per_track_total_ms},
           {"ribbon_ms", r.ribbon_ms},
           {"tube_ms", r.tube_ms},
           // The capsules' cost is both passes: a frame with tracks always draws the overlay too.
@@ -101,6 +102,11 @@ std::string table(const std::vector<BenchRow>& rows) {
         r.capsule_overlay_ms, r.capsule_total_ms, r.ribbon_ms, r.tube_ms, ratio(r.capsule_total_ms, r.ribbon_ms),
         ratio(r.capsule_total_ms, r.tube_ms), per_point(r.capsule_bytes, r.points), per_point(r.tube_bytes, r.points),
         ratio(static_cast<double>(r.capsule_bytes), static_cast<double>(r.tube_bytes)));
+  for (const BenchRow& r : rows)
+    if (r.capsule_per_track_total_ms > 0.0)
+      out += fmt::format("{}: capsules of all tracks in one buffer {:.3f} ms, a buffer per track {:.3f} ms ({:.2f}x)\n",
+                         r.name, r.capsule_total_ms, r.capsule_per_track_total_ms,
+                         ratio(r.capsule_per_track_total_ms, r.capsule_total_ms));
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -137,6 +138,10 @@ TrackBench::~TrackBench() = default;
 std::string TrackBench::renderer() const { return state_->gl.capabilities().renderer; }
 bool TrackBench::gpu_timing() const { return state_->gl.capabilities().disjoint_timer_query; }
 
+// Colours for the many-track scenario's tracks (each its own, as a season is drawn).
+constexpr std::array<glm::vec3, 4> kManyColorsSrgb{glm::vec3{0.9f, 0.1f, 0.1f}, glm::vec3{0.1f, 0.4f, 0.9f},
+                                                   glm::vec3{0.1f, 0.7f, 0.2f}, glm::vec3{0.9f, 0.6f, 0.1f}};
+
 BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(const std::string&)>& progress) {
   State& s = *state_;
   BenchRow row;
@@ -158,31 +163,62 @@ BenchRow TrackBench::run(const BenchDataset& dataset, const std::function<void(c
   for (const render::TerrainTileGpu& tile : ground_tiles) ground.push_back({&tile, {}});
   bool gpu = true;
 
+  // Many walks are many tracks: one buffer whose segments name their track, each track in its
+  // own colour (as the renderer draws a scene's tracks), and, to compare, a buffer per track.
+  const bool many = dataset.kind == "many_walks";
+  std::vector<scene::TrackGeometry> per_track;
+  std::vector<const scene::TrackGeometry*> track_pointers;
+  std::vector<render::TrackDrawStyle> styles;
+  if (many) {
+    per_track.reserve(dataset.geometry.segments.size());
+    for (const scene::TrackPolyline& line : dataset.geometry.segments) per_track.push_back({{line}});
+    for (std::size_t t = 0; t < per_track.size(); ++t) {
+      track_pointers.push_back(&per_track[t]);
+      styles.push_back({kManyColorsSrgb[t % kManyColorsSrgb.size()], false, true});
+    }
+  }
+  render::TrackSceneSettings settings;
+  settings.level_of_detail = s.settings.level_of_detail;
+  settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
+  if (s.settings.split_overlay) settings.terrain_top_m = dataset.ground_height_m;  // the flat ground
+  const render::SceneLighting lighting;
+  // In the renderer's order: the overlay starts from the visible pass's depth.
+  const auto time_capsules = [&](std::span<const render::TrackDraw> draws) {
+    return s.time_passes(camera, ground,
+                         {{"capsule_visible", [&] { s.capsules.draw_visible(s.gbuffer, camera, draws, settings); }},
+                          {"capsule_overlay",
+                           [&] { s.capsules.draw_overlay(s.gbuffer, s.overlay, camera, lighting, draws, settings); }}},
+                         [&] { s.capsules.prepare(draws, camera, settings); });
+  };
   {
     progress("capsule");
     const auto upload_start = std::chrono::steady_clock::now();
-    const render::TrackBuffer buffer(dataset.geometry);
+    const render::TrackBuffer buffer =
+        many ? render::TrackBuffer(std::span<const scene::TrackGeometry* const>(track_pointers))
+             : render::TrackBuffer(dataset.geometry);
     render::wait_for_gpu();
     row.capsule_upload_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - upload_start).count();
     row.capsule_bytes = buffer.gpu_bytes();
-    const std::array<render::TrackDraw, 1> draws{render::TrackDraw{&buffer, kTrackColorSrgb, false, {}, false, {}}};
-    render::TrackSceneSettings settings;
-    settings.level_of_detail = s.settings.level_of_detail;
-    settings.width = {s.settings.width_px, scene::TrackWidth::Unit::pixels};
-    if (s.settings.split_overlay) settings.terrain_top_m = dataset.ground_height_m;  // the flat ground
-    const render::SceneLighting lighting;
-    // In the renderer's order: the overlay starts from the visible pass's depth.
-    const PassMedians m =
-        s.time_passes(camera, ground,
-                      {{"capsule_visible", [&] { s.capsules.draw_visible(s.gbuffer, camera, draws, settings); }},
-                       {"capsule_overlay",
-                        [&] { s.capsules.draw_overlay(s.gbuffer, s.overlay, camera, lighting, draws, settings); }}},
-                      [&] { s.capsules.prepare(draws, camera, settings); });
+    render::TrackDraw draw{&buffer, kTrackColorSrgb, false, {}, false, {}};
+    if (many) draw.track_styles = styles;
+    const PassMedians m = time_capsules(std::span<const render::TrackDraw>(&draw, 1));
     row.capsule_ms = m.ms.at("capsule_visible");
     row.capsule_overlay_ms = m.ms.at("capsule_overlay");
     row.capsule_total_ms = row.capsule_ms + row.capsule_overlay_ms;
     row.capsules_drawn = s.capsules.visible_capsules();
+    gpu = gpu && m.gpu;
+  }
+  if (many) {
+    progress("capsule, a buffer per track");
+    std::vector<render::TrackBuffer> buffers;
+    buffers.reserve(per_track.size());
+    for (const scene::TrackGeometry& g : per_track) buffers.emplace_back(g);
+    std::vector<render::TrackDraw> draws;
+    for (std::size_t t = 0; t < buffers.size(); ++t)
+      draws.push_back({&buffers[t], styles[t].color_srgb, false, {}, false, {}});
+    const PassMedians m = time_capsules(draws);
+    row.capsule_per_track_total_ms = m.ms.at("capsule_visible") + m.ms.at("capsule_overlay");
     gpu = gpu && m.gpu;
   }
   {

@@ -42,6 +42,9 @@ struct BenchRow {
   double capsule_total_ms = 0.0;    // the two medians added
   std::size_t capsules_drawn = 0;   // by the visible pass in the last frame (the segments without LOD)
   double capsule_upload_ms = 0.0;   // making the TrackBuffer (the LOD hierarchy included), CPU time
+  // Many tracks: the capsules' total with a buffer (and draws) per track instead of one for all
+  // (0: not measured).
+  double capsule_per_track_total_ms = 0.0;
   double ribbon_ms = 0.0, tube_ms = 0.0;
   std::size_t capsule_bytes = 0, ribbon_bytes = 0, tube_bytes = 0;
   double tube_radius_m = 0.0;    // the tube's radius: width_px wide at the framing distance
