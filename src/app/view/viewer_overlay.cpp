@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "app/view/tooltip.hpp"
 #include "app/view/track_picking.hpp"
@@ -23,19 +26,31 @@ ImVec2 to_screen(const glm::dvec2& px) {
   return {static_cast<float>(px.x / scale.x), static_cast<float>(px.y / scale.y)};
 }
 
-void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius) {
-  list->AddCircleFilled(at, radius + 2.0f, IM_COL32(255, 255, 255, 230));
+void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius, float border = 2.0f) {
+  list->AddCircleFilled(at, radius + border, IM_COL32(255, 255, 255, 230));
   list->AddCircleFilled(at, radius, fill);
+}
+
+// The replay's markers: 6 px for a few tracks; smaller as more share the view (a season of a
+// thousand tracks would otherwise be a carpet of discs over its own tracks), down to 2 px dots.
+float replay_marker_radius(std::size_t markers) {
+  constexpr float kFull = 6.0f, kSmallest = 2.0f;
+  constexpr std::size_t kFullUpTo = 50;
+  if (markers <= kFullUpTo) return kFull;
+  return std::max(kSmallest, kFull * std::sqrt(static_cast<float>(kFullUpTo) / static_cast<float>(markers)));
 }
 
 void replay_markers(const OverlayState& s, ImDrawList* list) {
   if (!s.model.clock.span()) return;
+  std::vector<std::pair<ImVec2, ImU32>> shown;
   for (const scene::Track& t : s.model.tracks.tracks()) {
     if (!t.visible) continue;
     const TrackPosition p = position_at(t, s.model.clock.time());
     if (!p.valid) continue;
-    if (const auto px = screen_position(s.camera, p.ecef)) marker(list, to_screen(*px), colour_of(t.color_srgb), 6.0f);
+    if (const auto px = screen_position(s.camera, p.ecef)) shown.emplace_back(to_screen(*px), colour_of(t.color_srgb));
   }
+  const float radius = replay_marker_radius(shown.size());
+  for (const auto& [at, fill] : shown) marker(list, at, fill, radius, radius / 3.0f);
 }
 
 void waypoint_hover(const OverlayState& s, const scene::Waypoint& w) {
