@@ -59,6 +59,28 @@ TEST(TrackPicking, HiddenTracksAreNotPicked) {
   EXPECT_EQ(pick_track_point(tracks, camera, 303.0, 200.0).track, 0);
 }
 
+// Far away, where the renderer merges hundreds of a track's capsules into one (its level of
+// detail), picking still reads the recorded points: the cursor on a point's exact projection
+// picks that point, though its neighbours lie within a fraction of a pixel.
+TEST(TrackPicking, FarAwayTheCursorStillPicksTheExactRecordedPoint) {
+  const scene::Camera camera = test_camera();
+  std::vector<glm::dvec3> points;
+  const glm::dvec3 start = along(camera, 320, 180, 40000.0), towards = along(camera, 330, 182, 40000.0);
+  for (int i = 0; i < 1000; ++i) {
+    const double s = i / 999.0;
+    // A zig-zag of 1000 points over 10 pixels: about 0.01 px apart along it, 5 m across.
+    points.push_back(start + s * (towards - start) + ((i % 2) ? 5.0 : -5.0) * glm::dvec3(0.0, 0.0, 1.0));
+  }
+  const scene::TrackSet tracks = set_of({track_at(points)});
+  for (const std::size_t k : {0u, 1u, 537u, 998u}) {
+    const auto at = screen_position(camera, points[k]);
+    ASSERT_TRUE(at.has_value());
+    const HoverState h = pick_track_point(tracks, camera, at->x, at->y);
+    EXPECT_EQ(h.track, 0);
+    EXPECT_EQ(h.point, k);
+  }
+}
+
 // A track passes in front of a ridge (1500 m away) and again behind it (4000 m): with the cursor
 // exactly on the far pass and the near pass 5 px off, the near pass is what the user sees there.
 TEST(TrackPicking, APointInFrontOfTheTerrainBeatsAHiddenOne) {
