@@ -4,41 +4,28 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "geo/wgs84.hpp"
+#include "track/density_detail.hpp"
 
 namespace trailray::track {
+
+using density_detail::distance_cm;
+using density_detail::floor_div;
+using density_detail::grow;
+using density_detail::kNoCell;
+using density_detail::pack;
+using density_detail::run_all;
+using density_detail::surface_cm;
+
 namespace {
 
-constexpr std::uint32_t kNoCell = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint64_t kNoKey = std::numeric_limits<std::uint64_t>::max();
-// Cell coordinates are offset by 2^20 and packed in 21 bits each: with cells of at least 8 m,
-// the Earth's +-6,378 km take +-797,000 cells, inside +-2^20.
-constexpr std::int64_t kCellBias = std::int64_t{1} << 20;
 constexpr std::int64_t kMinCellCm = 800;
 constexpr std::int64_t kMinGapCm = 1000000;  // 10 km
-constexpr std::uint32_t kMaxRunSegments = 16;
-
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b;
-  if (a % b != 0 && (a < 0) != (b < 0)) --q;
-  return q;
-}
-
-std::uint64_t pack(std::int64_t cx, std::int64_t cy, std::int64_t cz) {
-  return (static_cast<std::uint64_t>(cx + kCellBias) << 42) | (static_cast<std::uint64_t>(cy + kCellBias) << 21) |
-         static_cast<std::uint64_t>(cz + kCellBias);
-}
-
-std::array<std::int64_t, 3> unpack(std::uint64_t key) {
-  constexpr std::uint64_t mask = (std::uint64_t{1} << 21) - 1;
-  return {static_cast<std::int64_t>((key >> 42) & mask) - kCellBias,
-          static_cast<std::int64_t>((key >> 21) & mask) - kCellBias, static_cast<std::int64_t>(key & mask) - kCellBias};
-}
+constexpr std::uint32_t kMaxRunSegments = 8;
 
 std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser: spreads neighbouring cells over the table
   x ^= x >> 30;
@@ -46,88 +33,6 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser: spreads neighbo
   x ^= x >> 27;
   x *= 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
-}
-
-template <typename Job>
-void run_all(std::size_t count, const ParallelFor& parallel, const Job& job) {
-  if (parallel && count > 1) {
-    parallel(count, job);
-    return;
-  }
-  for (std::size_t i = 0; i < count; ++i) job(i);
-}
-
-}  // namespace
-
-// What a point's neighbourhood holds, gathered once for the consecutive points in one cell. Per
-// source bounds on the distance to its gathered segments from where they were last measured (the
-// anchor): as the points move on, the distance changes by at most the way travelled since (the
-// triangle inequality), so a source well inside or well outside the radius is decided without
-// measuring it again. The bounds come cheap from the runs (their boxes below, their first points
-// above); only a source they leave on both sides of the radius is measured segment by segment.
-struct NeighbourIndex::Scratch {
-  std::uint64_t key = kNoKey;              // the cell gathered for
-  std::vector<std::uint32_t> runs;         // the runs of the 27 cells around it, grouped by source
-  std::vector<std::uint32_t> group_end;    // where each source's group ends in `runs`
-  std::vector<double> lower_cm, upper_cm;  // per group: bounds on the distance at its anchor
-  std::vector<double> anchor_way_cm;       // per group: `way_cm` when they were measured (-inf: never)
-  double way_cm = 0.0;                     // the way travelled since the gathering
-  bool has_previous = false;
-  Cm previous;  // the last point counted
-  // Grouping by source without sorting: each source's group in this gathering (by stamp).
-  std::vector<std::uint32_t> source_stamp, source_group;
-  std::uint32_t stamp = 0;
-  std::vector<std::uint32_t> group_size;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> cells;  // [begin, end) of runs per cell
-};
-
-namespace {
-
-// The place of a point on the ellipsoid (height 0) in whole centimetres; nullopt without a valid
-// position.
-template <typename Cm>
-std::optional<Cm> surface_cm(double lat, double lon) {
-  if (!std::isfinite(lat) || !std::isfinite(lon) || std::abs(lat) > 90.0) return std::nullopt;
-  const glm::dvec3 e = geo::ecef_from_geodetic(lat, lon, 0.0);
-  return Cm{static_cast<std::int32_t>(std::llround(e.x * 100.0)), static_cast<std::int32_t>(std::llround(e.y * 100.0)),
-            static_cast<std::int32_t>(std::llround(e.z * 100.0))};
-}
-
-template <typename Cm>
-double distance_cm(const Cm& a, const Cm& b) {
-  const double dx = static_cast<double>(b.x) - a.x, dy = static_cast<double>(b.y) - a.y,
-               dz = static_cast<double>(b.z) - a.z;
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-// Squared distance from p to the segment a-b (a == b: the point), all in centimetres.
-template <typename Cm>
-double segment_distance2(const Cm& p, const Cm& a, const Cm& b) {
-  const double ax = static_cast<double>(a.x) - p.x, ay = static_cast<double>(a.y) - p.y,
-               az = static_cast<double>(a.z) - p.z;
-  const double dx = static_cast<double>(b.x) - a.x, dy = static_cast<double>(b.y) - a.y,
-               dz = static_cast<double>(b.z) - a.z;
-  const double length2 = dx * dx + dy * dy + dz * dz;
-  double t = 0.0;
-  if (length2 > 0.0) t = std::clamp(-(ax * dx + ay * dy + az * dz) / length2, 0.0, 1.0);
-  const double cx = ax + t * dx, cy = ay + t * dy, cz = az + t * dz;
-  return cx * cx + cy * cy + cz * cz;
-}
-
-// Squared distance from p to a box (0 inside).
-template <typename Cm>
-double box_distance2(const Cm& p, const Cm& lo, const Cm& hi) {
-  const auto axis = [](std::int32_t v, std::int32_t l, std::int32_t h) {
-    const double d = v < l ? static_cast<double>(l) - v : v > h ? static_cast<double>(v) - h : 0.0;
-    return d * d;
-  };
-  return axis(p.x, lo.x, hi.x) + axis(p.y, lo.y, hi.y) + axis(p.z, lo.z, hi.z);
-}
-
-template <typename Cm>
-void grow(Cm& lo, Cm& hi, const Cm& p) {
-  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
 }
 
 }  // namespace
@@ -282,129 +187,9 @@ std::uint32_t NeighbourIndex::find_cell(std::uint64_t key) const {
   }
 }
 
-void NeighbourIndex::gather(std::uint64_t key, Scratch& scratch) const {
-  scratch.key = key;
-  scratch.cells.clear();
-  const auto [x, y, z] = unpack(key);
-  for (std::int64_t dx = -1; dx <= 1; ++dx)
-    for (std::int64_t dy = -1; dy <= 1; ++dy)
-      for (std::int64_t dz = -1; dz <= 1; ++dz) {
-        const std::uint32_t cell = find_cell(pack(x + dx, y + dy, z + dz));
-        if (cell != kNoCell) scratch.cells.emplace_back(cell_begin_[cell], cell_begin_[cell + 1]);
-      }
-  if (scratch.source_stamp.size() != source_count_) {
-    scratch.source_stamp.assign(source_count_, 0);
-    scratch.source_group.assign(source_count_, 0);
-    scratch.stamp = 0;
-  }
-  if (++scratch.stamp == 0) {  // wrapped: every old stamp could match again
-    std::fill(scratch.source_stamp.begin(), scratch.source_stamp.end(), 0);
-    scratch.stamp = 1;
-  }
-  // Each source's group, numbered in the order met; then the runs placed group by group.
-  scratch.group_size.clear();
-  std::size_t total = 0;
-  for (const auto& [begin, end] : scratch.cells)
-    for (std::uint32_t r = begin; r < end; ++r) {
-      const std::uint32_t source = runs_[r].source;
-      if (scratch.source_stamp[source] != scratch.stamp) {
-        scratch.source_stamp[source] = scratch.stamp;
-        scratch.source_group[source] = static_cast<std::uint32_t>(scratch.group_size.size());
-        scratch.group_size.push_back(0);
-      }
-      ++scratch.group_size[scratch.source_group[source]];
-      ++total;
-    }
-  scratch.group_end.resize(scratch.group_size.size());
-  std::uint32_t at = 0;
-  for (std::size_t g = 0; g < scratch.group_size.size(); ++g) {
-    const std::uint32_t size = scratch.group_size[g];
-    scratch.group_size[g] = at;  // now where the group's next run goes
-    at += size;
-    scratch.group_end[g] = at;
-  }
-  scratch.runs.resize(total);
-  for (const auto& [begin, end] : scratch.cells)
-    for (std::uint32_t r = begin; r < end; ++r)
-      scratch.runs[scratch.group_size[scratch.source_group[runs_[r].source]]++] = r;
-  scratch.lower_cm.assign(scratch.group_end.size(), 0.0);
-  scratch.upper_cm.assign(scratch.group_end.size(), 0.0);
-  scratch.anchor_way_cm.assign(scratch.group_end.size(), -std::numeric_limits<double>::infinity());
-  scratch.way_cm = 0.0;
-}
-
-std::pair<double, double> NeighbourIndex::group_bounds(const Cm& p, const Scratch& scratch, std::uint32_t begin,
-                                                       std::uint32_t end) const {
-  double lower2 = std::numeric_limits<double>::infinity(), upper2 = lower2;
-  for (std::uint32_t g = begin; g < end; ++g) {
-    const Run& run = runs_[scratch.runs[g]];
-    lower2 = std::min(lower2, box_distance2(p, run.lo, run.hi));
-    upper2 = std::min(upper2, segment_distance2(p, points_[run.first], points_[run.first]));
-  }
-  return {std::sqrt(lower2), std::sqrt(upper2)};
-}
-
-double NeighbourIndex::distance_to_group(const Cm& p, const Scratch& scratch, std::uint32_t begin,
-                                         std::uint32_t end) const {
-  double best2 = std::numeric_limits<double>::infinity();
-  for (std::uint32_t g = begin; g < end; ++g) {
-    const Run& run = runs_[scratch.runs[g]];
-    if (box_distance2(p, run.lo, run.hi) >= best2) continue;
-    if (run.first == run.last) {
-      best2 = std::min(best2, segment_distance2(p, points_[run.first], points_[run.first]));
-      continue;
-    }
-    for (std::uint32_t i = run.first; i < run.last; ++i)
-      best2 = std::min(best2, segment_distance2(p, points_[i], points_[i + 1]));
-  }
-  return std::sqrt(best2);
-}
-
-std::size_t NeighbourIndex::count_at(const Cm& p, Scratch& scratch) const {
-  if (scratch.has_previous) scratch.way_cm += distance_cm(scratch.previous, p);
-  scratch.previous = p;
-  scratch.has_previous = true;
-  std::size_t count = 0;
-  std::uint32_t begin = 0;
-  for (std::size_t group = 0; group < scratch.group_end.size(); ++group) {
-    const std::uint32_t end = scratch.group_end[group];
-    // How far the distance may have moved since it was bounded; 1 mm more for rounding.
-    const double moved = scratch.way_cm - scratch.anchor_way_cm[group] + 0.1;
-    bool near = scratch.upper_cm[group] + moved <= radius_cm_;
-    const bool far = scratch.lower_cm[group] - moved > radius_cm_;
-    if (!near && !far) {
-      auto [lower, upper] = group_bounds(p, scratch, begin, end);
-      if (lower <= radius_cm_ && upper > radius_cm_) lower = upper = distance_to_group(p, scratch, begin, end);
-      scratch.lower_cm[group] = lower;
-      scratch.upper_cm[group] = upper;
-      scratch.anchor_way_cm[group] = scratch.way_cm;
-      near = upper <= radius_cm_;
-    }
-    count += near ? 1 : 0;
-    begin = end;
-  }
-  return count;
-}
-
 void NeighbourIndex::count_near(PointLine points, std::span<float> out) const {
-  if (out.size() != points.size())
-    throw std::invalid_argument("count_near: " + std::to_string(out.size()) + " values for " +
-                                std::to_string(points.size()) + " points");
-  // One per thread, kept from line to line: its per-source arrays are as long as the sources.
-  thread_local Scratch scratch;
-  scratch.key = kNoKey;
-  scratch.has_previous = false;
-  const auto cell_of = [this](std::int32_t v) { return floor_div(v, cell_cm_); };
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto p = surface_cm<Cm>(points[i].lat, points[i].lon);
-    if (!p) {
-      out[i] = std::numeric_limits<float>::quiet_NaN();
-      continue;
-    }
-    const std::uint64_t key = pack(cell_of(p->x), cell_of(p->y), cell_of(p->z));
-    if (key != scratch.key) gather(key, scratch);
-    out[i] = static_cast<float>(count_at(*p, scratch));
-  }
+  const std::span<float> outs[] = {out};
+  count_near_lines(std::span<const PointLine>(&points, 1), outs);
 }
 
 std::size_t NeighbourIndex::count_near(double lat_deg, double lon_deg) const {
@@ -421,13 +206,17 @@ std::vector<std::vector<std::vector<float>>> neighbour_counts(std::span<const Ne
                                                               double radius_m, const ParallelFor& parallel) {
   const NeighbourIndex index(sources, radius_m, parallel);
   std::vector<std::vector<std::vector<float>>> out(targets.size());
-  run_all(targets.size(), parallel, [&](std::size_t t) {
+  std::vector<PointLine> lines;
+  std::vector<std::span<float>> values;
+  for (std::size_t t = 0; t < targets.size(); ++t) {
     out[t].resize(targets[t].size());
     for (std::size_t l = 0; l < targets[t].size(); ++l) {
       out[t][l].resize(targets[t][l].size());
-      index.count_near(targets[t][l], out[t][l]);
+      lines.push_back(targets[t][l]);
+      values.emplace_back(out[t][l]);
     }
-  });
+  }
+  index.count_near_lines(lines, values, parallel);
   return out;
 }
 

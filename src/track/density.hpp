@@ -20,16 +20,20 @@
 //
 // How: a spatial hash. ECEF space is cut into cubes a little larger than the radius (cells);
 // each source line is registered, as runs of consecutive segments, in every cell it passes
-// through; a point looks at the 27 cells around its own (anything within r of it is there),
-// groups the runs found by source, and counts the sources with a segment within r, a run's
-// bounding box ruling most segments out first. Consecutive points in one cell share the
-// gathering. Positions are whole centimetres (int32 ECEF, 12 bytes a point, exact differences).
+// through (a run's bounding box ruling most of its segments out at once). The points asked about
+// are taken cell by cell, whatever line they are on, so the work on a place is done once for every
+// track that passes it: the runs of the 27 cells around a cell (anything within r of its points is
+// there) are grouped by source, and then the cell's points are split in halves, again and again,
+// each part's box deciding the sources that are within r of all of it (counted without measuring)
+// or of none of it (left out), until only the sources near the radius' edge are measured point by
+// point. A decision for a whole box keeps a margin of 0.1 mm from the radius, so a point within
+// rounding of the edge is always measured, segment by segment, as a brute force would. Positions
+// are whole centimetres (int32 ECEF, 12 bytes a point, exact differences).
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "track/model.hpp"
@@ -69,6 +73,11 @@ class NeighbourIndex {
   void count_near(PointLine points, std::span<float> out) const;
   // The same for one place (for tests and tools): 0 for an invalid position.
   std::size_t count_near(double lat_deg, double lon_deg) const;
+  // The same for many lines at once, into out[i] for lines[i] (each as long as its line;
+  // std::invalid_argument otherwise): the points are taken cell by cell, whatever line they are
+  // on, the cells spread over `parallel`. Needs 12 bytes a point besides `out` while it runs.
+  void count_near_lines(std::span<const PointLine> lines, std::span<const std::span<float>> out,
+                        const ParallelFor& parallel = {}) const;
 
  private:
   struct Cm {  // ECEF in whole centimetres
@@ -82,16 +91,11 @@ class NeighbourIndex {
   struct Line {  // points [first, first + count) of points_
     std::uint32_t first = 0, count = 0;
   };
-  struct Scratch;
+  struct CellCounter;  // density_cells.cpp: the points of one cell, counted together
 
   void add_source_runs(const std::vector<Line>& lines, std::uint32_t source, std::vector<Run>& out) const;
   void build_table();
   std::uint32_t find_cell(std::uint64_t key) const;  // kNoCell: no run there
-  void gather(std::uint64_t key, Scratch& scratch) const;
-  std::size_t count_at(const Cm& p, Scratch& scratch) const;
-  std::pair<double, double> group_bounds(const Cm& p, const Scratch& scratch, std::uint32_t begin,
-                                         std::uint32_t end) const;
-  double distance_to_group(const Cm& p, const Scratch& scratch, std::uint32_t begin, std::uint32_t end) const;
 
   double radius_m_ = 0.0;
   double radius_cm_ = 0.0;
