@@ -29,7 +29,7 @@ using density_detail::unpack;
 namespace {
 
 // A box of points with at most this many is measured point by point, not split again.
-constexpr std::size_t kLeafPoints = 16;
+constexpr std::size_t kLeafPoints = 4;
 // Splitting in halves on the longest axis: 64 levels take any box of the Earth down to one point.
 constexpr std::size_t kMaxDepth = 64;
 // A decision for a whole box keeps this far from the radius (cm), so a point within rounding of
@@ -44,8 +44,9 @@ struct NeighbourIndex::CellCounter {
     float* out = nullptr;
   };
   // Runs grouped by source: a group per source, `ends` where each group ends in `runs`.
+  // Per group too the fix that came nearest to covering a box last looked at all of them.
   struct Candidates {
-    std::vector<std::uint32_t> runs, ends;
+    std::vector<std::uint32_t> runs, ends, fix;
   };
 
   const NeighbourIndex* index = nullptr;
@@ -114,22 +115,31 @@ struct NeighbourIndex::CellCounter {
       for (std::uint32_t r = begin; r < end; ++r) out.runs[group_size[source_group[ix.runs_[r].source]]++] = r;
   }
 
-  // Whether some point of the run is within the radius (less the margin) of the whole box centred
-  // on c with half sizes h: from a point, the farthest corner is |offset| + h away on each axis.
-  // Only the fixes are tried, not the lines between them: a box this misses is split further.
-  bool covers(const Run& run, const double (&c)[3], const double (&h)[3]) const {
-    // Nowhere in the run's box is near enough: no need to look at its points.
+  // How far the farthest corner of the box centred on c with half sizes h is from the point,
+  // squared: on each axis |offset| + h. Within the radius (less the margin), the point's source
+  // is within the radius of the whole box. Only fixes are tried, not the lines between them: a
+  // box this misses is split further.
+  double farthest2(const Cm& p, const double (&c)[3], const double (&h)[3]) const {
+    const double fx = std::abs(p.x - c[0]) + h[0], fy = std::abs(p.y - c[1]) + h[1], fz = std::abs(p.z - c[2]) + h[2];
+    return fx * fx + fy * fy + fz * fz;
+  }
+
+  // The run's fix with the nearest farthest corner (farthest2) into best / best_point, if nearer.
+  void nearest_fix(const Run& run, const double (&c)[3], const double (&h)[3], double& best,
+                   std::uint32_t& best_point) const {
+    // Nowhere in the run's box is nearer: no need to look at its points.
     const auto gap = [](double v, std::int32_t lo, std::int32_t hi) { return std::max({lo - v, v - hi, 0.0}); };
     const double gx = gap(c[0], run.lo.x, run.hi.x) + h[0], gy = gap(c[1], run.lo.y, run.hi.y) + h[1],
                  gz = gap(c[2], run.lo.z, run.hi.z) + h[2];
-    if (gx * gx + gy * gy + gz * gz > r2_in) return false;
+    if (gx * gx + gy * gy + gz * gz >= best) return;
     const std::vector<Cm>& pts = index->points_;
     for (std::uint32_t i = run.first; i <= run.last; ++i) {
-      const double fx = std::abs(pts[i].x - c[0]) + h[0], fy = std::abs(pts[i].y - c[1]) + h[1],
-                   fz = std::abs(pts[i].z - c[2]) + h[2];
-      if (fx * fx + fy * fy + fz * fz <= r2_in) return true;
+      const double f = farthest2(pts[i], c, h);
+      if (f < best) {
+        best = f;
+        best_point = i;
+      }
     }
-    return false;
   }
 
   // Whether a segment of the group's runs [begin, end) of `c` is within the radius of p.
@@ -177,25 +187,34 @@ struct NeighbourIndex::CellCounter {
     Candidates& kept = levels[depth + 1];
     kept.runs.clear();
     kept.ends.clear();
+    kept.fix.clear();
+    // Every fix of the undecided sources is looked at on every third level (a box halved on each
+    // axis), on the others only the one that came nearest then.
+    const bool look_at_all = depth % 3 == 0;
+    const std::vector<Cm>& pts = index->points_;
     std::uint32_t from = 0;
-    for (const std::uint32_t to : in.ends) {
+    for (std::size_t group = 0; group < in.ends.size(); ++group) {
+      const std::uint32_t to = in.ends[group];
       const std::size_t first_kept = kept.runs.size();
-      bool all = false;
-      for (std::uint32_t g = from; g < to; ++g) {
+      double best = std::numeric_limits<double>::infinity();
+      std::uint32_t fix = kNoCell;  // a kept run is always looked at: none kept, none needed
+      if (!look_at_all) {
+        fix = in.fix[group];
+        best = farthest2(pts[fix], c, h);
+      }
+      for (std::uint32_t g = from; g < to && best > r2_in; ++g) {
         const Run& run = index->runs_[in.runs[g]];
         if (box_box_distance2(run.lo, run.hi, lo, hi) > r2_out) continue;  // too far from all of the box
         kept.runs.push_back(in.runs[g]);
-        if (covers(run, c, h)) {
-          all = true;
-          break;
-        }
+        if (look_at_all) nearest_fix(run, c, h, best, fix);
       }
       from = to;
-      if (all) {
+      if (best <= r2_in) {
         ++certain;
         kept.runs.resize(first_kept);
       } else if (kept.runs.size() > first_kept) {
         kept.ends.push_back(static_cast<std::uint32_t>(kept.runs.size()));
+        kept.fix.push_back(fix);
       }
     }
     const bool one_place = lo.x == hi.x && lo.y == hi.y && lo.z == hi.z;

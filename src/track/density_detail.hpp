@@ -66,22 +66,17 @@ double distance_cm(const Cm& a, const Cm& b) {
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-// The point of the segment a-b closest to (px, py, pz), relative to that place (a == b: a).
+// Squared distance from p to the segment a-b (a == b: the point): what decides a count.
 template <typename Cm>
-std::array<double, 3> segment_offset(double px, double py, double pz, const Cm& a, const Cm& b) {
-  const double ax = a.x - px, ay = a.y - py, az = a.z - pz;
+[[gnu::always_inline]] inline double segment_distance2(const Cm& p, const Cm& a, const Cm& b) {
+  const double ax = static_cast<double>(a.x) - p.x, ay = static_cast<double>(a.y) - p.y,
+               az = static_cast<double>(a.z) - p.z;
   const double dx = static_cast<double>(b.x) - a.x, dy = static_cast<double>(b.y) - a.y,
                dz = static_cast<double>(b.z) - a.z;
   const double length2 = dx * dx + dy * dy + dz * dz;
   double t = 0.0;
   if (length2 > 0.0) t = std::clamp(-(ax * dx + ay * dy + az * dz) / length2, 0.0, 1.0);
-  return {ax + t * dx, ay + t * dy, az + t * dz};
-}
-
-// Squared distance from p to the segment a-b (a == b: the point): what decides a count.
-template <typename Cm>
-double segment_distance2(const Cm& p, const Cm& a, const Cm& b) {
-  const auto [cx, cy, cz] = segment_offset(p.x, p.y, p.z, a, b);
+  const double cx = ax + t * dx, cy = ay + t * dy, cz = az + t * dz;
   return cx * cx + cy * cy + cz * cz;
 }
 
@@ -93,14 +88,14 @@ inline double outside(std::int64_t v, std::int64_t lo, std::int64_t hi) {
 
 // Squared distance from p to a box (0 inside).
 template <typename Cm>
-double box_distance2(const Cm& p, const Cm& lo, const Cm& hi) {
+[[gnu::always_inline]] inline double box_distance2(const Cm& p, const Cm& lo, const Cm& hi) {
   const double dx = outside(p.x, lo.x, hi.x), dy = outside(p.y, lo.y, hi.y), dz = outside(p.z, lo.z, hi.z);
   return dx * dx + dy * dy + dz * dz;
 }
 
 // Squared distance between two boxes (0 where they overlap).
 template <typename Cm>
-double box_box_distance2(const Cm& lo_a, const Cm& hi_a, const Cm& lo_b, const Cm& hi_b) {
+[[gnu::always_inline]] inline double box_box_distance2(const Cm& lo_a, const Cm& hi_a, const Cm& lo_b, const Cm& hi_b) {
   const double dx =
       static_cast<double>(std::max<std::int64_t>({std::int64_t{lo_b.x} - hi_a.x, std::int64_t{lo_a.x} - hi_b.x, 0}));
   const double dy =
