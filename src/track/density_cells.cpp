@@ -3,6 +3,7 @@
 // done once for all of them; the work on a point is only the sources near the radius' edge.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -44,9 +45,13 @@ struct NeighbourIndex::CellCounter {
     float* out = nullptr;
   };
   // Runs grouped by source: a group per source, `ends` where each group ends in `runs`.
-  // Per group too the fix that came nearest to covering a box last looked at all of them.
+  // Per group too, from when all its segments were last measured (at the centre `at`): the
+  // distance to the nearest, and the one that came nearest to covering the box then (its run in
+  // `runs` and its first point).
   struct Candidates {
-    std::vector<std::uint32_t> runs, ends, fix;
+    std::vector<std::uint32_t> runs, ends, segment_run, segment;
+    std::vector<double> nearest;
+    double at[3] = {0.0, 0.0, 0.0};
   };
 
   const NeighbourIndex* index = nullptr;
@@ -115,31 +120,52 @@ struct NeighbourIndex::CellCounter {
       for (std::uint32_t r = begin; r < end; ++r) out.runs[group_size[source_group[ix.runs_[r].source]]++] = r;
   }
 
-  // How far the farthest corner of the box centred on c with half sizes h is from the point,
-  // squared: on each axis |offset| + h. Within the radius (less the margin), the point's source
-  // is within the radius of the whole box. Only fixes are tried, not the lines between them: a
-  // box this misses is split further.
-  double farthest2(const Cm& p, const double (&c)[3], const double (&h)[3]) const {
-    const double fx = std::abs(p.x - c[0]) + h[0], fy = std::abs(p.y - c[1]) + h[1], fz = std::abs(p.z - c[2]) + h[2];
+  // The point of the segment a-b nearest to c, as an offset from c (a == b: a).
+  static std::array<double, 3> nearest_on(const double (&c)[3], const Cm& a, const Cm& b) {
+    const double ax = a.x - c[0], ay = a.y - c[1], az = a.z - c[2];
+    const double dx = static_cast<double>(b.x) - a.x, dy = static_cast<double>(b.y) - a.y,
+                 dz = static_cast<double>(b.z) - a.z;
+    const double length2 = dx * dx + dy * dy + dz * dz;
+    double t = 0.0;
+    if (length2 > 0.0) t = std::clamp(-(ax * dx + ay * dy + az * dz) / length2, 0.0, 1.0);
+    return {ax + t * dx, ay + t * dy, az + t * dz};
+  }
+
+  // How far the box centred on c with half sizes h reaches from the segment a-b, squared: from
+  // the segment's point nearest c, its farthest corner is |offset| + h away on each axis. Within
+  // the radius (less the margin), the segment is within the radius of the whole box.
+  static double farthest2(const double (&c)[3], const double (&h)[3], const Cm& a, const Cm& b) {
+    const auto o = nearest_on(c, a, b);
+    const double fx = std::abs(o[0]) + h[0], fy = std::abs(o[1]) + h[1], fz = std::abs(o[2]) + h[2];
     return fx * fx + fy * fy + fz * fz;
   }
 
-  // The run's fix with the nearest farthest corner (farthest2) into best / best_point, if nearer.
-  void nearest_fix(const Run& run, const double (&c)[3], const double (&h)[3], double& best,
-                   std::uint32_t& best_point) const {
-    // Nowhere in the run's box is nearer: no need to look at its points.
-    const auto gap = [](double v, std::int32_t lo, std::int32_t hi) { return std::max({lo - v, v - hi, 0.0}); };
-    const double gx = gap(c[0], run.lo.x, run.hi.x) + h[0], gy = gap(c[1], run.lo.y, run.hi.y) + h[1],
-                 gz = gap(c[2], run.lo.z, run.hi.z) + h[2];
-    if (gx * gx + gy * gy + gz * gz >= best) return;
+  // Over the run's segments: the nearest distance to c (squared) into `nearest2`, and the segment
+  // reaching farthest over the box (farthest2) into `reach2` / `segment` where it reaches farther
+  // (then true).
+  bool measure(const Run& run, const double (&c)[3], const double (&h)[3], double& nearest2, double& reach2,
+               std::uint32_t& segment) const {
     const std::vector<Cm>& pts = index->points_;
-    for (std::uint32_t i = run.first; i <= run.last; ++i) {
-      const double f = farthest2(pts[i], c, h);
-      if (f < best) {
-        best = f;
-        best_point = i;
+    const std::uint32_t last = run.first == run.last ? run.first : run.last - 1;
+    bool farther = false;
+    for (std::uint32_t i = run.first; i <= last; ++i) {
+      const Cm& b = pts[run.first == run.last ? i : i + 1];
+      const auto o = nearest_on(c, pts[i], b);
+      nearest2 = std::min(nearest2, o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+      const double fx = std::abs(o[0]) + h[0], fy = std::abs(o[1]) + h[1], fz = std::abs(o[2]) + h[2];
+      const double f = fx * fx + fy * fy + fz * fz;
+      if (f < reach2) {
+        reach2 = f;
+        segment = i;
+        farther = true;
       }
     }
+    return farther;
+  }
+
+  // The segment `segment` names: from it to the next point, or the point alone at a run's end.
+  const Cm& segment_end(std::uint32_t segment, const Run& run) const {
+    return index->points_[run.first == run.last ? segment : segment + 1];
   }
 
   // Whether a segment of the group's runs [begin, end) of `c` is within the radius of p.
@@ -187,35 +213,61 @@ struct NeighbourIndex::CellCounter {
     Candidates& kept = levels[depth + 1];
     kept.runs.clear();
     kept.ends.clear();
-    kept.fix.clear();
-    // Every fix of the undecided sources is looked at on every third level (a box halved on each
-    // axis), on the others only the one that came nearest then.
-    const bool look_at_all = depth % 3 == 0;
-    const std::vector<Cm>& pts = index->points_;
+    kept.segment_run.clear();
+    kept.segment.clear();
+    kept.nearest.clear();
+    // Every segment of the undecided sources is measured on every third level (a box halved on
+    // each axis); on the others only the one that came nearest to covering then, and the distance
+    // measured then, less the way from there (the triangle inequality), rules sources out.
+    const bool measure_all = depth % 3 == 0;
+    const double reach = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);  // centre to corner
+    double moved = 0.0;
+    if (measure_all) {
+      std::copy(std::begin(c), std::end(c), std::begin(kept.at));
+    } else {
+      const double mx = c[0] - in.at[0], my = c[1] - in.at[1], mz = c[2] - in.at[2];
+      moved = std::sqrt(mx * mx + my * my + mz * mz);
+      std::copy(std::begin(in.at), std::end(in.at), std::begin(kept.at));
+    }
+    const double far = std::sqrt(r2_out) + reach;  // a source farther from the centre is out
     std::uint32_t from = 0;
     for (std::size_t group = 0; group < in.ends.size(); ++group) {
       const std::uint32_t to = in.ends[group];
       const std::size_t first_kept = kept.runs.size();
-      double best = std::numeric_limits<double>::infinity();
-      std::uint32_t fix = kNoCell;  // a kept run is always looked at: none kept, none needed
-      if (!look_at_all) {
-        fix = in.fix[group];
-        best = farthest2(pts[fix], c, h);
+      double nearest2 = std::numeric_limits<double>::infinity(), reach2 = nearest2;
+      std::uint32_t segment = 0, segment_run = 0;
+      if (!measure_all) {
+        const Run& run = index->runs_[in.segment_run[group]];
+        segment = in.segment[group];
+        segment_run = in.segment_run[group];
+        reach2 = farthest2(c, h, index->points_[segment], segment_end(segment, run));
+        nearest2 = in.nearest[group];  // not squared here: the distance at `at`
+        if (reach2 > r2_in && nearest2 - moved > far) {
+          from = to;
+          continue;
+        }
       }
-      for (std::uint32_t g = from; g < to && best > r2_in; ++g) {
+      for (std::uint32_t g = from; g < to && reach2 > r2_in; ++g) {
         const Run& run = index->runs_[in.runs[g]];
         if (box_box_distance2(run.lo, run.hi, lo, hi) > r2_out) continue;  // too far from all of the box
         kept.runs.push_back(in.runs[g]);
-        if (look_at_all) nearest_fix(run, c, h, best, fix);
+        if (measure_all && measure(run, c, h, nearest2, reach2, segment)) segment_run = in.runs[g];
       }
       from = to;
-      if (best <= r2_in) {
+      if (reach2 <= r2_in) {
         ++certain;
         kept.runs.resize(first_kept);
-      } else if (kept.runs.size() > first_kept) {
-        kept.ends.push_back(static_cast<std::uint32_t>(kept.runs.size()));
-        kept.fix.push_back(fix);
+        continue;
       }
+      if (measure_all) nearest2 = std::sqrt(nearest2);
+      if (kept.runs.size() == first_kept || (measure_all && nearest2 > far)) {
+        kept.runs.resize(first_kept);
+        continue;
+      }
+      kept.ends.push_back(static_cast<std::uint32_t>(kept.runs.size()));
+      kept.segment_run.push_back(segment_run);
+      kept.segment.push_back(segment);
+      kept.nearest.push_back(nearest2);
     }
     const bool one_place = lo.x == hi.x && lo.y == hi.y && lo.z == hi.z;
     if (kept.ends.empty() || one_place || end - begin <= kLeafPoints || depth + 1 >= kMaxDepth) {
