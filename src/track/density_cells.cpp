@@ -191,10 +191,20 @@ struct NeighbourIndex::CellCounter {
     return false;
   }
 
+  // The sources of `c` within the radius of p, plus `certain`. Before measuring a source
+  // segment by segment: its segment that came nearest to covering the box, then the distance
+  // measured at `c.at` less the way from there.
   std::size_t count_one(const Cm& p, const Candidates& c, std::size_t certain) const {
+    const double mx = p.x - c.at[0], my = p.y - c.at[1], mz = p.z - c.at[2];
+    const double far = std::sqrt(r2_out) + std::sqrt(mx * mx + my * my + mz * mz);
     std::uint32_t begin = 0;
-    for (const std::uint32_t end : c.ends) {
-      certain += near(p, c, begin, end) ? 1 : 0;
+    for (std::size_t group = 0; group < c.ends.size(); ++group) {
+      const std::uint32_t end = c.ends[group];
+      const std::uint32_t segment = c.segment[group];
+      if (segment_distance2(p, index->points_[segment], segment_end(segment, index->runs_[c.segment_run[group]])) <= r2)
+        ++certain;
+      else if (c.nearest[group] <= far && near(p, c, begin, end))
+        ++certain;
       begin = end;
     }
     return certain;
