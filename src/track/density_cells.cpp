@@ -230,33 +230,33 @@ struct NeighbourIndex::CellCounter {
     // each axis); on the others only the one that came nearest to covering then, and the distance
     // measured then, less the way from there (the triangle inequality), rules sources out.
     const bool measure_all = depth % 3 == 0;
+    const bool measured = depth > 0;                                          // the gathering has no measures yet
     const double reach = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);  // centre to corner
     double moved = 0.0;
-    if (measure_all) {
-      std::copy(std::begin(c), std::end(c), std::begin(kept.at));
-    } else {
+    if (measured) {
       const double mx = c[0] - in.at[0], my = c[1] - in.at[1], mz = c[2] - in.at[2];
       moved = std::sqrt(mx * mx + my * my + mz * mz);
-      std::copy(std::begin(in.at), std::end(in.at), std::begin(kept.at));
     }
+    std::copy(measure_all ? std::begin(c) : std::begin(in.at), measure_all ? std::end(c) : std::end(in.at),
+              std::begin(kept.at));
     const double far = std::sqrt(r2_out) + reach;  // a source farther from the centre is out
     std::uint32_t from = 0;
     for (std::size_t group = 0; group < in.ends.size(); ++group) {
       const std::uint32_t to = in.ends[group];
       const std::size_t first_kept = kept.runs.size();
-      double nearest2 = std::numeric_limits<double>::infinity(), reach2 = nearest2;
+      double nearest = std::numeric_limits<double>::infinity(), reach2 = nearest;
       std::uint32_t segment = 0, segment_run = 0;
-      if (!measure_all) {
-        const Run& run = index->runs_[in.segment_run[group]];
+      if (measured) {
         segment = in.segment[group];
         segment_run = in.segment_run[group];
-        reach2 = farthest2(c, h, index->points_[segment], segment_end(segment, run));
-        nearest2 = in.nearest[group];  // not squared here: the distance at `at`
-        if (reach2 > r2_in && nearest2 - moved > far) {
+        reach2 = farthest2(c, h, index->points_[segment], segment_end(segment, index->runs_[segment_run]));
+        nearest = in.nearest[group];  // at in.at
+        if (reach2 > r2_in && nearest - moved > far) {
           from = to;
           continue;
         }
       }
+      double nearest2 = std::numeric_limits<double>::infinity();
       for (std::uint32_t g = from; g < to && reach2 > r2_in; ++g) {
         const Run& run = index->runs_[in.runs[g]];
         if (box_box_distance2(run.lo, run.hi, lo, hi) > r2_out) continue;  // too far from all of the box
@@ -269,15 +269,15 @@ struct NeighbourIndex::CellCounter {
         kept.runs.resize(first_kept);
         continue;
       }
-      if (measure_all) nearest2 = std::sqrt(nearest2);
-      if (kept.runs.size() == first_kept || (measure_all && nearest2 > far)) {
+      if (measure_all) nearest = std::sqrt(nearest2);
+      if (kept.runs.size() == first_kept || (measure_all && nearest > far)) {
         kept.runs.resize(first_kept);
         continue;
       }
       kept.ends.push_back(static_cast<std::uint32_t>(kept.runs.size()));
       kept.segment_run.push_back(segment_run);
       kept.segment.push_back(segment);
-      kept.nearest.push_back(nearest2);
+      kept.nearest.push_back(nearest);
     }
     const bool one_place = lo.x == hi.x && lo.y == hi.y && lo.z == hi.z;
     if (kept.ends.empty() || one_place || end - begin <= kLeafPoints || depth + 1 >= kMaxDepth) {
