@@ -20,15 +20,17 @@
 //
 // How: a spatial hash. ECEF space is cut into cubes a little larger than the radius (cells);
 // each source line is registered, as runs of consecutive segments, in every cell it passes
-// through (a run's bounding box ruling most of its segments out at once). The points asked about
-// are taken cell by cell, whatever line they are on, so the work on a place is done once for every
-// track that passes it: the runs of the 27 cells around a cell (anything within r of its points is
-// there) are grouped by source, and then the cell's points are split in halves, again and again,
-// each part's box deciding the sources that are within r of all of it (counted without measuring)
-// or of none of it (left out), until only the sources near the radius' edge are measured point by
-// point. A decision for a whole box keeps a margin of 0.1 mm from the radius, so a point within
-// rounding of the edge is always measured, segment by segment, as a brute force would. Positions
-// are whole centimetres (int32 ECEF, 12 bytes a point, exact differences).
+// through (a run's bounding box ruling its segments out at once). The points asked about are
+// taken cell by cell, whatever line they are on, so the work on a place is done once for all the
+// tracks that pass it (a take-off, a city's paths): the runs of the 27 cells around a cell
+// (anything within r of its points is there) are grouped by source, then the cell's points are
+// split in halves, again and again, and each part's box decides the sources within r of all of it
+// (a segment reaching over the whole box: counted without measuring) and those within r of none
+// of it (the distance from the box's centre, less its half diagonal, over r: left out). Only the
+// sources left undecided at a few points are measured point by point. A decision for a whole box
+// keeps a margin of 0.1 mm from the radius, so a point within rounding of the edge is measured
+// segment by segment, as a brute force would. Positions are whole centimetres (int32 ECEF, 12
+// bytes a point, exact differences); asking needs 12 to 28 bytes more a point while it runs.
 
 #include <cstddef>
 #include <cstdint>
@@ -75,7 +77,7 @@ class NeighbourIndex {
   std::size_t count_near(double lat_deg, double lon_deg) const;
   // The same for many lines at once, into out[i] for lines[i] (each as long as its line;
   // std::invalid_argument otherwise): the points are taken cell by cell, whatever line they are
-  // on, the cells spread over `parallel`. Needs 12 bytes a point besides `out` while it runs.
+  // on, the cells spread over `parallel`.
   void count_near_lines(std::span<const PointLine> lines, std::span<const std::span<float>> out,
                         const ParallelFor& parallel = {}) const;
 
