@@ -203,6 +203,7 @@ void Renderer::run_passes(const FrameContent& content, const scene::Camera& came
   compose.atmosphere = content.shading.atmosphere;
   TrackSceneSettings tracks = content.track_settings;
   tracks.level_of_detail = tracks.level_of_detail && options_.track_level_of_detail;
+  tracks.overlay_depth = options_.track_overlay_depth;
   if (options_.split_track_overlay)
     tracks.terrain_top_m =
         terrain_span(content.terrain->tiles, static_cast<float>(content.terrain->report.neutral_ground_m)).second;

@@ -57,6 +57,9 @@ struct RendererOptions {
   // The track overlay traces only the capsules the terrain may hide (TrackSceneSettings::
   // terrain_top_m); false: every capsule, as a reference for tests.
   bool split_track_overlay = true;
+  // How the split overlay drops what lies behind a visible track (TrackSceneSettings::
+  // overlay_depth): chosen per frame, or one way for tests and the bench.
+  OverlayDepth track_overlay_depth = OverlayDepth::chosen;
   // Level of detail for the tracks' capsules (TrackSceneSettings::level_of_detail); false: every
   // capsule, as a reference for tests.
   bool track_level_of_detail = true;

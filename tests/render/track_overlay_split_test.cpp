@@ -37,14 +37,18 @@ int largest_channel_difference(const scene::RgbaImage& a, const scene::RgbaImage
   return most;
 }
 
-class TrackOverlaySplitTest : public GlTest {};
+// Both ways of dropping what lies behind a visible track (OverlayDepth): the depth prefilled from
+// the G-buffer, or a test in the overlay's shaders.
+class TrackOverlaySplitTest : public GlTest, public ::testing::WithParamInterface<OverlayDepth> {};
 
-TEST_F(TrackOverlaySplitTest, GhostsAreTheSamePixelsWhetherOrNotTheHighCapsulesAreTraced) {
+TEST_P(TrackOverlaySplitTest, GhostsAreTheSamePixelsWhetherOrNotTheHighCapsulesAreTraced) {
   test::EastProfileSource ridge("ridge", kPlace.lat_deg, kPlace.lon_deg, ridge_height_m);
   RendererOptions full_options;
   full_options.split_track_overlay = false;
   test::SceneDrawer full(&ridge, nullptr, full_options);
-  test::SceneDrawer split(&ridge, nullptr);
+  RendererOptions split_options;
+  split_options.track_overlay_depth = GetParam();
+  test::SceneDrawer split(&ridge, nullptr, split_options);
   const LocalFrame frame(kPlace);
   const scene::Lens lens{40.0, 400, 240};
   const glm::dvec3 eye = frame.point(-3500, -3000, 1900);
@@ -105,6 +109,12 @@ TEST_F(TrackOverlaySplitTest, GhostsAreTheSamePixelsWhetherOrNotTheHighCapsulesA
   EXPECT_LE(tubes_changed, opaque / 500) << tubes_changed << " of " << opaque << " tube pixels differ";
   EXPECT_LE(fringes_changed, fringes / 50) << fringes_changed << " of " << fringes << " fringe pixels differ";
 }
+
+INSTANTIATE_TEST_SUITE_P(OverlayDepth, TrackOverlaySplitTest,
+                         ::testing::Values(OverlayDepth::prefilled, OverlayDepth::tested_in_shaders),
+                         [](const ::testing::TestParamInfo<OverlayDepth>& param) {
+                           return param.param == OverlayDepth::prefilled ? "Prefilled" : "TestedInShaders";
+                         });
 
 }  // namespace
 }  // namespace trailray::render

@@ -147,6 +147,22 @@ void TrackPass::prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlay
   check_gl("copying the visible tracks' depth into the track overlay");
 }
 
+bool TrackPass::prefills_overlay_depth(const GBuffer& gbuffer, const TrackSceneSettings& settings) const {
+  switch (settings.overlay_depth) {
+    case OverlayDepth::prefilled:
+      return true;
+    case OverlayDepth::tested_in_shaders:
+      return false;
+    case OverlayDepth::chosen:
+      break;
+  }
+  // A capsule's quad covers some tens of pixels (5 px wide, a few long, with its margin): the
+  // prefill pays once the capsules' quads could cover the frame about once.
+  constexpr double kQuadPixels = 64.0;
+  return static_cast<double>(visible_capsules_) * kQuadPixels >
+         static_cast<double>(gbuffer.width()) * static_cast<double>(gbuffer.height());
+}
+
 void TrackPass::set_overlay_uniforms(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
                                      const SceneLighting& lighting, const TrackSceneSettings& settings,
                                      const std::array<float, 16>& view_projection) const {
@@ -183,11 +199,24 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   // Split: the visible tracks' depth first, so that the capsules above all the terrain need only
   // their fringe (track_pass.hpp); else every capsule's own trace writes it.
   const bool split = settings.terrain_top_m.has_value();
-  if (split) {
+  // Split, what lies behind a visible track must be dropped, as the capsules above all the
+  // terrain do not trace their hits here: either the overlay's depth starts as the visible
+  // tracks' (the prefill: a pass over the tracks' screen rectangle, about 15 ms at 1920x1080 on
+  // llvmpipe, after which the depth test rejects those fragments before any shader), or its
+  // shaders test each fragment against the G-buffer's distance (behind_visible_track.glsl: a
+  // texel and a comparison per fragment). The prefill pays where many capsules overlap.
+  const bool prefill = split && prefills_overlay_depth(gbuffer, settings);
+  if (prefill) {
     prefill_overlay_depth(gbuffer, target, camera, tracks, settings);
   } else {
     target.bind_and_clear();
   }
+  bind_texture(kFrameDistanceUnit, gbuffer.distance());
+  const auto set_visible_track_uniforms = [&](const ShaderProgram& program) {
+    program.use();
+    program.set_int("u_frame_distance", static_cast<int>(kFrameDistanceUnit));
+    program.set_int("u_test_visible_tracks", split && !prefill ? 1 : 0);
+  };
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -201,11 +230,16 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
 
   // Curtains first, blended, so that a tube in front of a wall replaces it and one behind is
   // hidden by its depth.
-  if (settings.curtain) draw_curtains(gbuffer, camera, lighting, tracks, settings, view_projection);
+  if (settings.curtain) {
+    set_visible_track_uniforms(curtain_);
+    curtain_.set_float("u_depth_step_k", depth_step_k(camera));
+    draw_curtains(gbuffer, camera, lighting, tracks, settings, view_projection);
+  }
 
   // A dashed draw's gaps show what is behind them: its capsules are all traced.
   const auto split_of = [&](const TrackDraw& draw) { return split && draw.shape.dash_px <= 0.0f; };
   set_overlay_uniforms(overlay_, gbuffer, camera, lighting, settings, view_projection);
+  set_visible_track_uniforms(overlay_);
   for (const TrackDraw& draw : tracks) {
     if (!drawable(draw)) continue;
     overlay_.set_int("u_overlay_split", split_of(draw) ? 1 : 0);
@@ -214,6 +248,7 @@ void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& t
   }
   if (split) {
     set_overlay_uniforms(fringe_, gbuffer, camera, lighting, settings, view_projection);
+    set_visible_track_uniforms(fringe_);
     fringe_.set_int("u_overlay_split", 2);
     for (const TrackDraw& draw : tracks) {
       if (!drawable(draw) || !split_of(draw)) continue;

@@ -19,10 +19,11 @@
 //            translucent "ghosts" (constant alpha down to fade_near_m behind the terrain, fading
 //            to 0 at fade_far_m), the anti-aliased silhouette fringe of visible tubes, and the
 //            curtains; blended over the composed frame once (blend_overlay). After the visible
-//            draw: its depth starts as the G-buffer's visible tracks, so a capsule that stands
-//            above all the terrain drawn (no ghost possible) only adds its fringe, with a depth
-//            test before the shader; only the others are ray traced again (hidden parts cost
-//            only where the terrain may hide a track);
+//            draw: what lies behind a visible track of the G-buffer is dropped (by a depth
+//            prefilled from the G-buffer where many capsules overlap, else by a texel and a test
+//            in the shaders: OverlayDepth), so a capsule that stands above all the terrain drawn
+//            (no ghost possible) only adds its fringe; only the others are ray traced again
+//            (hidden parts cost only where the terrain may hide a track);
 //   shadow   capsules ray traced along the sun's direction into the cascaded shadow maps: the
 //            tracks cast shadows on the terrain.
 
@@ -71,6 +72,8 @@ struct TrackDraw {
   std::size_t shown_tracks() const;
 };
 
+enum class OverlayDepth { chosen, prefilled, tested_in_shaders };
+
 // The pass's settings: a scene's track style with its colour scale (track_settings_for).
 struct TrackSceneSettings {
   scene::TrackWidth width;
@@ -88,6 +91,9 @@ struct TrackSceneSettings {
   // Level of detail (track_lod.hpp): consecutive capsules shorter than about a pixel are drawn as
   // one, within half a pixel and 1/32 of the colour scale. false: every capsule (tests, bench).
   bool level_of_detail = true;
+  // With terrain_top_m, how the overlay drops what lies behind a visible track (draw_overlay):
+  // chosen per frame by the capsules drawn, or always one way (tests, bench).
+  OverlayDepth overlay_depth = OverlayDepth::chosen;
 };
 
 // The settings for a track style and the colour scale in use (nullopt: solid colours).
@@ -191,6 +197,8 @@ class TrackPass {
   // The overlay's depth from the G-buffer's visible tracks (overlay_prefill.frag).
   void prefill_overlay_depth(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
                              std::span<const TrackDraw> tracks, const TrackSceneSettings& settings) const;
+  // Whether this frame's overlay starts from that depth (TrackSceneSettings::overlay_depth).
+  bool prefills_overlay_depth(const GBuffer& gbuffer, const TrackSceneSettings& settings) const;
   // The uniforms the overlay's two programs share.
   void set_overlay_uniforms(const ShaderProgram& program, const GBuffer& gbuffer, const scene::Camera& camera,
                             const SceneLighting& lighting, const TrackSceneSettings& settings,

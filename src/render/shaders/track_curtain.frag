@@ -7,6 +7,9 @@ precision highp int;
 #include "gbuffer.glsl"
 #include "srgb.glsl"
 
+uniform float u_depth_step_k;  // depth-buffer resolution at distance d: d * d * k metres
+#include "behind_visible_track.glsl"
+
 uniform highp sampler2D u_terrain_distance;
 uniform bool u_packed_distance;
 uniform bool u_by_value;
@@ -29,6 +32,7 @@ out vec4 overlay;
 void main() {
   float terrain = read_distance(u_terrain_distance, ivec2(gl_FragCoord.xy), u_packed_distance);
   if (terrain > 0.0 && length(v_position) > terrain + 0.5) discard;
+  if (behind_visible_track(length(v_position), visible_track_distance(terrain, u_packed_distance))) discard;
   vec3 albedo = u_color;
   if (u_by_value) {
     // v_value interpolates across the segment; a missing end drags it far below any real value,

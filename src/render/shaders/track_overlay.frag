@@ -19,23 +19,29 @@ precision highp int;
 #include "track_common.glsl"
 #include "track_trace.glsl"
 #include "track_overlay.glsl"
+#include "behind_visible_track.glsl"
 
 out vec4 overlay;
 
 void main() {
   vec3 direction = normalize(v_position);
+  float terrain = read_distance(u_terrain_distance, ivec2(gl_FragCoord.xy), u_packed_distance);
+  // All of the capsule behind a visible track: nothing to draw, nothing to trace.
+  float visible = visible_track_distance(terrain, u_packed_distance);
+  if (behind_visible_track(length(closest_on_segment(vec3(0.0), v_x1, v_x2)) - v_radii.y, visible)) discard;
   CapsuleHit hit = trace_capsule(vec3(0.0), direction, true);
   if (hit.clipped) discard;
-  float terrain = read_distance(u_terrain_distance, ivec2(gl_FragCoord.xy), u_packed_distance);
   if (!hit.hit) {
     vec4 colour;
     vec3 edge;
     if (!fringe(direction, terrain, colour, edge)) discard;
+    if (behind_visible_track(dot(edge, direction), visible)) discard;
     // Pushed back by the radius, so a neighbouring tube's surface always wins over it.
     gl_FragDepth = window_depth(edge + direction * v_radii.y);
     overlay = colour;
     return;
   }
+  if (behind_visible_track(hit.t, visible)) discard;
   float visibility = visibility_alpha(hit.t, terrain);
   bool inside = visibility < 1.0 && inside_tube(hit.on_axis, direction, terrain, hit.t);
   if (inside) visibility = 1.0;
