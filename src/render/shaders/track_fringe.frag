@@ -32,6 +32,6 @@ void main() {
   vec4 colour;
   vec3 edge;
   if (!fringe(direction, terrain, colour, edge)) discard;
-  if (behind_visible_track(dot(edge, direction), visible)) discard;
+  if (behind_visible_track(dot(edge, direction) + v_radii.y, visible)) discard;
   overlay = colour;
 }

@@ -35,7 +35,7 @@ void main() {
     vec4 colour;
     vec3 edge;
     if (!fringe(direction, terrain, colour, edge)) discard;
-    if (behind_visible_track(dot(edge, direction), visible)) discard;
+    if (behind_visible_track(dot(edge, direction) + v_radii.y, visible)) discard;
     // Pushed back by the radius, so a neighbouring tube's surface always wins over it.
     gl_FragDepth = window_depth(edge + direction * v_radii.y);
     overlay = colour;
