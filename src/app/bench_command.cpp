@@ -271,8 +271,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"split", "full"}))
       ->type_name("MODE");
   cmd->add_option("--many", args->many,
-                  "Also draw TRACKS random walks of POINTS points each, spread over 30 km x 30 km, as one buffer\n"
-                  "of that many segments (e.g. 10000x1000: a season of tracks; the tube is left out above 2M points)")
+                  "Also draw TRACKS random walks of POINTS points each, spread over 30 km x 30 km, each in its own\n"
+                  "colour, all in one buffer as the renderer draws a scene's tracks, and again with a buffer per\n"
+                  "track to compare (e.g. 10000x1000: a season of tracks; the tube is left out above 2M points)")
       ->type_name("TRACKSxPOINTS");
   cmd->add_option("--lod", args->lod,
                   "on: the capsules' level of detail merges capsules shorter than a pixel, as the renderer draws\n"
