@@ -102,6 +102,29 @@ TEST(ViewCli, TheWindowShowsTheTrackWhereItsPointsProject) {
   EXPECT_GT(count_red(picture), 500u);
 }
 
+// A season: 3,000 tracks, all under way at the replay's time, each with its replay marker.
+// ImGui indexes a draw list's vertices with 16 bits here: 3,000 discs of about 30 vertices each
+// aborted the viewer; many markers are now small squares, thinned to one per screen cell.
+TEST(ViewCli, ASeasonOfTracksOpensWithAMarkerEach) {
+  ViewEnv env;
+  std::vector<GpxTrack> season;
+  for (int t = 0; t < 3000; ++t) {
+    std::vector<GpxPoint> points;
+    for (int i = 0; i < 3; ++i) {
+      GpxPoint p = offset_point(kLat, kLon, 40.0 * (t % 60) + 10.0 * i, 40.0 * (t / 60));
+      p.ele = 1000.0;
+      p.time = kT0 - 60.0 + 60.0 * i;
+      points.push_back(p);
+    }
+    season.push_back({"run " + std::to_string(t), {points}});
+  }
+  const std::string out = env.file("season.png");
+  const auto r = run_view(
+      env, shell_quote(env.write_gpx("season.gpx", season)) + kWindow + " --frames 2 --screenshot " + shell_quote(out));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_GT(count_red(read_picture(out)), 500u);
+}
+
 // Two red tracks, the short one south of the long one's west end and 500 m lower: framed without
 // a legend, it would lie low left under the key of their names. The viewer's first view keeps it
 // out of the key (seen in a screenshot, which has the key as `render` draws it), whole in the

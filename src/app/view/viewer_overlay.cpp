@@ -26,19 +26,25 @@ ImVec2 to_screen(const glm::dvec2& px) {
   return {static_cast<float>(px.x / scale.x), static_cast<float>(px.y / scale.y)};
 }
 
-void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius, float border = 2.0f) {
-  list->AddCircleFilled(at, radius + border, IM_COL32(255, 255, 255, 230));
+void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius) {
+  list->AddCircleFilled(at, radius + 2.0f, IM_COL32(255, 255, 255, 230));
   list->AddCircleFilled(at, radius, fill);
 }
 
-// The replay's markers: 6 px for a few tracks; smaller as more share the view (a season of a
-// thousand tracks would otherwise be a carpet of discs over its own tracks), down to 2 px dots.
+// The replay's markers: 6 px discs for a few tracks, smaller as more share the view (a season of
+// a thousand tracks would otherwise be a carpet of discs over its own tracks), down to 2 px.
 float replay_marker_radius(std::size_t markers) {
   constexpr float kFull = 6.0f, kSmallest = 2.0f;
   constexpr std::size_t kFullUpTo = 50;
   if (markers <= kFullUpTo) return kFull;
   return std::max(kSmallest, kFull * std::sqrt(static_cast<float>(kFullUpTo) / static_cast<float>(markers)));
 }
+
+// ImGui's draw lists index their vertices with 16 bits here (the ES 3 backend has no base vertex):
+// a list over 65,536 vertices aborts. Discs take about 30 vertices each (two circles of 8 sides,
+// anti-aliased); beyond kMaxDiscs the markers are 4-vertex squares, and beyond kMaxSquares the
+// view is cut into cells that each keep their first marker (10,000 tracks: about 7,600 squares).
+constexpr std::size_t kMaxDiscs = 600, kMaxSquares = 8000;
 
 void replay_markers(const OverlayState& s, ImDrawList* list) {
   if (!s.model.clock.span()) return;
@@ -50,7 +56,25 @@ void replay_markers(const OverlayState& s, ImDrawList* list) {
     if (const auto px = screen_position(s.camera, p.ecef)) shown.emplace_back(to_screen(*px), colour_of(t.color_srgb));
   }
   const float radius = replay_marker_radius(shown.size());
-  for (const auto& [at, fill] : shown) marker(list, at, fill, radius, radius / 3.0f);
+  if (shown.size() <= kMaxDiscs) {
+    const int sides = shown.size() <= 50 ? 0 : 8;  // 0: ImGui's smooth circle
+    for (const auto& [at, fill] : shown) {
+      list->AddCircleFilled(at, radius * 4.0f / 3.0f, IM_COL32(255, 255, 255, 230), sides);
+      list->AddCircleFilled(at, radius, fill, sides);
+    }
+    return;
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float cell = std::max(1.0f, std::ceil(std::sqrt(display.x * display.y / static_cast<float>(kMaxSquares))));
+  const auto columns = static_cast<std::size_t>(display.x / cell) + 1;
+  std::vector<bool> taken(columns * (static_cast<std::size_t>(display.y / cell) + 1), false);
+  for (const auto& [at, fill] : shown) {
+    if (at.x < 0.0f || at.y < 0.0f || at.x >= display.x || at.y >= display.y) continue;
+    const std::size_t index = static_cast<std::size_t>(at.y / cell) * columns + static_cast<std::size_t>(at.x / cell);
+    if (shown.size() > kMaxSquares && taken[index]) continue;
+    taken[index] = true;
+    list->AddRectFilled(ImVec2(at.x - radius, at.y - radius), ImVec2(at.x + radius, at.y + radius), fill);
+  }
 }
 
 void waypoint_hover(const OverlayState& s, const scene::Waypoint& w) {
