@@ -127,11 +127,10 @@ FrameReport Renderer::draw(const FrameContent& content, const scene::Camera& cam
   report.shadows_drawn = shadows.cascades.has_value();
   report.shadow_maps_rendered = shadows.render_for.has_value();
   // The tracks' block origins relative to this camera (the shadow and track passes use them),
-  // and what their capsules are this frame (the level of detail as run_passes draws it).
-  TrackSceneSettings planned = content.track_settings;
-  planned.level_of_detail = planned.level_of_detail && options_.track_level_of_detail;
-  track_pass_.prepare(content.tracks, camera, planned);
-  run_passes(content, camera, lighting, target, items, shadows, frame);
+  // and what their capsules are this frame: planned with the settings the passes draw with.
+  const TrackSceneSettings tracks = frame_track_settings(content);
+  track_pass_.prepare(content.tracks, camera, tracks);
+  run_passes(content, camera, lighting, target, items, shadows, tracks, frame);
   report.track_capsules = content.tracks.empty() ? 0 : track_pass_.visible_capsules();
 
   // Between frames: the draw lists above point into the caches until here.
@@ -193,20 +192,24 @@ Renderer::FrameShadows Renderer::frame_shadows(const FrameContent& content, cons
   return shadows;
 }
 
-void Renderer::run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
-                          FrameTarget& target, std::span<const TerrainDrawItem> items, FrameShadows& shadows,
-                          const FrameOptions& frame) {
-  const std::optional<ShadowCascades>& cascades = shadows.cascades;
-  const scene::Lens& lens = camera.lens();
-  const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
-  ComposeSettings compose;
-  compose.atmosphere = content.shading.atmosphere;
+TrackSceneSettings Renderer::frame_track_settings(const FrameContent& content) const {
   TrackSceneSettings tracks = content.track_settings;
   tracks.level_of_detail = tracks.level_of_detail && options_.track_level_of_detail;
   tracks.overlay_depth = options_.track_overlay_depth;
   if (options_.split_track_overlay)
     tracks.terrain_top_m =
         terrain_span(content.terrain->tiles, static_cast<float>(content.terrain->report.neutral_ground_m)).second;
+  return tracks;
+}
+
+void Renderer::run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
+                          FrameTarget& target, std::span<const TerrainDrawItem> items, FrameShadows& shadows,
+                          const TrackSceneSettings& tracks, const FrameOptions& frame) {
+  const std::optional<ShadowCascades>& cascades = shadows.cascades;
+  const scene::Lens& lens = camera.lens();
+  const int width = static_cast<int>(lens.width_px), height = static_cast<int>(lens.height_px);
+  ComposeSettings compose;
+  compose.atmosphere = content.shading.atmosphere;
   FramePasses passes(debug_groups_, target.profiler);
   if (shadows.render_for)
     passes.run("shadows", [&] {

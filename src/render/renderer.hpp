@@ -158,9 +158,11 @@ class Renderer {
   };
   FrameShadows frame_shadows(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
                              std::span<const TerrainDrawItem> items, float neutral_m, const FrameOptions& frame);
+  // The track pass's settings for a frame: the content's, with the renderer's options applied.
+  TrackSceneSettings frame_track_settings(const FrameContent& content) const;
   void run_passes(const FrameContent& content, const scene::Camera& camera, const SceneLighting& lighting,
                   FrameTarget& target, std::span<const TerrainDrawItem> items, FrameShadows& shadows,
-                  const FrameOptions& frame);
+                  const TrackSceneSettings& tracks, const FrameOptions& frame);
 
   RendererOptions options_;
   DistanceEncoding distance_encoding_;
