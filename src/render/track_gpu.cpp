@@ -15,15 +15,21 @@ CapsuleShape route_shape(const scene::TrackStyle& style) {
   return shape;
 }
 
+std::vector<TrackGpu::Key> TrackGpu::recorded_keys(const scene::TrackSet& tracks) {
+  std::vector<Key> keys;
+  for (const scene::Track& track : tracks.tracks())
+    if (!track.is_route) keys.push_back({track.id, track.revision});
+  return keys;
+}
+
 std::vector<TrackDraw> TrackGpu::draws(const scene::TrackSet& tracks, bool by_value, const scene::TrackStyle& style) {
   std::vector<TrackDraw> out;
-  std::vector<Key> recorded;
+  std::vector<Key> recorded = recorded_keys(tracks);
   std::vector<const scene::TrackGeometry*> geometries;
   styles_.clear();
   bool any_shown = false;
   for (const scene::Track& track : tracks.tracks()) {
     if (track.is_route) continue;
-    recorded.push_back({track.id, track.revision});
     geometries.push_back(&track.geometry);
     styles_.push_back({track.color_srgb, by_value && track.by_value, track.visible});
     any_shown = any_shown || track.visible;
@@ -67,11 +73,8 @@ void TrackGpu::evict(const scene::TrackSet* tracks) {
     for (const scene::Track& track : tracks->tracks())
       if (track.is_route) current.insert({track.id, track.revision});
   // The recorded tracks' buffer while the set still holds exactly what it was built from.
-  std::vector<Key> recorded;
-  if (tracks != nullptr)
-    for (const scene::Track& track : tracks->tracks())
-      if (!track.is_route) recorded.push_back({track.id, track.revision});
-  if (!recorded.empty() && recorded == recorded_) current.insert({kRecordedId, recorded_revision_});
+  if (tracks != nullptr && !recorded_.empty() && recorded_keys(*tracks) == recorded_)
+    current.insert({kRecordedId, recorded_revision_});
   buffers_.retain_if([&](const Key& key) { return current.contains(key); });
 }
 

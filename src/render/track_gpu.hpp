@@ -55,6 +55,8 @@ class TrackGpu {
   std::uint64_t recorded_revision_ = 0;
   std::vector<Key> recorded_;
   std::vector<TrackDrawStyle> styles_;  // the frame's, one per recorded track
+  // The (id, revision) of each recorded track (not a route) of the set, in order.
+  static std::vector<Key> recorded_keys(const scene::TrackSet& tracks);
   // Tracks are never evicted for their size: a scene draws all of its tracks.
   GpuResourceCache<Key, TrackBuffer, KeyHash> buffers_{std::numeric_limits<std::size_t>::max()};
 };
