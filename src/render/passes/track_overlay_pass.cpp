@@ -95,10 +95,8 @@ void TrackPass::draw_curtains(const GBuffer& gbuffer, const scene::Camera& camer
     const std::vector<float> styles = style_texels(draw);
     // Segment by segment in its track's colour (a wall per segment: curtains are few).
     for (const TrackBuffer::Range& range : draw.buffer->segments()) {
+      if (range.count < 2 || !draw.shows_track(range.track)) continue;
       const auto style = static_cast<std::size_t>(draw.track_styles.empty() ? 0 : range.track);
-      if (!draw.track_styles.empty() && (style >= draw.track_styles.size() || !draw.track_styles[style].visible))
-        continue;
-      if (range.count < 2) continue;
       set_vec3(curtain_, "u_color", {styles[style * 4], styles[style * 4 + 1], styles[style * 4 + 2]});
       curtain_.set_int("u_by_value", styles[style * 4 + 3] > 0.0f ? 1 : 0);
       curtain_.set_int("u_first", range.first);
@@ -196,15 +194,14 @@ void TrackPass::set_overlay_uniforms(const ShaderProgram& program, const GBuffer
 void TrackPass::draw_overlay(const GBuffer& gbuffer, const TrackOverlayTarget& target, const scene::Camera& camera,
                              const SceneLighting& lighting, std::span<const TrackDraw> tracks,
                              const TrackSceneSettings& settings) const {
-  // Split: the visible tracks' depth first, so that the capsules above all the terrain need only
-  // their fringe (track_pass.hpp); else every capsule's own trace writes it.
+  // Split (track_pass.hpp), the capsules above all the terrain add only their fringe and do not
+  // trace their hits here, so what lies behind a visible track is dropped otherwise: either the
+  // overlay's depth starts as the visible tracks' (the prefill: a pass over the tracks' screen
+  // rectangle, about 15 ms at 1920x1080 on llvmpipe, after which the depth test rejects those
+  // fragments before any shader), or its shaders test each fragment against the G-buffer's
+  // distance (behind_visible_track.glsl: a texel and a comparison per fragment). The prefill pays
+  // where many capsules overlap.
   const bool split = settings.terrain_top_m.has_value();
-  // Split, what lies behind a visible track must be dropped, as the capsules above all the
-  // terrain do not trace their hits here: either the overlay's depth starts as the visible
-  // tracks' (the prefill: a pass over the tracks' screen rectangle, about 15 ms at 1920x1080 on
-  // llvmpipe, after which the depth test rejects those fragments before any shader), or its
-  // shaders test each fragment against the G-buffer's distance (behind_visible_track.glsl: a
-  // texel and a comparison per fragment). The prefill pays where many capsules overlap.
   const bool prefill = split && prefills_overlay_depth(gbuffer, settings);
   if (prefill) {
     prefill_overlay_depth(gbuffer, target, camera, tracks, settings);

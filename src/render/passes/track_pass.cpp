@@ -76,6 +76,12 @@ Texture upload_pieces(const CapsulePieces& pieces) {
 
 }  // namespace
 
+bool TrackDraw::shows_track(std::int32_t track) const {
+  if (track_styles.empty()) return true;
+  return track >= 0 && static_cast<std::size_t>(track) < track_styles.size() &&
+         track_styles[static_cast<std::size_t>(track)].visible;
+}
+
 std::size_t TrackDraw::shown_tracks() const {
   if (track_styles.empty()) return 1;
   return static_cast<std::size_t>(
@@ -91,11 +97,7 @@ void TrackPass::prepare(std::span<const TrackDraw> tracks, const scene::Camera& 
     const PiecesKey key{draw.buffer, static_cast<int>(draw.shape.capsules)};
     if (frame_pieces_.contains(key)) continue;
     std::function<bool(std::int32_t)> shown;
-    if (!draw.track_styles.empty())
-      shown = [styles = draw.track_styles](std::int32_t track) {
-        return track >= 0 && static_cast<std::size_t>(track) < styles.size() &&
-               styles[static_cast<std::size_t>(track)].visible;
-      };
+    if (!draw.track_styles.empty()) shown = [&draw](std::int32_t track) { return draw.shows_track(track); };
     CapsulePieces pieces =
         plan_capsule_pieces(*draw.buffer, draw.shape.capsules, lod_view_for(camera, draw, settings), shown);
     FramePieces frame;

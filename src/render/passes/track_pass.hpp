@@ -68,6 +68,8 @@ struct TrackDraw {
   // A buffer of many tracks: each track's own colour and visibility, indexed by the segments'
   // Range::track (color_srgb and by_value are then unused). Empty: one track, the fields above.
   std::span<const TrackDrawStyle> track_styles;
+  // Whether a track of the buffer (Range::track) is shown: always without track_styles.
+  bool shows_track(std::int32_t track) const;
   // How many of its tracks are shown (counted as tracks drawn).
   std::size_t shown_tracks() const;
 };
