@@ -33,11 +33,12 @@ void marker(ImDrawList* list, const ImVec2& at, ImU32 fill, float radius) {
 
 // The replay's markers: 6 px discs for a few tracks, smaller as more share the view (a season of
 // a thousand tracks would otherwise be a carpet of discs over its own tracks), down to 2 px.
+constexpr std::size_t kFullSizeMarkers = 50;
+
 float replay_marker_radius(std::size_t markers) {
   constexpr float kFull = 6.0f, kSmallest = 2.0f;
-  constexpr std::size_t kFullUpTo = 50;
-  if (markers <= kFullUpTo) return kFull;
-  return std::max(kSmallest, kFull * std::sqrt(static_cast<float>(kFullUpTo) / static_cast<float>(markers)));
+  if (markers <= kFullSizeMarkers) return kFull;
+  return std::max(kSmallest, kFull * std::sqrt(static_cast<float>(kFullSizeMarkers) / static_cast<float>(markers)));
 }
 
 // ImGui's draw lists index their vertices with 16 bits here (the ES 3 backend has no base vertex):
@@ -57,7 +58,7 @@ void replay_markers(const OverlayState& s, ImDrawList* list) {
   }
   const float radius = replay_marker_radius(shown.size());
   if (shown.size() <= kMaxDiscs) {
-    const int sides = shown.size() <= 50 ? 0 : 8;  // 0: ImGui's smooth circle
+    const int sides = shown.size() <= kFullSizeMarkers ? 0 : 8;  // 0: ImGui's smooth circle
     for (const auto& [at, fill] : shown) {
       list->AddCircleFilled(at, radius * 4.0f / 3.0f, IM_COL32(255, 255, 255, 230), sides);
       list->AddCircleFilled(at, radius, fill, sides);
