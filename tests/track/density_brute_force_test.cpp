@@ -9,18 +9,17 @@
 #include <GeographicLib/Geodesic.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "geo/wgs84.hpp"
 #include "track/density.hpp"
+#include "track/two_threads.hpp"
 
 namespace trailray::track {
 namespace {
@@ -112,15 +111,7 @@ Expected brute_force(const std::vector<NeighbourSource>& sources, const std::vec
   return out;
 }
 
-const ParallelFor two_threads = [](std::size_t count, const std::function<void(std::size_t)>& job) {
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t i = next++; i < count; i = next++) job(i);
-  };
-  std::thread other(work);
-  work();
-  other.join();
-};
+const ParallelFor two_threads = test::two_threads;
 
 // Every way of asking (one line at a time, all lines at once on two threads) against the brute
 // force; the targets are split into lines of 37 points. Returns the points compared.

@@ -8,19 +8,18 @@
 #include <GeographicLib/Geodesic.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "geo/wgs84.hpp"
 #include "track/track_builders.hpp"
+#include "track/two_threads.hpp"
 
 namespace trailray::track {
 namespace {
@@ -222,15 +221,7 @@ TEST(NeighbourCounts, RandomWalksAgreeWithABruteForce) {
   for (const auto& w : walks) sources.push_back(source_of(w));
   const double r = 150.0;
   // On two threads, through the ParallelFor.
-  const ParallelFor two_threads = [](std::size_t count, const std::function<void(std::size_t)>& job) {
-    std::atomic<std::size_t> next{0};
-    const auto work = [&] {
-      for (std::size_t i = next++; i < count; i = next++) job(i);
-    };
-    std::thread other(work);
-    work();
-    other.join();
-  };
+  const ParallelFor two_threads = test::two_threads;
   std::vector<std::vector<PointLine>> targets;
   for (const auto& w : walks) targets.push_back({PointLine(w)});
   const auto counts = neighbour_counts(sources, targets, r, two_threads);
