@@ -39,6 +39,9 @@ packages=(
   libswscale-dev         # `trailray video`: sRGB RGBA frames to BT.709 YUV 4:2:0
   libavutil-dev          # `trailray video`: frames, options, errors of the libraries above
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
+  # --- the browser build (scripts/web.sh; sources of its C/C++ libraries: scripts/web-sources.sh) ---
+  emscripten             # C++ to WebAssembly + WebGL2 (3.1.6, with its prebuilt libc/libc++ and node tests)
+  dpkg-dev               # dpkg-source: apt-get source unpacks the Debian source packages with their patches
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers
@@ -63,6 +66,7 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages present"
+  "$(dirname "$0")/web-sources.sh"
   exit 0
 fi
 
@@ -72,3 +76,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+"$(dirname "$0")/web-sources.sh"

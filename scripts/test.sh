@@ -27,6 +27,10 @@ env ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-asan --no-tests=error --output-on-failure -j "$jobs"
 
+echo "== WebAssembly build (Emscripten): the core's tests under node"
+scripts/web.sh
+ctest --test-dir build-web --no-tests=error --output-on-failure -j "$jobs"
+
 echo "== Fuzzers (bounded)"
 # Inputs up to 64 KiB: many more executions per second than the 1 MiB default.
 FUZZ_MAX_LEN="${FUZZ_MAX_LEN:-65536}" scripts/fuzz.sh "${TRAILRAY_FUZZ_SECONDS:-30}"

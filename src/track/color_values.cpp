@@ -9,6 +9,9 @@
 #include <stdexcept>
 #include <utility>
 
+#include <fast_float/fast_float.h>
+#include <fmt/format.h>
+
 namespace trailray::track {
 namespace {
 
@@ -138,12 +141,8 @@ double percentile(const std::vector<double>& sorted, double p) {
 // "-0.0"). Non-finite values print as "n/a".
 std::string fixed(double v, int decimals) {
   if (!std::isfinite(v)) return "n/a";
-  // The largest double printed in full is 309 digits; decimals and sign fit in the rest.
-  std::array<char, 400> buffer{};
-  const auto [end, ec] =
-      std::to_chars(buffer.data(), buffer.data() + buffer.size(), v, std::chars_format::fixed, decimals);
-  if (ec != std::errc{}) return "n/a";
-  std::string text(buffer.data(), end);
+  // fmt, not std::to_chars: Emscripten's libc++ has no floating-point to_chars. Both round exactly.
+  std::string text = fmt::format("{:.{}f}", v, std::max(decimals, 0));
   if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
   return text;
 }
@@ -168,7 +167,7 @@ std::optional<double> parse_finite(std::string_view text) {
   double v = 0.0;
   const char* first = text.data();
   const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(first, last, v);
+  const auto [end, ec] = fast_float::from_chars(first, last, v);  // libc++ 13 has no double from_chars
   if (text.empty() || ec != std::errc{} || end != last || !std::isfinite(v)) return std::nullopt;
   return v;
 }

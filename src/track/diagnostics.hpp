@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "track/model.hpp"
+#include "track/threads.hpp"
 
 namespace trailray::track {
 
@@ -68,7 +69,8 @@ struct ReadOptions {
   // IGC: which altitude becomes the point elevation.
   enum class IgcAltitude { Auto, Gnss, Pressure } igc_altitude = IgcAltitude::Auto;
   // A plain GPX file at least this big is read in two halves on two threads (same result).
-  std::int64_t two_part_min_bytes = 8 << 20;
+  // Never by default where there are no threads (it would only add the joining).
+  std::int64_t two_part_min_bytes = kThreadsAvailable ? std::int64_t{8} << 20 : INT64_MAX;
   // KMZ: the most bytes the archive may have, and its KML entries may decompress to together
   // (a zip bomb is refused with an error instead of filling memory).
   std::int64_t kmz_max_bytes = std::int64_t{1} << 30;

@@ -8,7 +8,8 @@ namespace {
 
 template <std::size_t N>
 std::string name_or_number(const std::array<std::string_view, N>& names, std::uint64_t value) {
-  if (value < N && !names[value].empty()) return std::string(names[value]);
+  if (value < N && !names[static_cast<std::size_t>(value)].empty())
+    return std::string(names[static_cast<std::size_t>(value)]);
   return std::to_string(value);
 }
 

@@ -10,6 +10,8 @@
 #include <string>
 #include <thread>
 
+#include "track/threads.hpp"
+
 #include "track/io/parse_util.hpp"
 #include "track/io/readers.hpp"
 #include "track/io/xml_encoding.hpp"
@@ -310,8 +312,12 @@ std::optional<ReadResult> read_gpx_in_halves(ByteSource& source, const ReadOptio
   start.byte_offset = split;
   start.open_elements = {"gpx", "trk", "trkseg"};
   XmlParseOutcome second_outcome;
-  std::thread second_thread(
-      [&] { second_outcome = XmlStream::parse_part(*second_part, second_handler, &start, nullptr); });
+  const auto parse_second = [&] {
+    second_outcome = XmlStream::parse_part(*second_part, second_handler, &start, nullptr);
+  };
+  // Without threads (the browser's build, where only tests ask for halves) one after the other.
+  std::thread second_thread;
+  if (kThreadsAvailable) second_thread = std::thread(parse_second);
 
   ReadResult result;
   result.file.format = Format::Gpx;
@@ -319,7 +325,10 @@ std::optional<ReadResult> read_gpx_in_halves(ByteSource& source, const ReadOptio
   GpxHandler handler(result.file, warnings);
   XmlEndState end;
   const XmlParseOutcome first_outcome = XmlStream::parse_part(*first_part, handler, nullptr, &end);
-  second_thread.join();
+  if (second_thread.joinable())
+    second_thread.join();
+  else
+    parse_second();
 
   const bool joins = first_outcome.kind == XmlParseOutcome::Kind::Truncated && !end.inside_markup &&
                      end.open_elements == start.open_elements && handler.between_points();

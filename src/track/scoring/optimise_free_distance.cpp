@@ -18,6 +18,8 @@
 #include <limits>
 #include <thread>
 
+#include "track/threads.hpp"
+
 #include "track/scoring/optimise.hpp"
 
 namespace trailray::track::scoring {
@@ -27,14 +29,7 @@ constexpr double kNone = -std::numeric_limits<double>::infinity();
 constexpr int kScanSize = 8;        // nodes this small are scanned fix by fix
 constexpr int kParallelMin = 4000;  // fixes: below this a second thread costs more than it gains
 
-// Threads exist on native builds and on WebAssembly built with pthreads.
-bool parallel_available() {
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-  return false;
-#else
-  return std::thread::hardware_concurrency() > 1;
-#endif
-}
+bool parallel_available() { return kThreadsAvailable && std::thread::hardware_concurrency() > 1; }
 
 // out[j] = max over i on the `forward` side of j (i <= j, or i >= j) of in[i] + round(d(i, j)).
 // need[j] (optional): a value out[j] must exceed to matter (see above).

@@ -166,8 +166,12 @@ TaskProgress task_progress(const Task& task, const TaskRoute& route, const std::
       // A restart: a later valid crossing of the start before the next turnpoint replaces this one.
       for (int restarts = 0; restarts < 1000; ++restarts) {
         const std::optional<Place> next_tp = reach(i + 1, *p);
-        Place after = *p;
-        if (after.fix >= fixes.size()) break;
+        // From the first fix after the crossing, not from the crossing itself: that lies on the
+        // circle, inside or outside by the last bit of the distance (glibc and musl's sin/cos
+        // decided it differently), and from "inside" the same crossing would be found again.
+        if (p->fix >= fixes.size()) break;
+        Place after = place_of(fixes, p->fix);
+        after.fix = p->fix + 1;
         const std::optional<Place> again = reach(i, after);
         if (!again || (next_tp && again->time >= next_tp->time) || again->time <= p->time) break;
         p = again;

@@ -182,8 +182,11 @@ TEST(TaskProgress, IgclibRaceReachesEveryTurnpoint) {
   EXPECT_EQ(p.reached, 9);
   EXPECT_TRUE(p.goal);
   for (std::size_t i = 1; i < p.turnpoints.size(); ++i) EXPECT_GT(p.turnpoints[i].time, p.turnpoints[i - 1].time);
-  // The start (exit of the 20 km P18) at 15:35 UTC, goal at 18:15, within the flight.
-  EXPECT_NEAR(std::fmod(p.turnpoints[1].time, 86400.0), 15 * 3600.0 + 35 * 60.0 + 12.0, 2.0);
+  // The start: the last exit of the 20 km P18 before the next turnpoint. The pilot leaves it at
+  // 15:35, is back inside by up to 470 m from 15:36:20 to 15:40:00, and leaves again at 15:40:25
+  // (UTC), which counts. (Once the search stopped at 15:35, finding the first crossing again.)
+  // Goal at 18:15, within the flight.
+  EXPECT_NEAR(std::fmod(p.turnpoints[1].time, 86400.0), 15 * 3600.0 + 40 * 60.0 + 25.0, 2.0);
   EXPECT_NEAR(std::fmod(p.goal_time, 86400.0), 18 * 3600.0 + 15 * 60.0 + 5.0, 2.0);
   // The nested R15 cylinders: in to 200 m, out of 15 km, back in to 200 m.
   EXPECT_FALSE(p.turnpoints[3].exit);
