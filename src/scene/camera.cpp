@@ -1,9 +1,10 @@
 #include "scene/camera.hpp"
 
+#include <fast_float/fast_float.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -60,7 +61,7 @@ std::optional<double> parse_number(std::string_view s) {
   s = trimmed(s);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   double v = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  const auto [end, ec] = fast_float::from_chars(s.data(), s.data() + s.size(), v);
   if (s.empty() || ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
   return v;
 }

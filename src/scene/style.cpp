@@ -1,8 +1,8 @@
 #include "scene/style.hpp"
 
+#include <fast_float/fast_float.h>
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -31,7 +31,7 @@ Result<TrackWidth> parse_track_width(std::string_view text) {
   std::string_view rest = text;
   while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
   double value = 0.0;
-  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), value);
+  const auto [end, ec] = fast_float::from_chars(rest.data(), rest.data() + rest.size(), value);
   if (ec != std::errc() || end == rest.data()) return fail();
   std::string_view unit(end, static_cast<std::size_t>(rest.data() + rest.size() - end));
   while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);

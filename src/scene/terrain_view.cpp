@@ -61,7 +61,7 @@ template <class Tile, class Source>
 std::unique_ptr<terrain::TileLoader<Tile>> make_loader(Source* source, const terrain::TileLoaderOptions& options) {
   if (source == nullptr) return nullptr;
   return std::make_unique<terrain::TileLoader<Tile>>(
-      [source](const terrain::TileId& id, std::stop_token stop) { return source->load(id, stop); }, options);
+      [source](const terrain::TileId& id, terrain::StopToken stop) { return source->load(id, stop); }, options);
 }
 
 }  // namespace

@@ -194,7 +194,7 @@ DirectoryTileSource::DirectoryTileSource(fs::path root, DirectorySourceOptions o
     if (std::find(extensions_.begin(), extensions_.end(), e) == extensions_.end()) extensions_.push_back(e);
 }
 
-EncodedTile DirectoryTileSource::fetch(const TileId& tile, std::stop_token stop) {
+EncodedTile DirectoryTileSource::fetch(const TileId& tile, StopToken stop) {
   EncodedTile result;
   if (stop.stop_requested()) {
     result.status = TileStatus::cancelled;

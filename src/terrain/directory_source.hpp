@@ -11,11 +11,11 @@
 
 #include <filesystem>
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "terrain/stop_token.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::terrain {
@@ -39,7 +39,7 @@ class DirectoryTileSource : public EncodedTileSource {
   // ok with the file's bytes; no_data when no file exists for the tile (or it lies outside the
   // zoom levels); failed with "<folder> <z/x/y>: cannot read <file>: <reason>" for a file that
   // cannot be read, is empty or is too big to be a tile; cancelled when `stop` was requested.
-  EncodedTile fetch(const TileId& tile, std::stop_token stop) override;
+  EncodedTile fetch(const TileId& tile, StopToken stop) override;
 
  private:
   std::filesystem::path root_;

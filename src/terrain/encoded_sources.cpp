@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <fast_float/fast_float.h>
+
 #include "terrain/height_decode.hpp"
 
 namespace trailray::terrain {
@@ -50,7 +52,7 @@ geo::LatLonBounds parse_bounds(std::string_view value, const std::string& where)
     const std::size_t comma = rest.find(',');
     if ((i < 3) == (comma == std::string_view::npos)) bad_value(where, "bounds", value, kExpected);
     const std::string_view part = trimmed(rest.substr(0, comma));
-    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v[i]);
+    const auto [end, ec] = fast_float::from_chars(part.data(), part.data() + part.size(), v[i]);  // libc++ 13: no double
     if (ec != std::errc{} || end != part.data() + part.size() || !std::isfinite(v[i]))
       bad_value(where, "bounds", value, kExpected);
     if (comma != std::string_view::npos) rest.remove_prefix(comma + 1);
@@ -80,8 +82,8 @@ TileResult<Tile> from_fetch_failure(const SourceInfo& info, const TileId& tile, 
 
 // Fetches and decodes one tile; `decode(bytes)` may throw.
 template <class Tile, class Decode>
-TileResult<Tile> fetch_and_decode(EncodedTileSource& tiles, const SourceInfo& info, const TileId& tile,
-                                  std::stop_token stop, Decode decode) {
+TileResult<Tile> fetch_and_decode(EncodedTileSource& tiles, const SourceInfo& info, const TileId& tile, StopToken stop,
+                                  Decode decode) {
   EncodedTile fetched = tiles.fetch(tile, stop);
   if (fetched.status != TileStatus::ok) return from_fetch_failure<Tile>(info, tile, std::move(fetched));
   TileResult<Tile> result;
@@ -150,7 +152,7 @@ EncodedHeightSource::EncodedHeightSource(std::shared_ptr<EncodedTileSource> tile
                       ": its metadata names no height encoding; choose one (terrarium, mapbox, alpinemaps, float)");
 }
 
-TileResult<HeightTile> EncodedHeightSource::load(const TileId& tile, std::stop_token stop) {
+TileResult<HeightTile> EncodedHeightSource::load(const TileId& tile, StopToken stop) {
   const HeightEncoding encoding = *info_.encoding;
   return fetch_and_decode<HeightTile>(*tiles_, info_, tile, std::move(stop), [&](const std::vector<unsigned char>& b) {
     return decode_height_tile(b, encoding, tile);
@@ -161,7 +163,7 @@ EncodedImagerySource::EncodedImagerySource(std::shared_ptr<EncodedTileSource> ti
   if (!tiles_) throw SourceError("imagery source without a tile source");
 }
 
-TileResult<ImageTile> EncodedImagerySource::load(const TileId& tile, std::stop_token stop) {
+TileResult<ImageTile> EncodedImagerySource::load(const TileId& tile, StopToken stop) {
   return fetch_and_decode<ImageTile>(*tiles_, tiles_->info(), tile, std::move(stop),
                                      [&](const std::vector<unsigned char>& b) { return decode_image_tile(b, tile); });
 }

@@ -7,10 +7,10 @@
 
 #include <memory>
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <string_view>
 
+#include "terrain/stop_token.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::terrain {
@@ -50,7 +50,7 @@ class EncodedHeightSource : public HeightSource {
 
   // The fetch's status; a tile that does not decode is `failed` with "<source name> <z/x/y>:
   // <what is wrong>" (so is a fetch failure, prefixed thus unless its message already is).
-  TileResult<HeightTile> load(const TileId& tile, std::stop_token stop) override;
+  TileResult<HeightTile> load(const TileId& tile, StopToken stop) override;
 
  private:
   std::shared_ptr<EncodedTileSource> tiles_;
@@ -62,7 +62,7 @@ class EncodedImagerySource : public ImagerySource {
   explicit EncodedImagerySource(std::shared_ptr<EncodedTileSource> tiles);
 
   const SourceInfo& info() const override { return tiles_->info(); }
-  TileResult<ImageTile> load(const TileId& tile, std::stop_token stop) override;
+  TileResult<ImageTile> load(const TileId& tile, StopToken stop) override;
 
  private:
   std::shared_ptr<EncodedTileSource> tiles_;

@@ -59,7 +59,7 @@ struct GdalImagerySource::Impl {
     info = raster.basic_info();
   }
 
-  TileResult<ImageTile> warp(const TileId& id, std::stop_token stop) {
+  TileResult<ImageTile> warp(const TileId& id, StopToken stop) {
     gdal_detail::WarpSpec spec;
     spec.data_type = GDT_Byte;
     spec.source_bands = layout.colour_bands;
@@ -132,7 +132,7 @@ GdalImagerySource::~GdalImagerySource() = default;
 
 const SourceInfo& GdalImagerySource::info() const { return impl_->info; }
 
-TileResult<ImageTile> GdalImagerySource::load(const TileId& tile, std::stop_token stop) {
+TileResult<ImageTile> GdalImagerySource::load(const TileId& tile, StopToken stop) {
   return gdal_detail::load_warped_tile<ImageTile>(*impl_, tile, stop);
 }
 

@@ -58,7 +58,7 @@ struct GdalHeightSource::Impl {
     return spec;
   }
 
-  TileResult<HeightTile> warp(const TileId& id, std::stop_token stop) {
+  TileResult<HeightTile> warp(const TileId& id, StopToken stop) {
     TileResult<HeightTile> result;
     try {
       DatasetPool::Lease dataset = raster.pool_for_tile(id).acquire();
@@ -121,7 +121,7 @@ const SourceInfo& GdalHeightSource::info() const { return impl_->info; }
 int GdalHeightSource::raster_width() const { return impl_->raster.georef().width; }
 int GdalHeightSource::raster_height() const { return impl_->raster.georef().height; }
 
-TileResult<HeightTile> GdalHeightSource::load(const TileId& tile, std::stop_token stop) {
+TileResult<HeightTile> GdalHeightSource::load(const TileId& tile, StopToken stop) {
   return gdal_detail::load_warped_tile<HeightTile>(*impl_, tile, stop);
 }
 

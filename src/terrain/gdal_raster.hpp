@@ -27,10 +27,10 @@
 #include <memory>
 #include <optional>
 #include <span>
-#include <stop_token>
 #include <string>
 
 #include "geo/web_mercator.hpp"
+#include "terrain/stop_token.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::terrain {
@@ -70,7 +70,7 @@ class GdalHeightSource final : public HeightSource {
   // "gdal:<driver>" ("gdal:GTiff", "gdal:SRTMHGT"); encoding float32.
   const SourceInfo& info() const override;
 
-  TileResult<HeightTile> load(const TileId& tile, std::stop_token stop) override;
+  TileResult<HeightTile> load(const TileId& tile, StopToken stop) override;
 
   // Height from the raster's own grid, never resampled to Mercator. The rule (which
   // tests/conformance/gdal_heights.py implements independently):
@@ -121,7 +121,7 @@ class GdalImagerySource final : public ImagerySource {
 
   // RGBA, 256 x 256; alpha is 0 where the raster has no data (outside it, its nodata value, its
   // own alpha 0), else 255 or the raster's alpha. no_data when no pixel has data.
-  TileResult<ImageTile> load(const TileId& tile, std::stop_token stop) override;
+  TileResult<ImageTile> load(const TileId& tile, StopToken stop) override;
 
  private:
   struct Impl;

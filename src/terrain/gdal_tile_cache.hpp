@@ -5,11 +5,11 @@
 #include <cstddef>
 #include <list>
 #include <mutex>
-#include <stop_token>
 #include <optional>
 #include <unordered_map>
 #include <utility>
 
+#include "terrain/stop_token.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::terrain::gdal_detail {
@@ -60,7 +60,7 @@ class WarpedTileCache {
 // is returned, a tile the raster cannot cover is no_data, anything else is warped and cached.
 // Impl has `raster` (OpenedRaster), `tiles` (WarpedTileCache<Tile>) and warp(id, stop).
 template <class Tile, class Impl>
-TileResult<Tile> load_warped_tile(Impl& impl, const TileId& tile, std::stop_token stop) {
+TileResult<Tile> load_warped_tile(Impl& impl, const TileId& tile, StopToken stop) {
   TileResult<Tile> result;
   if (!geo::is_valid(tile)) {
     result.status = TileStatus::failed;

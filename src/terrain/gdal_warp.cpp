@@ -34,7 +34,7 @@ const std::string& web_mercator_wkt() {
 
 // GDAL progress callback: returning FALSE makes the warper stop with CPLE_UserInterrupt.
 int CPL_STDCALL continue_unless_stopped(double /*done*/, const char* /*message*/, void* stop_token) {
-  return static_cast<const std::stop_token*>(stop_token)->stop_requested() ? FALSE : TRUE;
+  return static_cast<const StopToken*>(stop_token)->stop_requested() ? FALSE : TRUE;
 }
 
 struct WarpOptionsDeleter {
@@ -73,7 +73,7 @@ GDALDatasetUniquePtr create_tile_dataset(const TileId& tile, const WarpSpec& spe
 
 }  // namespace
 
-WarpOutput warp_tile(GDALDataset& source, const TileId& tile, const WarpSpec& spec, std::stop_token stop) {
+WarpOutput warp_tile(GDALDataset& source, const TileId& tile, const WarpSpec& spec, StopToken stop) {
   WarpOutput out;
   GdalErrorCapture errors;
   const int band_count = static_cast<int>(spec.source_bands.size());

@@ -6,11 +6,11 @@
 
 #include <cstdint>
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <vector>
 
 #include "terrain/gdal_raster.hpp"
+#include "terrain/stop_token.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::terrain::gdal_detail {
@@ -38,6 +38,6 @@ struct WarpOutput {
 };
 
 // `tile` must be valid. Stops early (cancelled) once `stop` is requested.
-WarpOutput warp_tile(GDALDataset& source, const TileId& tile, const WarpSpec& spec, std::stop_token stop);
+WarpOutput warp_tile(GDALDataset& source, const TileId& tile, const WarpSpec& spec, StopToken stop);
 
 }  // namespace trailray::terrain::gdal_detail

@@ -51,8 +51,7 @@ std::unordered_set<TileId> footprints(std::span<const geo::LatLon> points, const
 
 }  // namespace
 
-HeightSampler::HeightSampler(HeightSource& source, HeightSamplerOptions options)
-    : source_(source), options_(options) {}
+HeightSampler::HeightSampler(HeightSource& source, HeightSamplerOptions options) : source_(source), options_(options) {}
 
 double HeightSampler::sample(double lat, double lon) {
   const geo::LatLon p{lat, lon};
@@ -95,7 +94,7 @@ void HeightSampler::sample_level(std::span<const geo::LatLon> points, std::vecto
   loader_options.threads = options_.threads;
   // Room for a batch with its seam neighbours, at 256 x 256 floats a tile.
   loader_options.memory_budget_bytes = options_.tiles_per_batch * 4 * (256u * 256u * sizeof(float) + 1024u);
-  TileLoader<HeightTile> loader([this](const TileId& id, std::stop_token stop) { return source_.load(id, stop); },
+  TileLoader<HeightTile> loader([this](const TileId& id, StopToken stop) { return source_.load(id, stop); },
                                 loader_options);
 
   std::unordered_map<TileId, TileState> seen;

@@ -93,7 +93,7 @@ std::optional<std::int64_t> parse_seconds(std::string_view text) {
 
 // What one attempt collects while the transfer runs.
 struct Transfer {
-  std::stop_token stop;
+  StopToken stop;
   std::size_t max_body_bytes = 0;
   bool body_too_large = false;
   std::vector<unsigned char> body;
@@ -166,7 +166,7 @@ struct AttemptResult {
 };
 
 AttemptResult attempt(const HttpClientOptions& options, const HttpRequest& request, curl_slist* headers,
-                      const std::vector<std::string>& secrets, std::stop_token stop) {
+                      const std::vector<std::string>& secrets, StopToken stop) {
   thread_local ThreadHandles handles;
   AttemptResult result;
   HttpResponse& response = result.response;
@@ -273,7 +273,7 @@ AttemptResult attempt(const HttpClientOptions& options, const HttpRequest& reque
 }
 
 // Sleeps for `delay`; false when `stop` was triggered first.
-bool wait_for(std::chrono::milliseconds delay, std::stop_token stop) {
+bool wait_for(std::chrono::milliseconds delay, StopToken stop) {
   std::mutex mutex;
   std::condition_variable_any never_notified;
   std::unique_lock lock(mutex);
@@ -300,7 +300,7 @@ std::shared_ptr<RequestLimiter> RequestLimiter::process_wide() {
   return limiter;
 }
 
-bool RequestLimiter::acquire(std::stop_token stop) {
+bool RequestLimiter::acquire(StopToken stop) {
   std::unique_lock lock(mutex_);
   if (!freed_.wait(lock, stop, [this] { return in_use_ < max_parallel_; })) return false;
   ++in_use_;
@@ -347,7 +347,7 @@ HttpClient::HttpClient(HttpClientOptions options) : options_(std::move(options))
   CurlGlobal::instance();
 }
 
-HttpResponse HttpClient::get(const HttpRequest& request, std::stop_token stop) const {
+HttpResponse HttpClient::get(const HttpRequest& request, StopToken stop) const {
   HttpResponse response;
   std::vector<std::string> secrets = request.secrets;
   // The header list is built for each request: a ${VAR} reads the environment now.

@@ -1,7 +1,7 @@
 #pragma once
 // HTTP GET for tile sources, on libcurl: timeouts, retries with exponential backoff, a limit on
 // parallel requests across the process, conditional requests, and cancellation of a transfer in
-// progress through a std::stop_token.
+// progress through a StopToken.
 //
 // Each thread keeps one curl easy handle in one multi handle, so a worker's connections to a
 // server stay open from one tile to the next (keep-alive, one TLS handshake); DNS answers and
@@ -16,11 +16,12 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "terrain/stop_token.hpp"
 
 namespace trailray::terrain {
 
@@ -37,7 +38,7 @@ class RequestLimiter {
   static std::shared_ptr<RequestLimiter> process_wide();
 
   // Waits for a slot; false when `stop` was triggered first (no slot is then held).
-  bool acquire(std::stop_token stop);
+  bool acquire(StopToken stop);
   void release();
 
   int max_parallel() const { return max_parallel_; }
@@ -105,7 +106,7 @@ class HttpClient {
   // Thread-safe. Retries connection errors, timeouts, 429 and 5xx (after backoff delays, during
   // which no slot of the limiter is held); a stop request ends the wait for a slot, a delay or
   // a transfer at once (cancelled = true).
-  HttpResponse get(const HttpRequest& request, std::stop_token stop = {}) const;
+  HttpResponse get(const HttpRequest& request, StopToken stop = {}) const;
 
   const HttpClientOptions& options() const { return options_; }
 

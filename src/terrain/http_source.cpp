@@ -107,7 +107,7 @@ void HttpTileSource::store(const TileId& tile, const CacheEntryInfo& info, std::
   }
 }
 
-EncodedTile HttpTileSource::fetch(const TileId& tile, std::stop_token stop) {
+EncodedTile HttpTileSource::fetch(const TileId& tile, StopToken stop) {
   if (!is_valid(tile)) return failed(tile, "not a valid tile id");
   if (tile.zoom < info_.min_zoom || tile.zoom > info_.max_zoom) return with_status(TileStatus::no_data);
   if (stop.stop_requested()) return with_status(TileStatus::cancelled);

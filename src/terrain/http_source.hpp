@@ -28,12 +28,12 @@
 #include <mutex>
 #include <optional>
 #include <span>
-#include <stop_token>
 #include <string>
 #include <string_view>
 
 #include "terrain/disk_cache.hpp"
 #include "terrain/http_client.hpp"
+#include "terrain/stop_token.hpp"
 #include "terrain/tile_source.hpp"
 #include "terrain/url_template.hpp"
 
@@ -74,7 +74,7 @@ class HttpTileSource : public EncodedTileSource {
 
   const SourceInfo& info() const override { return info_; }
   // Thread-safe; blocks on the disk and the network.
-  EncodedTile fetch(const TileId& tile, std::stop_token stop) override;
+  EncodedTile fetch(const TileId& tile, StopToken stop) override;
 
   const UrlTemplate& url_template() const { return template_; }
   DiskCache* disk_cache() const { return cache_.get(); }

@@ -186,7 +186,7 @@ MbtilesTileSource::MbtilesTileSource(fs::path file) {
 
 MbtilesTileSource::~MbtilesTileSource() = default;
 
-EncodedTile MbtilesTileSource::fetch(const TileId& tile, std::stop_token stop) {
+EncodedTile MbtilesTileSource::fetch(const TileId& tile, StopToken stop) {
   EncodedTile result;
   const auto fail = [&](const std::string& message) {
     result.status = TileStatus::failed;

@@ -7,8 +7,8 @@
 
 #include <filesystem>
 #include <memory>
-#include <stop_token>
 
+#include "terrain/stop_token.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::terrain {
@@ -28,7 +28,7 @@ class MbtilesTileSource : public EncodedTileSource {
   // failed for an SQLite error, an empty blob or gzip-compressed data (vector tiles, not a
   // raster image); cancelled when `stop` was requested. Thread-safe: concurrent fetches each
   // use a connection of their own, from a pool that grows to the number of concurrent callers.
-  EncodedTile fetch(const TileId& tile, std::stop_token stop) override;
+  EncodedTile fetch(const TileId& tile, StopToken stop) override;
 
  private:
   class ConnectionPool;

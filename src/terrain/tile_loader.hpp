@@ -21,7 +21,6 @@
 #include <memory>
 #include <mutex>
 #include <queue>
-#include <stop_token>
 #include <string>
 #include <thread>
 #include <unordered_map>
@@ -29,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "terrain/stop_token.hpp"
 #include "terrain/tile.hpp"
 #include "terrain/tile_memory_cache.hpp"
 
@@ -49,7 +49,7 @@ struct LoadProgress {
 };
 
 struct TileLoaderOptions {
-  unsigned threads = 4;                           // workers; network sources like more
+  unsigned threads = 4;                          // workers; network sources like more
   std::size_t memory_budget_bytes = 512u << 20;  // decoded tiles kept in memory
 };
 
@@ -58,7 +58,7 @@ enum class TileState { unknown, pending, loaded, no_data, failed };
 template <class Tile>
 class TileLoader {
  public:
-  using LoadFunction = std::function<TileResult<Tile>(const TileId&, std::stop_token)>;
+  using LoadFunction = std::function<TileResult<Tile>(const TileId&, StopToken)>;
 
   TileLoader(LoadFunction load, TileLoaderOptions options = {})
       : load_(std::move(load)), cache_(options.memory_budget_bytes) {
@@ -190,7 +190,7 @@ class TileLoader {
   void work() {
     while (true) {
       TileId id;
-      std::stop_source cancel;
+      StopSource cancel;
       {
         std::unique_lock lock(mutex_);
         work_ready_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
@@ -243,7 +243,7 @@ class TileLoader {
   TileMemoryCache<Tile> cache_;
   std::priority_queue<Queued> queue_;
   std::unordered_set<TileId> wanted_;
-  std::unordered_map<TileId, std::stop_source> in_flight_;
+  std::unordered_map<TileId, StopSource> in_flight_;
   std::unordered_set<TileId> no_data_;
   std::unordered_map<TileId, std::string> failed_;
   std::function<void()> on_update_;

@@ -11,13 +11,13 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
-#include <stop_token>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "geo/bounds.hpp"
 #include "terrain/height_encoding.hpp"
+#include "terrain/stop_token.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::terrain {
@@ -55,14 +55,14 @@ class EncodedTileSource {
  public:
   virtual ~EncodedTileSource() = default;
   virtual const SourceInfo& info() const = 0;
-  virtual EncodedTile fetch(const TileId& tile, std::stop_token stop) = 0;
+  virtual EncodedTile fetch(const TileId& tile, StopToken stop) = 0;
 };
 
 class HeightSource {
  public:
   virtual ~HeightSource() = default;
   virtual const SourceInfo& info() const = 0;
-  virtual TileResult<HeightTile> load(const TileId& tile, std::stop_token stop) = 0;
+  virtual TileResult<HeightTile> load(const TileId& tile, StopToken stop) = 0;
 
   // Height at a point read from the source's own grid (no Mercator resampling), when the source
   // has one (a GDAL raster); NaN where it has no data; nullopt when the source is tiles only.
@@ -73,7 +73,7 @@ class ImagerySource {
  public:
   virtual ~ImagerySource() = default;
   virtual const SourceInfo& info() const = 0;
-  virtual TileResult<ImageTile> load(const TileId& tile, std::stop_token stop) = 0;
+  virtual TileResult<ImageTile> load(const TileId& tile, StopToken stop) = 0;
 };
 
 }  // namespace trailray::terrain

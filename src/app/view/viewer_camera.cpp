@@ -14,16 +14,16 @@ namespace trailray::app::view {
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks, const scene::WaypointSet& waypoints,
-                            terrain::HeightSource* heights, double neutral, const FramingRoom& room,
-                            scene::Diagnostics* diagnostics) {
-  if (o.camera.look_at) return CameraController(*o.camera.look_at, o.lens);
+scene::CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks,
+                                   const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
+                                   const FramingRoom& room, scene::Diagnostics* diagnostics) {
+  if (o.camera.look_at) return scene::CameraController(*o.camera.look_at, o.lens);
   if (tracks.empty() && waypoints.points.empty() && !o.camera.placement)
     throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
   const scene::Camera camera =
       initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area, &waypoints, diagnostics);
   // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
-  return CameraController(CameraController::look_at_from_camera(camera, neutral), o.lens);
+  return scene::CameraController(scene::CameraController::look_at_from_camera(camera, neutral), o.lens);
 }
 
 void ViewerApp::fly_to_track(int index) {
@@ -44,7 +44,7 @@ void ViewerApp::fly_to_track(int index) {
   if (!framed.ok()) return;
   double ground = terrain_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
   if (std::isnan(ground)) ground = framed.value->ground_height_m;
-  controller_.fly_to(CameraController::look_at_from_camera(framed.value->camera, ground));
+  controller_.fly_to(scene::CameraController::look_at_from_camera(framed.value->camera, ground));
 }
 
 void ViewerApp::fly_to_waypoint(int index) {

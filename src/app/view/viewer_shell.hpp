@@ -12,7 +12,6 @@
 #include "app/airspace_options.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
-#include "app/view/camera_controller.hpp"
 #include "app/view/film_session.hpp"
 #include "app/view/moving_frame.hpp"
 #include "app/view/track_loading.hpp"
@@ -23,6 +22,7 @@
 #include "render/platform/imgui_layer.hpp"
 #include "render/platform/window.hpp"
 #include "render/renderer.hpp"
+#include "scene/camera_controller.hpp"
 #include "scene/framing.hpp"
 #include "scene/legend.hpp"
 #include "scene/scene.hpp"
@@ -95,7 +95,7 @@ class ViewerApp {
   scene::TerrainView terrain_;  // the tiles for a camera (GL-free; its loaders read sources_)
   render::Renderer renderer_;
   render::FrameProfiler profiler_;
-  CameraController controller_;
+  scene::CameraController controller_;
   MotionWatch motion_;
   bool frame_moving_ = false;  // the last frame's camera was moving
   struct TimedFrame {
@@ -115,8 +115,8 @@ class ViewerApp {
 
 // The first view: the options' camera, else framed on the tracks where the panels and the
 // legend leave the window free; the pivot on the ground.
-CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
-                            const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
-                            const FramingRoom& room, scene::Diagnostics* diagnostics = nullptr);
+scene::CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
+                                   const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
+                                   const FramingRoom& room, scene::Diagnostics* diagnostics = nullptr);
 
 }  // namespace trailray::app::view

@@ -1,6 +1,9 @@
 #include "render/platform/window.hpp"
 
 #include <GLFW/glfw3.h>
+#ifdef __EMSCRIPTEN__
+#include <emscripten/html5.h>
+#endif
 
 #include <cstdlib>
 #include <string>
@@ -90,9 +93,15 @@ std::uint32_t Window::framebuffer_height() const {
 }
 
 double Window::content_scale() const {
+#ifdef __EMSCRIPTEN__
+  // Emscripten's GLFW is the 3.2 API, without content scales: the page's device pixel ratio.
+  const double ratio = emscripten_get_device_pixel_ratio();
+  return ratio > 0.0 ? ratio : 1.0;
+#else
   float x = 1.0f, y = 1.0f;
   glfwGetWindowContentScale(window_, &x, &y);
   return y > 0.0f ? static_cast<double>(y) : 1.0;
+#endif
 }
 
 std::vector<std::string> Window::take_dropped_files() {

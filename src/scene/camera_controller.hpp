@@ -12,14 +12,15 @@
 //
 // The camera never goes below the ground: after each change it is lifted (steeper pitch, then
 // a longer distance) to stay `clearance_m` above the ground function's height under it.
-// No window, GL or ImGui here: the math is tested alone (tests/app/view/camera_controller_test).
+// No window, GL or ImGui here: the math is tested alone (tests/scene/camera_controller_test),
+// and every front end (the desktop viewer, the page) moves its camera with it.
 
 #include <functional>
 #include <optional>
 
 #include "scene/camera.hpp"
 
-namespace trailray::app::view {
+namespace trailray::scene {
 
 // The terrain height at a place, metres (NaN: unknown there). Must not block (the frame loop
 // calls it): the viewer passes the heights of tiles already in memory.
@@ -42,7 +43,7 @@ class CameraController {
   // The look-at that reproduces `camera`: the pivot where its centre ray meets the ground at
   // `ground_height_m` (the ellipsoid raised by it), else a point `fallback_distance_m` ahead.
   static scene::LookAt look_at_from_camera(const scene::Camera& camera, double ground_height_m,
-                                            double fallback_distance_m = 1000.0);
+                                           double fallback_distance_m = 1000.0);
 
   const scene::LookAt& view() const { return view_; }
   const scene::Lens& lens() const { return lens_; }
@@ -86,4 +87,4 @@ class CameraController {
   std::optional<Flight> flight_;
 };
 
-}  // namespace trailray::app::view
+}  // namespace trailray::scene

@@ -1,4 +1,4 @@
-#include "app/view/camera_controller.hpp"
+#include "scene/camera_controller.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "geo/wgs84.hpp"
 
-namespace trailray::app::view {
+namespace trailray::scene {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -50,7 +50,7 @@ CameraController::CameraController(const scene::LookAt& view, const scene::Lens&
 }
 
 scene::LookAt CameraController::look_at_from_camera(const scene::Camera& camera, double ground_height_m,
-                                                     double fallback_distance_m) {
+                                                    double fallback_distance_m) {
   const glm::dvec3 c = camera.position();
   const glm::dvec3 f = camera.axes().forward;
   // The ellipsoid raised by the ground height: x^2/A^2 + y^2/A^2 + z^2/B^2 = 1.
@@ -255,4 +255,4 @@ void CameraController::keep_above_ground() {
   }
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::scene

@@ -1,12 +1,12 @@
 // The viewer's camera gestures without a window: drag, pan and zoom against a known ground, and
 // the camera kept above it.
-#include "app/view/camera_controller.hpp"
+#include "scene/camera_controller.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace trailray::app::view {
+namespace trailray::scene {
 namespace {
 
 constexpr double kLat = 46.6, kLon = 8.0;
@@ -142,9 +142,9 @@ TEST(CameraController, KeysMoveThePivotAlongTheHeading) {
 }
 
 }  // namespace
-}  // namespace trailray::app::view
+}  // namespace trailray::scene
 
-namespace trailray::app::view {
+namespace trailray::scene {
 namespace {
 
 TEST(CameraController, FollowingMovesThePivotAndChaseTurnsTheHeading) {
@@ -162,4 +162,4 @@ TEST(CameraController, FollowingMovesThePivotAndChaseTurnsTheHeading) {
 }
 
 }  // namespace
-}  // namespace trailray::app::view
+}  // namespace trailray::scene

@@ -1,0 +1,273 @@
+// The page: opens tracks (file picker, drag and drop, ?track=URL, `trailray serve`'s tracks),
+// applies the command line's options from the URL (and from serve's configuration), passes the
+// gestures to the viewer (trailray.wasm, page_api.cpp) and asks it for a frame each animation
+// frame. The view is kept in the address's fragment, so a copied address reproduces it.
+'use strict';
+
+const page = {
+  api: null,
+  ready: null,       // resolves once the viewer runs
+  started: false,    // (tests wait on these two)
+  failed: null,      // why the viewer cannot run
+  messages: [],      // every error and note shown, for tests
+  openedFiles: 0,
+};
+window.trailray = page;
+
+let resolveReady;
+page.ready = new Promise((resolve) => { resolveReady = resolve; });
+
+var Module = {
+  canvas: document.getElementById('canvas'),
+  onRuntimeInitialized: () => {
+    start().catch((e) => {
+      showMessage(String(e));
+      page.failed = String(e);
+    });
+  },
+  printErr: (text) => console.warn(text),
+};
+
+function showMessage(text, kind) {
+  page.messages.push(text);
+  const box = document.createElement('div');
+  box.textContent = text;
+  if (kind === 'note') box.className = 'note';
+  document.getElementById('messages').appendChild(box);
+  setTimeout(() => box.remove(), kind === 'note' ? 6000 : 20000);
+}
+
+function bindApi() {
+  const c = (name, ret, args) => Module.cwrap(name, ret, args);
+  return {
+    start: c('trailray_start', 'string', []),
+    openTrack: c('trailray_open_track', 'string', ['string', 'number', 'number']),
+    setOption: c('trailray_set_option', 'string', ['string', 'string']),
+    orbit: c('trailray_orbit', null, ['number', 'number']),
+    pan: c('trailray_pan', null, ['number', 'number', 'number', 'number']),
+    zoom: c('trailray_zoom', null, ['number', 'number', 'number']),
+    tilt: c('trailray_tilt', null, ['number']),
+    move: c('trailray_move', null, ['number', 'number']),
+    frame: c('trailray_frame', 'number', ['number', 'number', 'number', 'number']),
+    error: c('trailray_error', 'string', []),
+    viewState: c('trailray_view_state', 'string', []),
+    status: c('trailray_status', 'string', []),
+  };
+}
+
+// A file's bytes into the viewer: "" or the reader's error (naming the file and the position).
+function openBytes(name, bytes) {
+  const pointer = Module._malloc(Math.max(bytes.length, 1));
+  Module.HEAPU8.set(bytes, pointer);
+  let error;
+  try {
+    error = page.api.openTrack(name, pointer, bytes.length);
+  } finally {
+    Module._free(pointer);
+  }
+  if (error) {
+    showMessage(error);
+  } else {
+    page.openedFiles += 1;
+    updateTrackList();
+  }
+  return error;
+}
+
+async function openFiles(files) {
+  for (const file of files) openBytes(file.name, new Uint8Array(await file.arrayBuffer()));
+}
+
+async function openUrl(url) {
+  const name = decodeURIComponent(new URL(url, location.href).pathname.split('/').pop() || 'track');
+  setProgress(`loading ${name}`);
+  try {
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`${response.status} ${response.statusText}`);
+    openBytes(name, new Uint8Array(await response.arrayBuffer()));
+  } catch (e) {
+    showMessage(`${url}: cannot be loaded (${e.message})`);
+  } finally {
+    setProgress('');
+  }
+}
+
+function setProgress(text) { document.getElementById('progress').textContent = text; }
+
+function setOption(name, value) {
+  const error = page.api.setOption(name, value);
+  if (error) showMessage(error);
+  return error;
+}
+
+function updateTrackList() {
+  const status = JSON.parse(page.api.status());
+  const list = document.getElementById('tracks');
+  list.replaceChildren(...status.tracks.map((t) => {
+    const item = document.createElement('li');
+    item.textContent = `${t.name} (${t.points} points)`;
+    item.style.setProperty('--color', t.color);
+    return item;
+  }));
+  document.body.classList.toggle('has-tracks', status.tracks.length > 0);
+  for (const w of status.warnings) showMessage(w, 'note');
+}
+
+// The options of a query string or fragment, in order (`track` apart).
+function optionsOf(text) {
+  const options = [];
+  const tracks = [];
+  for (const [name, value] of new URLSearchParams(text)) {
+    if (name === 'track') tracks.push(value);
+    else options.push([name, value]);
+  }
+  return { options, tracks };
+}
+
+// `trailray serve` describes its tracks and options at api/config.json; elsewhere there is none.
+async function servedConfig() {
+  try {
+    const response = await fetch('api/config.json');
+    if (!response.ok) return null;
+    return await response.json();
+  } catch (e) {
+    return null;
+  }
+}
+
+function installGestures(canvas) {
+  const pointers = new Map();
+  const ratio = () => window.devicePixelRatio || 1;
+  const at = (e) => { const r = canvas.getBoundingClientRect(); return [(e.clientX - r.left) * ratio(), (e.clientY - r.top) * ratio()]; };
+  let pinch = null;
+  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  canvas.addEventListener('pointerdown', (e) => {
+    canvas.setPointerCapture(e.pointerId);
+    pointers.set(e.pointerId, { xy: at(e), button: e.button, shift: e.shiftKey });
+    pinch = null;
+  });
+  const release = (e) => { pointers.delete(e.pointerId); pinch = null; };
+  canvas.addEventListener('pointerup', release);
+  canvas.addEventListener('pointercancel', release);
+  canvas.addEventListener('pointermove', (e) => {
+    const p = pointers.get(e.pointerId);
+    if (!p) return;
+    const xy = at(e);
+    if (pointers.size === 1) {
+      if (p.button === 2 || p.shift) page.api.pan(p.xy[0], p.xy[1], xy[0], xy[1]);
+      else page.api.orbit((xy[0] - p.xy[0]) / ratio(), (xy[1] - p.xy[1]) / ratio());
+      p.xy = xy;
+      return;
+    }
+    p.xy = xy;
+    // Two fingers: the midpoint pans, the spread zooms about it.
+    const [a, b] = [...pointers.values()];
+    const mid = [(a.xy[0] + b.xy[0]) / 2, (a.xy[1] + b.xy[1]) / 2];
+    const spread = Math.hypot(a.xy[0] - b.xy[0], a.xy[1] - b.xy[1]);
+    if (pinch) {
+      page.api.pan(pinch.mid[0], pinch.mid[1], mid[0], mid[1]);
+      if (pinch.spread > 0 && spread > 0) page.api.zoom(Math.log(spread / pinch.spread) / Math.log(1 / 0.8), mid[0], mid[1]);
+    }
+    pinch = { mid, spread };
+  });
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const xy = at(e);
+    const lines = e.deltaMode === 1 ? e.deltaY / 3 : e.deltaY / 100;
+    page.api.zoom(-lines, xy[0], xy[1]);
+  }, { passive: false });
+  canvas.addEventListener('keydown', (e) => {
+    const keys = {
+      ArrowUp: () => page.api.move(0, 0.1), ArrowDown: () => page.api.move(0, -0.1),
+      ArrowLeft: () => page.api.move(-0.1, 0), ArrowRight: () => page.api.move(0.1, 0),
+      PageUp: () => page.api.tilt(5), PageDown: () => page.api.tilt(-5),
+      '+': () => page.api.zoom(1, canvas.width / 2, canvas.height / 2),
+      '-': () => page.api.zoom(-1, canvas.width / 2, canvas.height / 2),
+    };
+    if (keys[e.key]) { keys[e.key](); e.preventDefault(); }
+  });
+}
+
+function installFileOpening() {
+  document.getElementById('file-input').addEventListener('change', (e) => {
+    openFiles([...e.target.files]);
+    e.target.value = '';
+  });
+  window.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dragging'); });
+  window.addEventListener('dragleave', () => document.body.classList.remove('dragging'));
+  window.addEventListener('drop', (e) => {
+    e.preventDefault();
+    document.body.classList.remove('dragging');
+    openFiles([...e.dataTransfer.files]);
+  });
+}
+
+function installButtons(canvas) {
+  document.getElementById('share').addEventListener('click', async () => {
+    try {
+      await navigator.clipboard.writeText(location.href);
+      showMessage('a link to this view is on the clipboard', 'note');
+    } catch (e) {
+      showMessage(`copy this link: ${location.href}`, 'note');
+    }
+  });
+  document.getElementById('screenshot').addEventListener('click', () => {
+    canvas.toBlob((blob) => {
+      const link = document.createElement('a');
+      link.href = URL.createObjectURL(blob);
+      link.download = 'trailray.png';
+      link.click();
+      setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+    }, 'image/png');
+  });
+}
+
+function runFrames(canvas) {
+  let last = performance.now();
+  let lastState = '';
+  const step = (now) => {
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.max(1, Math.round(canvas.clientWidth * ratio));
+    const height = Math.max(1, Math.round(canvas.clientHeight * ratio));
+    if (canvas.width !== width || canvas.height !== height) { canvas.width = width; canvas.height = height; }
+    const drew = page.api.frame(width, height, ratio, (now - last) / 1000);
+    last = now;
+    if (drew < 0) showMessage(`drawing failed: ${page.api.error()}`);
+    if (drew > 0) {
+      const state = page.api.viewState();
+      if (state !== lastState) {
+        lastState = state;
+        history.replaceState(null, '', `${location.pathname}${location.search}#${state}`);
+      }
+    }
+    requestAnimationFrame(step);
+  };
+  requestAnimationFrame(step);
+}
+
+async function start() {
+  page.api = bindApi();
+  const canvas = document.getElementById('canvas');
+  const failure = page.api.start();
+  if (failure) {
+    showMessage(failure);
+    page.failed = failure;
+    return;
+  }
+  installGestures(canvas);
+  installFileOpening();
+  installButtons(canvas);
+
+  // Served options first, then the query's, then the fragment's (the view last seen).
+  const served = await servedConfig();
+  const query = optionsOf(location.search.slice(1));
+  const fragment = optionsOf(location.hash.slice(1));
+  if (served && served.options) for (const [name, value] of Object.entries(served.options)) setOption(name, String(value));
+  for (const [name, value] of query.options) setOption(name, value);
+  for (const url of (served && served.tracks ? served.tracks.map((t) => t.url) : [])) await openUrl(url);
+  for (const url of query.tracks) await openUrl(url);
+  for (const [name, value] of fragment.options) setOption(name, value);
+  runFrames(canvas);
+  page.started = true;
+  resolveReady();
+}

@@ -1,0 +1,95 @@
+// The functions the page's JavaScript calls (page/app.js, through cwrap): one viewer per page,
+// drawing into the WebGL 2 context of the canvas `#canvas`. Strings returned stay valid until the
+// next call of the same function. Every exception stops here, as text for the page to show.
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+
+#include <memory>
+#include <string>
+
+#include "web/page_viewer.hpp"
+
+namespace {
+
+std::unique_ptr<trailray::web::PageViewer> viewer;
+
+const char* kept(std::string text) {
+  static std::string last;
+  last = std::move(text);
+  return last.c_str();
+}
+
+}  // namespace
+
+extern "C" {
+
+// Makes the WebGL 2 context and the viewer: "" or why the page cannot draw.
+EMSCRIPTEN_KEEPALIVE const char* trailray_start() {
+  try {
+    EmscriptenWebGLContextAttributes attributes;
+    emscripten_webgl_init_context_attributes(&attributes);
+    attributes.majorVersion = 2;
+    attributes.minorVersion = 0;
+    attributes.alpha = false;
+    attributes.depth = false;  // the frame is composed in the renderer's own targets and copied
+    attributes.stencil = false;
+    attributes.antialias = false;
+    attributes.preserveDrawingBuffer = true;  // the screenshot button and the tests read the canvas
+    const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_create_context("#canvas", &attributes);
+    if (context <= 0) return kept("this browser offers no WebGL 2 (the page needs it)");
+    emscripten_webgl_make_context_current(context);
+    // Float render targets for the G-buffer; the renderer chooses another path without them.
+    emscripten_webgl_enable_extension(context, "EXT_color_buffer_float");
+    emscripten_webgl_enable_extension(context, "OES_texture_float_linear");
+    viewer = std::make_unique<trailray::web::PageViewer>();
+    return kept("");
+  } catch (const std::exception& e) {
+    return kept(std::string("the renderer could not start: ") + e.what());
+  }
+}
+
+EMSCRIPTEN_KEEPALIVE const char* trailray_open_track(const char* name, const char* bytes, int length) {
+  if (!viewer) return kept("not started");
+  return kept(viewer->open_track(name, std::string_view(bytes, static_cast<std::size_t>(length))));
+}
+
+EMSCRIPTEN_KEEPALIVE const char* trailray_set_option(const char* name, const char* value) {
+  if (!viewer) return kept("not started");
+  return kept(viewer->set_option(name, value));
+}
+
+EMSCRIPTEN_KEEPALIVE void trailray_orbit(double dx, double dy) {
+  if (viewer) viewer->orbit(dx, dy);
+}
+EMSCRIPTEN_KEEPALIVE void trailray_pan(double x0, double y0, double x1, double y1) {
+  if (viewer) viewer->pan(x0, y0, x1, y1);
+}
+EMSCRIPTEN_KEEPALIVE void trailray_zoom(double steps, double x, double y) {
+  if (viewer) viewer->zoom(steps, x, y);
+}
+EMSCRIPTEN_KEEPALIVE void trailray_tilt(double degrees) {
+  if (viewer) viewer->tilt(degrees);
+}
+EMSCRIPTEN_KEEPALIVE void trailray_move(double right, double forward) {
+  if (viewer) viewer->move(right, forward);
+}
+
+// 1 when a frame was drawn, 0 when nothing changed; an error ends as text in trailray_error().
+static std::string frame_error;
+EMSCRIPTEN_KEEPALIVE int trailray_frame(int width, int height, double pixel_ratio, double seconds) {
+  if (!viewer || width <= 0 || height <= 0) return 0;
+  try {
+    return viewer->frame(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), pixel_ratio, seconds)
+               ? 1
+               : 0;
+  } catch (const std::exception& e) {
+    frame_error = e.what();
+    return -1;
+  }
+}
+EMSCRIPTEN_KEEPALIVE const char* trailray_error() { return frame_error.c_str(); }
+
+EMSCRIPTEN_KEEPALIVE const char* trailray_view_state() { return kept(viewer ? viewer->view_state() : ""); }
+EMSCRIPTEN_KEEPALIVE const char* trailray_status() { return kept(viewer ? viewer->status_json() : "{}"); }
+
+}  // extern "C"

@@ -1,0 +1,125 @@
+#include "web/page_options.hpp"
+
+#include <fast_float/fast_float.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scene/colormap.hpp"
+#include "track/color_values.hpp"
+#include "track/io/parse_util.hpp"
+
+namespace trailray::web {
+namespace {
+
+std::optional<double> number(std::string_view text) {
+  double v = 0.0;
+  const auto [end, ec] = fast_float::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::optional<bool> flag(std::string_view text) {
+  if (text.empty() || text == "1" || text == "true" || text == "on" || text == "yes") return true;
+  if (text == "0" || text == "false" || text == "off" || text == "no") return false;
+  return std::nullopt;
+}
+
+OptionOutcome fail(std::string_view name, std::string_view value, std::string_view expected) {
+  return {std::nullopt, fmt::format("{}={}: expected {}", name, value, expected)};
+}
+
+scene::LookAt& look_at_of(PageOptions& o) {
+  if (!o.look_at) o.look_at = scene::LookAt{};
+  return *o.look_at;
+}
+
+}  // namespace
+
+OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::string_view value) {
+  scene::TrackStyle& tracks = o.style.tracks;
+  if (name == "color") {
+    std::vector<glm::vec3> colors;
+    std::string_view rest = value;
+    while (true) {
+      const std::size_t comma = rest.find(',');
+      const auto c = scene::parse_hex_color(rest.substr(0, comma));
+      if (!c) return fail(name, value, "#rrggbb colours separated by commas");
+      colors.push_back(*c);
+      if (comma == std::string_view::npos) break;
+      rest.remove_prefix(comma + 1);
+    }
+    tracks.colors = std::move(colors);
+    tracks.color_by = track::ColorMetric::solid;
+    return {OptionEffect::tracks, {}};
+  }
+  if (name == "color-by") {
+    const auto metric = track::parse_color_metric(value);
+    if (!metric) return fail(name, value, "a metric such as speed, vspeed, elevation, slope, time, solid");
+    tracks.color_by = *metric;
+    tracks.colormap = scene::default_colormap(*metric);
+    return {OptionEffect::tracks, {}};
+  }
+  if (name == "colormap") {
+    const auto map = scene::parse_colormap(value);
+    if (!map) return fail(name, value, "a colormap such as turbo, viridis, magma, warm");
+    tracks.colormap = *map;
+    return {OptionEffect::style, {}};
+  }
+  if (name == "width") {
+    const auto width = scene::parse_track_width(value);
+    if (!width.ok()) return {std::nullopt, "width=" + std::string(value) + ": " + width.error};
+    tracks.width = *width.value;
+    return {OptionEffect::style, {}};
+  }
+  if (name == "curtain" || name == "no-shadows" || name == "no-ssao" || name == "no-atmosphere") {
+    const auto on = flag(value);
+    if (!on) return fail(name, value, "1 or 0 (true/false, on/off)");
+    if (name == "curtain") {
+      tracks.curtain = *on;
+      return {OptionEffect::tracks, {}};
+    }
+    bool& setting = name == "no-shadows" ? o.style.shading.shadows
+                    : name == "no-ssao"  ? o.style.shading.ssao
+                                         : o.style.shading.atmosphere;
+    setting = !*on;
+    return {OptionEffect::style, {}};
+  }
+  if (name == "look-at") {
+    const auto at = scene::parse_look_at_option(value);
+    if (!at.ok()) return {std::nullopt, "look-at=" + std::string(value) + ": " + at.error};
+    look_at_of(o).target = *at.value;
+    o.camera.reset();
+    return {OptionEffect::camera, {}};
+  }
+  if (name == "distance" || name == "heading" || name == "pitch") {
+    const auto v = number(value);
+    if (!v) return fail(name, value, "a number");
+    if (name == "distance" && !(*v > 0.0)) return fail(name, value, "a distance in metres above 0");
+    if (name == "pitch" && (*v < -90.0 || *v > 90.0)) return fail(name, value, "degrees within -90..90");
+    scene::LookAt& at = look_at_of(o);
+    (name == "distance" ? at.distance_m : name == "heading" ? at.heading_deg : at.pitch_deg) = *v;
+    return {OptionEffect::camera, {}};
+  }
+  if (name == "camera") {
+    const auto placement = scene::parse_camera_option(value);
+    if (!placement.ok()) return {std::nullopt, "camera=" + std::string(value) + ": " + placement.error};
+    o.camera = *placement.value;
+    o.look_at.reset();
+    return {OptionEffect::camera, {}};
+  }
+  if (name == "time") {
+    const auto t = track::parse_iso8601(value);
+    if (!t) return fail(name, value, "an ISO 8601 time such as 2024-06-18T15:30:00Z");
+    o.time_unix_s = *t;
+    return {OptionEffect::sun, {}};
+  }
+  return {std::nullopt, fmt::format("{}: not an option of the page (color, color-by, colormap, width, curtain, "
+                                    "look-at, distance, heading, pitch, camera, time, no-shadows, no-ssao, "
+                                    "no-atmosphere)",
+                                    name)};
+}
+
+}  // namespace trailray::web

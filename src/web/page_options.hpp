@@ -1,0 +1,35 @@
+#pragma once
+// The page's options: the command line's names and values (`color`, `color-by`, `width`,
+// `curtain`, `look-at`/`distance`/`heading`/`pitch`, `camera`, `time`, `no-shadows`, ...), as they
+// come from URL parameters, the fragment and `trailray serve`'s configuration. One parser for
+// all three, so a link and a served page say the same thing the same way.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "scene/camera.hpp"
+#include "scene/style.hpp"
+
+namespace trailray::web {
+
+struct PageOptions {
+  scene::Style style;
+  std::optional<scene::LookAt> look_at;            // `look-at`, with `distance`, `heading`, `pitch`
+  std::optional<scene::CameraPlacement> camera;    // `camera`
+  std::optional<double> time_unix_s;               // `time` (the sun's)
+};
+
+// What applying an option changed, so the page redoes only that.
+enum class OptionEffect { style, tracks, camera, sun };
+
+// Applies `name`=`value` to `options`; the effect, or an error naming the option and the expected
+// form (the option is then unchanged). Flags (`curtain`, `no-shadows`...) take "", "1", "true",
+// "on", or "0", "false", "off".
+struct OptionOutcome {
+  std::optional<OptionEffect> effect;
+  std::string error;
+};
+OptionOutcome apply_page_option(PageOptions& options, std::string_view name, std::string_view value);
+
+}  // namespace trailray::web

@@ -1,0 +1,232 @@
+#include "web/page_viewer.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "scene/diagnostics.hpp"
+#include "scene/framing.hpp"
+#include "scene/scene.hpp"
+#include "scene/track_building.hpp"
+
+namespace trailray::web {
+namespace {
+
+// The bytes as a file of the page's in-memory file system, in a folder of its own so that the
+// readers (which take paths, and sniff gzip and the format) name it as the person knows it.
+class FileInMemory {
+ public:
+  FileInMemory(int serial, const std::string& name, std::string_view bytes)
+      : folder_("/opened/" + std::to_string(serial)) {
+    std::filesystem::create_directories(folder_);
+    std::ofstream(folder_ / name, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    std::filesystem::current_path(folder_);
+  }
+  ~FileInMemory() {
+    std::error_code ec;
+    std::filesystem::current_path("/", ec);
+    std::filesystem::remove_all(folder_, ec);
+  }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+// A name that cannot leave its folder (a file name, not a path).
+std::string plain_file_name(const std::string& name) {
+  std::string out = std::filesystem::path(name).filename().string();
+  if (out.empty() || out == "." || out == "..") out = "track";
+  return out;
+}
+
+}  // namespace
+
+PageViewer::PageViewer() {}
+
+std::string PageViewer::open_track(const std::string& name, std::string_view bytes) {
+  scene::CollectedDiagnostics diagnostics;
+  try {
+    const std::string file = plain_file_name(name);
+    scene::LoadedTrackFile loaded;
+    {
+      FileInMemory in_memory(++files_opened_, file, bytes);
+      loaded = scene::read_track_file(file, track::ReadOptions{}, diagnostics);
+    }
+    files_.push_back(std::move(loaded));
+    try {
+      rebuild_tracks();
+    } catch (...) {
+      files_.pop_back();  // what was open stays as it was
+      rebuild_tracks();
+      throw;
+    }
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  warnings_ = diagnostics.warnings;
+  if (!camera_moved_) place_camera();
+  dirty_ = true;
+  return {};
+}
+
+std::string PageViewer::set_option(std::string_view name, std::string_view value) {
+  const PageOptions before = options_;
+  const OptionOutcome outcome = apply_page_option(options_, name, value);
+  if (!outcome.effect) return outcome.error;
+  try {
+    if (*outcome.effect == OptionEffect::tracks) rebuild_tracks();
+    if (*outcome.effect == OptionEffect::camera) {
+      camera_moved_ = true;
+      place_camera();
+    }
+  } catch (const std::exception& e) {
+    options_ = before;
+    rebuild_tracks();
+    return std::string(name) + "=" + std::string(value) + ": " + e.what();
+  }
+  std::erase_if(given_options_, [&](const auto& kv) { return kv.first == name; });
+  if (*outcome.effect != OptionEffect::camera) given_options_.emplace_back(name, value);
+  dirty_ = true;
+  return {};
+}
+
+void PageViewer::rebuild_tracks() {
+  recorded_ = scene::recorded_points(files_);
+  scene::TrackBuildOptions build;
+  build.neutral_ground_m = recorded_.lowest_or_sea_level();
+  scene::CollectedDiagnostics diagnostics;
+  scene::TrackSet fresh;
+  for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics)) fresh.add(std::move(t));
+  tracks_ = std::move(fresh);
+}
+
+scene::Lens PageViewer::lens() const {
+  scene::Lens lens;
+  lens.width_px = std::max<std::uint32_t>(width_px_, 1);
+  lens.height_px = std::max<std::uint32_t>(height_px_, 1);
+  return lens;
+}
+
+void PageViewer::place_camera() {
+  const scene::Lens l = lens();
+  const double ground = recorded_.lowest_or_sea_level();
+  if (options_.look_at) {
+    camera_.emplace(*options_.look_at, l);
+    return;
+  }
+  if (options_.camera) {
+    const auto camera = scene::camera_at(*options_.camera, l, ground);
+    if (!camera.ok()) throw std::runtime_error(camera.error);
+    camera_.emplace(scene::CameraController::look_at_from_camera(*camera.value, ground), l);
+    return;
+  }
+  if (tracks_.empty()) return;
+  scene::FramingOptions framing;
+  framing.lens = l;
+  const auto framed = scene::frame_tracks(tracks_, framing);
+  if (!framed.ok()) throw std::runtime_error(framed.error);
+  camera_.emplace(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m), l);
+}
+
+void PageViewer::orbit(double dx, double dy) {
+  if (!camera_) return;
+  camera_->orbit(dx, dy);
+  camera_moved_ = dirty_ = true;
+}
+void PageViewer::pan(double x0, double y0, double x1, double y1) {
+  if (!camera_) return;
+  camera_->pan(x0, y0, x1, y1);
+  camera_moved_ = dirty_ = true;
+}
+void PageViewer::zoom(double steps, double x, double y) {
+  if (!camera_) return;
+  camera_->zoom(steps, x, y);
+  camera_moved_ = dirty_ = true;
+}
+void PageViewer::tilt(double degrees) {
+  if (!camera_) return;
+  camera_->tilt(degrees);
+  camera_moved_ = dirty_ = true;
+}
+void PageViewer::move(double right, double forward) {
+  if (!camera_) return;
+  camera_->move(right, forward);
+  camera_moved_ = dirty_ = true;
+}
+
+bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds) {
+  if (width_px == 0 || height_px == 0) return false;
+  if (width_px != width_px_ || height_px != height_px_) {
+    width_px_ = width_px;
+    height_px_ = height_px;
+    if (camera_)
+      camera_->set_image_size(width_px, height_px);
+    else if (!tracks_.empty() || options_.look_at || options_.camera)
+      place_camera();
+    dirty_ = true;
+  }
+  if (camera_ && camera_->animating()) {
+    camera_->update(seconds);
+    dirty_ = true;
+  }
+  if (!dirty_) return false;
+  dirty_ = false;
+
+  scene::Scene scene;
+  scene.tracks = &tracks_;
+  scene.style = options_.style;
+  scene.color_range = scene::color_range(tracks_, options_.style);
+  scene.sun_time_unix_s = options_.time_unix_s.value_or(scene::default_sun_time(recorded_));
+  scene.neutral_ground_m = recorded_.lowest_or_sea_level();
+  target_.pixel_ratio = pixel_ratio;
+  target_.window_width_px = static_cast<int>(width_px);
+  target_.window_height_px = static_cast<int>(height_px);
+  if (camera_) {
+    renderer_.draw(scene, camera_->camera(), target_);
+  } else {
+    // Nothing to look at yet: the neutral ground from above a place, so the page is not black.
+    scene::LookAt overview;
+    overview.target = {46.6, 8.0, 0.0};
+    overview.distance_m = 20000.0;
+    scene::CameraController start(overview, lens());
+    renderer_.draw(scene, start.camera(), target_);
+  }
+  ++frames_drawn_;
+  return true;
+}
+
+std::string PageViewer::view_state() const {
+  std::string out;
+  if (camera_) {
+    const scene::LookAt& v = camera_->view();
+    out = fmt::format("look-at={:.6f},{:.6f},{:.1f}&distance={:.1f}&heading={:.2f}&pitch={:.2f}", v.target.lat_deg,
+                      v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
+  }
+  for (const auto& [name, value] : given_options_)
+    out += (out.empty() ? "" : "&") + name + (value.empty() ? "" : "=" + value);
+  return out;
+}
+
+std::string PageViewer::status_json() const {
+  nlohmann::json j;
+  j["tracks"] = nlohmann::json::array();
+  for (const scene::Track& t : tracks_.tracks()) {
+    const glm::vec3 c = t.color_srgb;
+    const auto byte = [](float v) { return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    j["tracks"].push_back({{"name", t.name},
+                           {"points", t.point_count()},
+                           {"color", fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b))}});
+  }
+  const auto range = scene::color_range(tracks_, options_.style);
+  if (range) j["color_range"] = {range->min, range->max};
+  j["warnings"] = warnings_;
+  j["frames_drawn"] = frames_drawn_;
+  return j.dump();
+}
+
+}  // namespace trailray::web

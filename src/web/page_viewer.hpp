@@ -1,0 +1,76 @@
+#pragma once
+// The page's viewer: the tracks opened in the page (files dropped or picked, or fetched from
+// `?track=` URLs, handed over as bytes), drawn with the desktop's renderer into the page's
+// WebGL 2 canvas, from a camera the person moves (scene::CameraController, as on the desktop).
+// The page's JavaScript (page/app.js) owns the DOM: it passes files, options and gestures in
+// through page_api.cpp and asks for a frame each animation frame; a frame is drawn only when
+// something changed.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/frame_target.hpp"
+#include "render/renderer.hpp"
+#include "scene/camera_controller.hpp"
+#include "scene/track_files.hpp"
+#include "scene/track_set.hpp"
+#include "web/page_options.hpp"
+
+namespace trailray::web {
+
+class PageViewer {
+ public:
+  // Draws into the page's current WebGL 2 context (page_api.cpp makes it).
+  PageViewer();
+
+  // Reads a track file given by name and bytes (any format the readers know, gzip too). "" when
+  // it opened, else the error naming the file and the position; what was open stays open.
+  std::string open_track(const std::string& name, std::string_view bytes);
+  // An option by the command line's name (page_options.hpp); "" or the error.
+  std::string set_option(std::string_view name, std::string_view value);
+
+  // Gestures, in canvas pixels (device pixels, y down).
+  void orbit(double dx_px, double dy_px);
+  void pan(double from_x, double from_y, double to_x, double to_y);
+  void zoom(double steps, double x_px, double y_px);
+  void tilt(double degrees);
+  void move(double right, double forward);
+
+  // Draws a frame into the canvas of `width_px` x `height_px` device pixels (`pixel_ratio` of
+  // them per CSS pixel) when anything changed since the last, or a camera flight is under way.
+  // Returns whether it drew.
+  bool frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds_since_last);
+
+  // The view as option text for the fragment ("look-at=LAT,LON,ALT&distance=M&heading=D&pitch=D"
+  // plus the style options given), so a copied address reproduces it.
+  std::string view_state() const;
+  // What the page shows beside the picture, as JSON: the tracks (name, points, colour), the colour
+  // scale, the warnings of the last file opened, the frames drawn.
+  std::string status_json() const;
+
+ private:
+  void rebuild_tracks();
+  void place_camera();
+  scene::Lens lens() const;
+
+  render::Renderer renderer_;
+  render::DefaultFramebufferTarget target_;
+  PageOptions options_;
+  std::vector<std::pair<std::string, std::string>> given_options_;  // as given, for view_state
+  std::vector<scene::LoadedTrackFile> files_;
+  scene::TrackSet tracks_;
+  scene::RecordedPoints recorded_;
+  std::optional<scene::CameraController> camera_;
+  bool camera_moved_ = false;  // by a gesture or an option: opening another track keeps the view
+  bool dirty_ = true;
+  std::uint32_t width_px_ = 0, height_px_ = 0;
+  std::vector<std::string> warnings_;
+  std::uint64_t frames_drawn_ = 0;
+  int files_opened_ = 0;
+};
+
+}  // namespace trailray::web
