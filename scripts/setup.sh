@@ -42,6 +42,7 @@ packages=(
   # --- the browser build (scripts/web.sh; sources of its C/C++ libraries: scripts/web-sources.sh) ---
   emscripten             # C++ to WebAssembly + WebGL2 (3.1.6, with its prebuilt libc/libc++ and node tests)
   dpkg-dev               # dpkg-source: apt-get source unpacks the Debian source packages with their patches
+  chromium               # the browser tests: the page in headless Chromium (WebGL 2 on SwiftShader)
   # --- tests, sanitizers, fuzzing ---
   libgtest-dev           # unit tests through ctest
   clang                  # libFuzzer builds of the readers

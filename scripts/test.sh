@@ -27,8 +27,10 @@ env ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:intercept_tls_get_addr=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-asan --no-tests=error --output-on-failure -j "$jobs"
 
-echo "== WebAssembly build (Emscripten): the core's tests under node"
+echo "== WebAssembly build (Emscripten): the core's tests under node, the page in headless Chromium"
 scripts/web.sh
+# puppeteer-core, exactly as the lockfile says (it drives Debian's Chromium; it downloads no browser).
+npm ci --prefix tests/web --no-audit --no-fund --loglevel=error
 ctest --test-dir build-web --no-tests=error --output-on-failure -j "$jobs"
 
 echo "== Fuzzers (bounded)"

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -37,6 +38,14 @@ class FileInMemory {
   std::filesystem::path folder_;
 };
 
+// Where the page looks before any track is open (the Bernese Oberland), in daylight whatever the
+// hour: local solar noon of today there.
+constexpr double kOverviewLonDeg = 8.0;
+double noon_today(double lon_deg) {
+  const double now = static_cast<double>(std::time(nullptr));
+  return std::floor(now / 86400.0) * 86400.0 + 43200.0 - lon_deg / 15.0 * 3600.0;
+}
+
 // A name that cannot leave its folder (a file name, not a path).
 std::string plain_file_name(const std::string& name) {
   std::string out = std::filesystem::path(name).filename().string();
@@ -66,7 +75,10 @@ std::string PageViewer::open_track(const std::string& name, std::string_view byt
       throw;
     }
   } catch (const std::exception& e) {
-    return e.what();
+    // What the reader warned of tells where a file went wrong (cut short at line N...).
+    std::string message = e.what();
+    for (const std::string& w : diagnostics.warnings) message += "\n" + w;
+    return message;
   }
   warnings_ = diagnostics.warnings;
   if (!camera_moved_) place_camera();
@@ -182,6 +194,7 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   scene.style = options_.style;
   scene.color_range = scene::color_range(tracks_, options_.style);
   scene.sun_time_unix_s = options_.time_unix_s.value_or(scene::default_sun_time(recorded_));
+  if (!options_.time_unix_s && tracks_.empty()) scene.sun_time_unix_s = noon_today(kOverviewLonDeg);
   scene.neutral_ground_m = recorded_.lowest_or_sea_level();
   target_.pixel_ratio = pixel_ratio;
   target_.window_width_px = static_cast<int>(width_px);
@@ -191,7 +204,7 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   } else {
     // Nothing to look at yet: the neutral ground from above a place, so the page is not black.
     scene::LookAt overview;
-    overview.target = {46.6, 8.0, 0.0};
+    overview.target = {46.6, kOverviewLonDeg, 0.0};
     overview.distance_m = 20000.0;
     scene::CameraController start(overview, lens());
     renderer_.draw(scene, start.camera(), target_);

@@ -1,0 +1,182 @@
+// The page in headless Chromium (WebGL 2 on SwiftShader): it starts, draws a track opened through
+// the file input in its colour, shows a broken file's error and keeps what is open, and a link
+// with the command line's options draws what `trailray render` draws with the same options.
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+
+import {
+  canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor, run, staticServer,
+} from './harness.mjs';
+
+const MAGENTA = [255, 0, 255];
+let browser, server, base;
+const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'trailray-page-'));
+
+before(async () => {
+  ({ server, url: base } = await staticServer(config.webRoot, { '/examples/': path.join(config.sourceDir, 'examples') }));
+  browser = await launchBrowser();
+});
+
+after(async () => {
+  await browser?.close();
+  server?.close();
+  fs.rmSync(scratch, { recursive: true, force: true });
+});
+
+async function status(page) {
+  return JSON.parse(await page.evaluate(() => window.trailray.api.status()));
+}
+
+// Opens `file` through the page's file input and waits for the frame that shows the result.
+async function pick(page, file) {
+  const drawn = (await status(page)).frames_drawn;
+  const count = () => page.evaluate(() => [window.trailray.openedFiles, window.trailray.messages.length]);
+  const [opened, messages] = await count();
+  const input = await page.$('#file-input');
+  await input.uploadFile(file);
+  await page.waitForFunction((n) => window.trailray.openedFiles + window.trailray.messages.length > n, {},
+    opened + messages);
+  if ((await count())[0] > opened) await framesDrawn(page, drawn + 1);  // a file that failed changes nothing
+}
+
+test('the page starts and draws the neutral ground', async () => {
+  const page = await openPage(browser, base);
+  await framesDrawn(page);
+  const image = await canvasPixels(page);
+  assert.equal(image.width, 640);
+  let sum = 0;
+  for (let i = 0; i < image.data.length; i += 4) sum += image.data[i] + image.data[i + 1] + image.data[i + 2];
+  const mean = sum / (image.data.length / 4) / 3;
+  assert.ok(mean > 40 && mean < 250, `the picture is lit ground, not black or blank (mean ${mean})`);
+  assert.equal(pixelsOfColor(image, MAGENTA).count, 0);
+  await page.close();
+});
+
+test('a GPX given through the file input draws its track in its colour, framed', async () => {
+  const page = await openPage(browser, `${base}?color=%23ff00ff`);
+  await framesDrawn(page);
+  assert.equal(pixelsOfColor(await canvasPixels(page), MAGENTA).count, 0, 'no track before one is opened');
+  await pick(page, path.join(config.sourceDir, 'examples', 'hike.gpx'));
+  const s = await status(page);
+  assert.equal(s.tracks.length, 1);
+  assert.equal(s.tracks[0].points, 860);
+  assert.equal(s.tracks[0].color, '#ff00ff');
+  const image = await canvasPixels(page);
+  const track = pixelsOfColor(image, MAGENTA, 60);
+  assert.ok(track.count > 400, `the track's pixels (${track.count})`);
+  // Framed: the track's pixels gather around the middle of the picture.
+  assert.ok(Math.abs(track.x - image.width / 2) < image.width * 0.2, `centred across (${track.x})`);
+  assert.ok(Math.abs(track.y - image.height / 2) < image.height * 0.25, `centred down (${track.y})`);
+  const listed = await page.$eval('#tracks', (list) => list.textContent);
+  assert.match(listed, /Harder slope hike/);
+  await page.close();
+});
+
+test('a broken file shows its error (file and line) and what is open stays', async () => {
+  const page = await openPage(browser, `${base}?color=%23ff00ff&track=examples/hike.gpx`);
+  await framesDrawn(page);
+  const before = pixelsOfColor(await canvasPixels(page), MAGENTA, 60).count;
+  assert.ok(before > 400);
+  const broken = path.join(scratch, 'broken.gpx');
+  fs.writeFileSync(broken, '<?xml version="1.0"?>\n<gpx version="1.1">\n<trk><trkseg></trk>\n</gpx>\n');
+  await pick(page, broken);
+  const messages = await page.evaluate(() => window.trailray.messages);
+  assert.equal(messages.length, 1, messages.join('\n'));
+  assert.match(messages[0], /broken\.gpx/);
+  assert.match(messages[0], /:3\b|line 3/, 'the position of the error');
+  assert.match(await page.$eval('#messages', (m) => m.textContent), /broken\.gpx/, 'shown in the page');
+  assert.equal((await status(page)).tracks.length, 1);
+  assert.ok(pixelsOfColor(await canvasPixels(page), MAGENTA, 60).count > before * 0.9, 'the open track is still drawn');
+  await page.close();
+});
+
+test('a bad option in the link is reported and the rest still applies', async () => {
+  const page = await openPage(browser, `${base}?width=huge&color=%23ff00ff&track=examples/hike.gpx`);
+  await framesDrawn(page);
+  const messages = await page.evaluate(() => window.trailray.messages);
+  assert.equal(messages.length, 1);
+  assert.match(messages[0], /^width=huge/);
+  assert.ok(pixelsOfColor(await canvasPixels(page), MAGENTA, 60).count > 400);
+  await page.close();
+});
+
+// The same options as a link and on the command line. The two pictures come from the same
+// renderer on two rasterizers (SwiftShader in Chromium, llvmpipe natively): they differ at edges
+// by a pixel and in the last bits of shading, so the comparison is of the picture, not of bits:
+// the track covers the same pixels (its magenta pixels overlap by 90 %) and the mean difference
+// over all pixels is small (under 6 of 255; a view moved by a few degrees gives well over 10).
+test('a link with ?track= and view options draws what `trailray render` draws', async (t) => {
+  const view = 'look-at=46.6975,7.8625,800&distance=2600&heading=20&pitch=-35&time=2024-06-18T12:00:00Z';
+  const page = await openPage(browser, `${base}?track=examples/hike.gpx&color=%23ff00ff&${view}`);
+  await framesDrawn(page);
+  const web = await canvasPixels(page);
+  await page.close();
+
+  const native = path.join(scratch, 'native.png');
+  const args = ['render', '--terrain', 'none', '--imagery', 'none', '--size', `${web.width}x${web.height}`,
+    '--legend', 'off', '--color', '#ff00ff', '-o', native];
+  for (const [name, value] of new URLSearchParams(view)) args.push(`--${name}`, value);
+  args.push(path.join(config.sourceDir, 'examples', 'hike.gpx'));
+  const rendered = await run(config.nativeBinary, args);
+  assert.equal(rendered.code, 0, rendered.output);
+  const reference = await pngPixels(native);
+  assert.equal(reference.width, web.width);
+
+  const a = pixelsOfColor(web, MAGENTA, 60), b = pixelsOfColor(reference, MAGENTA, 60);
+  assert.ok(b.count > 300, `the native picture has the track (${b.count})`);
+  assert.ok(Math.abs(a.count - b.count) < 0.1 * b.count, `track pixels: page ${a.count}, native ${b.count}`);
+  assert.ok(Math.hypot(a.x - b.x, a.y - b.y) < 3, `track centroids ${a.x},${a.y} and ${b.x},${b.y}`);
+  let difference = 0;
+  for (let i = 0; i < web.data.length; i += 4)
+    for (let c = 0; c < 3; ++c) difference += Math.abs(web.data[i + c] - reference.data[i + c]);
+  const mean = difference / (web.data.length / 4) / 3;
+  t.diagnostic(`page vs native: track pixels ${a.count} vs ${b.count}, mean difference ${mean.toFixed(2)} of 255`);
+  assert.ok(mean < 6, `mean difference ${mean.toFixed(2)} of 255`);
+});
+
+// A PNG's pixels, decoded by the browser.
+async function pngPixels(file) {
+  const page = await browser.newPage();
+  const encoded = fs.readFileSync(file).toString('base64');
+  const result = await page.evaluate(async (data) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${data}`;
+    await image.decode();
+    const canvas = document.createElement('canvas');
+    canvas.width = image.width;
+    canvas.height = image.height;
+    const context = canvas.getContext('2d');
+    context.drawImage(image, 0, 0);
+    return { width: image.width, height: image.height, data: Array.from(context.getImageData(0, 0, image.width, image.height).data) };
+  }, encoded);
+  await page.close();
+  return { width: result.width, height: result.height, data: Uint8Array.from(result.data) };
+}
+
+test('the view kept in the address reproduces the picture after a drag', async () => {
+  const page = await openPage(browser, `${base}?track=examples/hike.gpx&color=%23ff00ff`);
+  await framesDrawn(page);
+  const first = await status(page);
+  await page.mouse.move(320, 200);
+  await page.mouse.down();
+  await page.mouse.move(380, 230, { steps: 5 });
+  await page.mouse.up();
+  await framesDrawn(page, first.frames_drawn + 1);
+  const moved = await canvasPixels(page);
+  const address = page.url();
+  assert.match(address, /#look-at=[-0-9.]+,[-0-9.]+,[-0-9.]+&distance=[0-9.]+&heading=[-0-9.]+&pitch=[-0-9.]+.*color=/);
+  await page.close();
+
+  const again = await openPage(browser, address);
+  await framesDrawn(again);
+  const restored = await canvasPixels(again);
+  await again.close();
+  const a = pixelsOfColor(moved, MAGENTA, 60), b = pixelsOfColor(restored, MAGENTA, 60);
+  assert.ok(a.count > 300);
+  // The fragment rounds the view (1e-6 degrees, 0.1 m, 0.01 degrees): the same picture within a pixel.
+  assert.ok(Math.hypot(a.x - b.x, a.y - b.y) < 1.5, `centroids ${a.x},${a.y} and ${b.x},${b.y}`);
+  assert.ok(Math.abs(a.count - b.count) < 0.05 * a.count);
+});
