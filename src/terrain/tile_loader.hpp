@@ -9,6 +9,11 @@
 //   loader.progress()       wanted / loaded / no data / failed / pending, for a progress bar or
 //                           a spinner; wait_until_done() blocks with a progress callback.
 //
+// Without threads (the page's WebAssembly build, geo/threads.hpp) there are no workers: each
+// request() loads a few of the queued tiles on the calling thread. Its sources answer at once
+// (the page's fetch tiles over the network themselves, and answer "cancelled" until the bytes are
+// there); a cancelled tile stays wanted and is asked for again by a later request().
+//
 // A failing tile never stops the others: its error is recorded (failures()) and it is not asked
 // for again in this loader's lifetime (forget_failures() to retry), so a broken tile does not
 // hammer a server each frame. "No data" answers are remembered the same way.
@@ -28,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include "geo/threads.hpp"
 #include "terrain/stop_token.hpp"
 #include "terrain/tile.hpp"
 #include "terrain/tile_memory_cache.hpp"
@@ -51,6 +57,7 @@ struct LoadProgress {
 struct TileLoaderOptions {
   unsigned threads = 4;                          // workers; network sources like more
   std::size_t memory_budget_bytes = 512u << 20;  // decoded tiles kept in memory
+  std::size_t tiles_per_request = 8;             // without threads: loaded by each request()
 };
 
 enum class TileState { unknown, pending, loaded, no_data, failed };
@@ -61,7 +68,8 @@ class TileLoader {
   using LoadFunction = std::function<TileResult<Tile>(const TileId&, StopToken)>;
 
   TileLoader(LoadFunction load, TileLoaderOptions options = {})
-      : load_(std::move(load)), cache_(options.memory_budget_bytes) {
+      : load_(std::move(load)), cache_(options.memory_budget_bytes), tiles_per_request_(options.tiles_per_request) {
+    if (!geo::kThreadsAvailable) return;
     const unsigned n = std::max(1u, options.threads);
     for (unsigned i = 0; i < n; ++i) workers_.emplace_back([this] { work(); });
   }
@@ -101,6 +109,7 @@ class TileLoader {
     }
     work_ready_.notify_all();
     done_changed_.notify_all();
+    if (!geo::kThreadsAvailable) load_on_this_thread(tiles_per_request_);
   }
 
   std::shared_ptr<const Tile> get(const TileId& id) {
@@ -201,28 +210,51 @@ class TileLoader {
         if (!wanted_.contains(id) || state_for_queue(id) != TileState::unknown) continue;
         in_flight_.emplace(id, cancel);
       }
-      TileResult<Tile> result = load_(id, cancel.get_token());
-      std::function<void()> notify;
+      finish(id, cancel, load_(id, cancel.get_token()), true);
+    }
+  }
+
+  // Without workers: up to `count` of the queued tiles, most important first. A tile its source
+  // answers "cancelled" for (still on its way) stays wanted; the next request() queues it again.
+  void load_on_this_thread(std::size_t count) {
+    for (std::size_t done = 0; done < count;) {
+      TileId id;
+      StopSource cancel;
       {
         std::lock_guard lock(mutex_);
-        in_flight_.erase(id);
-        if (cancel.stop_requested() || result.status == TileStatus::cancelled) {
-          // Left the view while loading; if it came back meanwhile, queue it again.
-          if (wanted_.contains(id)) queue_.push({0.0, id});
-        } else if (result.status == TileStatus::ok) {
-          cache_.put(id, std::make_shared<const Tile>(std::move(result.tile)),
-                     [this](const TileId& t) { return wanted_.contains(t); });
-        } else if (result.status == TileStatus::no_data) {
-          no_data_.insert(id);
-        } else {
-          failed_.emplace(id, result.error.empty() ? to_string(id) + ": failed" : result.error);
-        }
-        notify = on_update_;
+        if (queue_.empty()) return;
+        id = queue_.top().id;
+        queue_.pop();
+        if (!wanted_.contains(id) || state_for_queue(id) != TileState::unknown) continue;
+        in_flight_.emplace(id, cancel);
       }
-      done_changed_.notify_all();
-      work_ready_.notify_all();
-      if (notify) notify();
+      finish(id, cancel, load_(id, cancel.get_token()), false);
+      ++done;
     }
+  }
+
+  // Records a loaded tile; a cancelled one that is still wanted is queued again when `requeue`.
+  void finish(const TileId& id, const StopSource& cancel, TileResult<Tile> result, bool requeue) {
+    std::function<void()> notify;
+    {
+      std::lock_guard lock(mutex_);
+      in_flight_.erase(id);
+      if (cancel.stop_requested() || result.status == TileStatus::cancelled) {
+        // Left the view while loading; if it came back meanwhile, queue it again.
+        if (requeue && wanted_.contains(id)) queue_.push({0.0, id});
+      } else if (result.status == TileStatus::ok) {
+        cache_.put(id, std::make_shared<const Tile>(std::move(result.tile)),
+                   [this](const TileId& t) { return wanted_.contains(t); });
+      } else if (result.status == TileStatus::no_data) {
+        no_data_.insert(id);
+      } else {
+        failed_.emplace(id, result.error.empty() ? to_string(id) + ": failed" : result.error);
+      }
+      notify = on_update_;
+    }
+    done_changed_.notify_all();
+    work_ready_.notify_all();
+    if (notify) notify();
   }
 
   // Like state_locked, but a wanted tile not yet loaded counts as unknown (to be loaded).
@@ -248,6 +280,7 @@ class TileLoader {
   std::unordered_map<TileId, std::string> failed_;
   std::function<void()> on_update_;
   bool stopping_ = false;
+  std::size_t tiles_per_request_ = 8;
   std::vector<std::thread> workers_;  // last: joined before the state above is destroyed
 };
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "geo/threads.hpp"
 #include "track/model.hpp"
-#include "track/threads.hpp"
 
 namespace trailray::track {
 
@@ -70,7 +70,7 @@ struct ReadOptions {
   enum class IgcAltitude { Auto, Gnss, Pressure } igc_altitude = IgcAltitude::Auto;
   // A plain GPX file at least this big is read in two halves on two threads (same result).
   // Never by default where there are no threads (it would only add the joining).
-  std::int64_t two_part_min_bytes = kThreadsAvailable ? std::int64_t{8} << 20 : INT64_MAX;
+  std::int64_t two_part_min_bytes = geo::kThreadsAvailable ? std::int64_t{8} << 20 : INT64_MAX;
   // KMZ: the most bytes the archive may have, and its KML entries may decompress to together
   // (a zip bomb is refused with an error instead of filling memory).
   std::int64_t kmz_max_bytes = std::int64_t{1} << 30;

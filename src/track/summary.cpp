@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "track/threads.hpp"
+#include "geo/threads.hpp"
 
 namespace trailray::track {
 namespace {
@@ -37,7 +37,7 @@ TrackSummary summarize_track(const Track& track, const AnalysisOptions& options)
   };
   std::future<std::pair<TrackMetrics, Statistics>> raw_future;
   std::pair<TrackMetrics, Statistics> raw;
-  const bool parallel = kThreadsAvailable && track.point_count() >= kParallelPoints;
+  const bool parallel = geo::kThreadsAvailable && track.point_count() >= kParallelPoints;
   if (parallel)
     raw_future = std::async(std::launch::async, analyse_raw);
   else

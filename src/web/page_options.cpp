@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "scene/colormap.hpp"
+#include "terrain/height_encoding.hpp"
+#include "terrain/source_factory.hpp"
 #include "track/color_values.hpp"
 #include "track/io/parse_util.hpp"
 
@@ -37,6 +39,12 @@ scene::LookAt& look_at_of(PageOptions& o) {
 }
 
 }  // namespace
+
+PageOptions::PageOptions() {
+  const terrain::TerrainConfig defaults = terrain::default_terrain_config();
+  terrain = defaults.terrain;
+  imagery = defaults.imagery;
+}
 
 OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::string_view value) {
   scene::TrackStyle& tracks = o.style.tracks;
@@ -116,9 +124,32 @@ OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::stri
     o.time_unix_s = *t;
     return {OptionEffect::sun, {}};
   }
+  if (name == "terrain" || name == "imagery") {
+    terrain::SourceSettings& source = name == "terrain" ? o.terrain : o.imagery;
+    const std::string text(value);
+    if (text != "none" && !text.starts_with("http://") && !text.starts_with("https://"))
+      return fail(name, value, "none or a URL template with {z}, {x} and {y} (the page reads tiles over HTTP)");
+    source = terrain::SourceSettings{};
+    source.source = text;
+    if (name == "terrain") source.encoding = terrain::encoding_from_name(text);
+    return {OptionEffect::terrain, {}};
+  }
+  if (name == "terrain-encoding") {
+    const auto encoding = terrain::parse_height_encoding(value);
+    if (!encoding) return fail(name, value, "terrarium, mapbox or alpinemaps");
+    o.terrain.encoding = *encoding;
+    return {OptionEffect::terrain, {}};
+  }
+  if (name == "terrain-max-zoom" || name == "imagery-max-zoom") {
+    const auto v = number(value);
+    if (!v || *v < 0 || *v > 22 || *v != std::floor(*v)) return fail(name, value, "a zoom level 0..22");
+    (name == "terrain-max-zoom" ? o.terrain : o.imagery).max_zoom = static_cast<int>(*v);
+    return {OptionEffect::terrain, {}};
+  }
   return {std::nullopt, fmt::format("{}: not an option of the page (color, color-by, colormap, width, curtain, "
                                     "look-at, distance, heading, pitch, camera, time, no-shadows, no-ssao, "
-                                    "no-atmosphere)",
+                                    "no-atmosphere, terrain, terrain-encoding, terrain-max-zoom, imagery, "
+                                    "imagery-max-zoom)",
                                     name)};
 }
 

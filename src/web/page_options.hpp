@@ -10,18 +10,23 @@
 
 #include "scene/camera.hpp"
 #include "scene/style.hpp"
+#include "terrain/terrain_config.hpp"
 
 namespace trailray::web {
 
 struct PageOptions {
   scene::Style style;
-  std::optional<scene::LookAt> look_at;            // `look-at`, with `distance`, `heading`, `pitch`
-  std::optional<scene::CameraPlacement> camera;    // `camera`
-  std::optional<double> time_unix_s;               // `time` (the sun's)
+  std::optional<scene::LookAt> look_at;          // `look-at`, with `distance`, `heading`, `pitch`
+  std::optional<scene::CameraPlacement> camera;  // `camera`
+  std::optional<double> time_unix_s;             // `time` (the sun's)
+  // `terrain`, `imagery`: URL templates ({z} {x} {y} {-y} {s}) or "none"; by default the
+  // desktop's online sources (terrain/terrain_config.hpp). `terrain-encoding`, `*-max-zoom`.
+  terrain::SourceSettings terrain, imagery;
+  PageOptions();
 };
 
 // What applying an option changed, so the page redoes only that.
-enum class OptionEffect { style, tracks, camera, sun };
+enum class OptionEffect { style, tracks, camera, sun, terrain };
 
 // Applies `name`=`value` to `options`; the effect, or an error naming the option and the expected
 // form (the option is then unchanged). Flags (`curtain`, `no-shadows`...) take "", "1", "true",

@@ -1,19 +1,22 @@
 #include "web/page_viewer.hpp"
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include "scene/diagnostics.hpp"
 #include "scene/framing.hpp"
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
+#include "terrain/encoded_sources.hpp"
+#include "web/fetched_tiles.hpp"
 
 namespace trailray::web {
 namespace {
@@ -55,7 +58,40 @@ std::string plain_file_name(const std::string& name) {
 
 }  // namespace
 
-PageViewer::PageViewer() {}
+PageViewer::PageViewer() { open_terrain(); }
+
+void PageViewer::open_terrain() {
+  terrain_view_.reset();
+  heights_.reset();
+  imagery_.reset();
+  const auto redraw = [this] { dirty_ = true; };
+  const auto info_of = [](const terrain::SourceSettings& s) {
+    terrain::SourceInfo info;
+    info.name = s.source;
+    info.min_zoom = s.min_zoom.value_or(0);
+    info.max_zoom = s.max_zoom.value_or(15);
+    info.encoding = s.encoding;
+    info.attribution = s.attribution;
+    return info;
+  };
+  if (options_.terrain.source != "none") {
+    auto tiles = std::make_shared<FetchedTiles>(info_of(options_.terrain), redraw);
+    heights_ = std::make_unique<terrain::EncodedHeightSource>(
+        tiles, options_.terrain.encoding.value_or(terrain::HeightEncoding::terrarium));
+  }
+  if (options_.imagery.source != "none")
+    imagery_ = std::make_unique<terrain::EncodedImagerySource>(
+        std::make_shared<FetchedTiles>(info_of(options_.imagery), redraw));
+  if (heights_ || imagery_) {
+    terrain::TileLoaderOptions loading;
+    loading.memory_budget_bytes = 256u << 20;
+    terrain_view_ = std::make_unique<scene::TerrainView>(heights_.get(), imagery_.get(), loading);
+    scene::TileLoadPolicy policy;
+    policy.wait = false;  // draw what is there; arrivals ask for another frame
+    terrain_view_->set_policy(policy);
+  }
+  dirty_ = true;
+}
 
 std::string PageViewer::open_track(const std::string& name, std::string_view bytes) {
   scene::CollectedDiagnostics diagnostics;
@@ -92,6 +128,7 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
   if (!outcome.effect) return outcome.error;
   try {
     if (*outcome.effect == OptionEffect::tracks) rebuild_tracks();
+    if (*outcome.effect == OptionEffect::terrain) open_terrain();
     if (*outcome.effect == OptionEffect::camera) {
       camera_moved_ = true;
       place_camera();
@@ -113,7 +150,8 @@ void PageViewer::rebuild_tracks() {
   build.neutral_ground_m = recorded_.lowest_or_sea_level();
   scene::CollectedDiagnostics diagnostics;
   scene::TrackSet fresh;
-  for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics)) fresh.add(std::move(t));
+  for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics))
+    fresh.add(std::move(t));
   tracks_ = std::move(fresh);
 }
 
@@ -186,8 +224,13 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
     camera_->update(seconds);
     dirty_ = true;
   }
+  since_drawn_s_ += seconds;
+  // Tiles the view wants beyond those on their way are asked for by the next frame's request:
+  // while any are missing, a frame now and then (each arrival also asks for one).
+  if (terrain_report_.progress.pending() > 0 && since_drawn_s_ > 0.25) dirty_ = true;
   if (!dirty_) return false;
   dirty_ = false;
+  since_drawn_s_ = 0.0;
 
   scene::Scene scene;
   scene.tracks = &tracks_;
@@ -195,19 +238,23 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   scene.color_range = scene::color_range(tracks_, options_.style);
   scene.sun_time_unix_s = options_.time_unix_s.value_or(scene::default_sun_time(recorded_));
   if (!options_.time_unix_s && tracks_.empty()) scene.sun_time_unix_s = noon_today(kOverviewLonDeg);
-  scene.neutral_ground_m = recorded_.lowest_or_sea_level();
+  scene.terrain = terrain_view_.get();
+  // Where the terrain has no tiles the ground lies at the lowest terrain loaded; before any has
+  // come (or without terrain, or offline), at the tracks' lowest point.
+  const bool terrain_came = terrain_view_ && terrain_report_.progress.loaded > 0;
+  scene.neutral_ground_m = terrain_came ? std::numeric_limits<double>::quiet_NaN() : recorded_.lowest_or_sea_level();
   target_.pixel_ratio = pixel_ratio;
   target_.window_width_px = static_cast<int>(width_px);
   target_.window_height_px = static_cast<int>(height_px);
   if (camera_) {
-    renderer_.draw(scene, camera_->camera(), target_);
+    terrain_report_ = renderer_.draw(scene, camera_->camera(), target_).terrain;
   } else {
     // Nothing to look at yet: the neutral ground from above a place, so the page is not black.
     scene::LookAt overview;
     overview.target = {46.6, kOverviewLonDeg, 0.0};
     overview.distance_m = 20000.0;
     scene::CameraController start(overview, lens());
-    renderer_.draw(scene, start.camera(), target_);
+    terrain_report_ = renderer_.draw(scene, start.camera(), target_).terrain;
   }
   ++frames_drawn_;
   return true;
@@ -238,6 +285,9 @@ std::string PageViewer::status_json() const {
   const auto range = scene::color_range(tracks_, options_.style);
   if (range) j["color_range"] = {range->min, range->max};
   j["warnings"] = warnings_;
+  const terrain::LoadProgress& p = terrain_report_.progress;
+  j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};
+  j["tile_failures"] = terrain_report_.failures;
   j["frames_drawn"] = frames_drawn_;
   return j.dump();
 }

@@ -16,6 +16,7 @@
 #include "render/frame_target.hpp"
 #include "render/renderer.hpp"
 #include "scene/camera_controller.hpp"
+#include "scene/terrain_view.hpp"
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
 #include "web/page_options.hpp"
@@ -54,9 +55,15 @@ class PageViewer {
 
  private:
   void rebuild_tracks();
+  void open_terrain();  // the sources of options_.terrain / .imagery, fetched by the page
   void place_camera();
   scene::Lens lens() const;
 
+  std::unique_ptr<terrain::HeightSource> heights_;
+  std::unique_ptr<terrain::ImagerySource> imagery_;
+  std::unique_ptr<scene::TerrainView> terrain_view_;  // after the sources: goes before them
+  scene::TerrainReport terrain_report_;               // of the last frame
+  double since_drawn_s_ = 0.0;
   render::Renderer renderer_;
   render::DefaultFramebufferTarget target_;
   PageOptions options_;

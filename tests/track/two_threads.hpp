@@ -7,8 +7,8 @@
 #include <functional>
 #include <thread>
 
+#include "geo/threads.hpp"
 #include "track/density.hpp"
-#include "track/threads.hpp"
 
 namespace trailray::track::test {
 
@@ -17,7 +17,7 @@ inline void two_threads(std::size_t count, const std::function<void(std::size_t)
   const auto work = [&] {
     for (std::size_t i = next++; i < count; i = next++) job(i);
   };
-  if (!kThreadsAvailable) {  // the WebAssembly page's build: the jobs in turn, same results
+  if (!geo::kThreadsAvailable) {  // the WebAssembly page's build: the jobs in turn, same results
     work();
     return;
   }

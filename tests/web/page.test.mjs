@@ -109,14 +109,15 @@ test('a bad option in the link is reported and the rest still applies', async ()
 // the track covers the same pixels (its magenta pixels overlap by 90 %) and the mean difference
 // over all pixels is small (under 6 of 255; a view moved by a few degrees gives well over 10).
 test('a link with ?track= and view options draws what `trailray render` draws', async (t) => {
-  const view = 'look-at=46.6975,7.8625,800&distance=2600&heading=20&pitch=-35&time=2024-06-18T12:00:00Z';
+  const view = 'terrain=none&imagery=none&look-at=46.6975,7.8625,800&distance=2600&heading=20&pitch=-35' +
+    '&time=2024-06-18T12:00:00Z';
   const page = await openPage(browser, `${base}?track=examples/hike.gpx&color=%23ff00ff&${view}`);
   await framesDrawn(page);
   const web = await canvasPixels(page);
   await page.close();
 
   const native = path.join(scratch, 'native.png');
-  const args = ['render', '--terrain', 'none', '--imagery', 'none', '--size', `${web.width}x${web.height}`,
+  const args = ['render', '--size', `${web.width}x${web.height}`,
     '--legend', 'off', '--color', '#ff00ff', '-o', native];
   for (const [name, value] of new URLSearchParams(view)) args.push(`--${name}`, value);
   args.push(path.join(config.sourceDir, 'examples', 'hike.gpx'));

@@ -10,7 +10,7 @@
 #include <string>
 #include <thread>
 
-#include "track/threads.hpp"
+#include "geo/threads.hpp"
 
 #include "track/io/parse_util.hpp"
 #include "track/io/readers.hpp"
@@ -317,7 +317,7 @@ std::optional<ReadResult> read_gpx_in_halves(ByteSource& source, const ReadOptio
   };
   // Without threads (the browser's build, where only tests ask for halves) one after the other.
   std::thread second_thread;
-  if (kThreadsAvailable) second_thread = std::thread(parse_second);
+  if (geo::kThreadsAvailable) second_thread = std::thread(parse_second);
 
   ReadResult result;
   result.file.format = Format::Gpx;

@@ -18,7 +18,7 @@
 #include <limits>
 #include <thread>
 
-#include "track/threads.hpp"
+#include "geo/threads.hpp"
 
 #include "track/scoring/optimise.hpp"
 
@@ -29,7 +29,7 @@ constexpr double kNone = -std::numeric_limits<double>::infinity();
 constexpr int kScanSize = 8;        // nodes this small are scanned fix by fix
 constexpr int kParallelMin = 4000;  // fixes: below this a second thread costs more than it gains
 
-bool parallel_available() { return kThreadsAvailable && std::thread::hardware_concurrency() > 1; }
+bool parallel_available() { return geo::kThreadsAvailable && std::thread::hardware_concurrency() > 1; }
 
 // out[j] = max over i on the `forward` side of j (i <= j, or i >= j) of in[i] + round(d(i, j)).
 // need[j] (optional): a value out[j] must exceed to matter (see above).

@@ -4,7 +4,7 @@
 // the page is built without, and there std::thread's constructor throws. Code that splits work
 // across threads asks here first and otherwise does it all on the calling thread.
 
-namespace trailray::track {
+namespace trailray::geo {
 
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
 inline constexpr bool kThreadsAvailable = false;
@@ -12,4 +12,4 @@ inline constexpr bool kThreadsAvailable = false;
 inline constexpr bool kThreadsAvailable = true;
 #endif
 
-}  // namespace trailray::track
+}  // namespace trailray::geo

@@ -1,0 +1,49 @@
+#pragma once
+// Tiles over the network in the page: the browser's fetch (Emscripten's emscripten_fetch), which
+// obeys CORS and the browser's HTTP cache. The page has no threads, so fetch() never waits: a
+// tile not yet here starts its request and answers "cancelled" (the tile loader asks again on a
+// later frame, terrain/tile_loader.hpp); once the bytes arrive `on_arrival` is called (the viewer
+// draws again) and the next fetch() hands them over. 404 is "no data"; other failures carry
+// the status. Requests in flight are bounded (`max_in_flight`); the others wait their turn.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include "terrain/tile_source.hpp"
+#include "terrain/url_template.hpp"
+
+struct emscripten_fetch_t;
+
+namespace trailray::web {
+
+class FetchedTiles : public terrain::EncodedTileSource {
+ public:
+  FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight = 6);
+  ~FetchedTiles() override;
+  FetchedTiles(const FetchedTiles&) = delete;
+  FetchedTiles& operator=(const FetchedTiles&) = delete;
+
+  const terrain::SourceInfo& info() const override { return info_; }
+  terrain::EncodedTile fetch(const terrain::TileId& tile, terrain::StopToken stop) override;
+
+  std::size_t in_flight() const { return in_flight_.size(); }
+
+ private:
+  static void on_success(emscripten_fetch_t* fetch);
+  static void on_error(emscripten_fetch_t* fetch);
+  void arrived(emscripten_fetch_t* fetch, bool ok);
+
+  terrain::SourceInfo info_;
+  terrain::UrlTemplate url_;
+  std::function<void()> on_arrival_;
+  int max_in_flight_;
+  std::unordered_map<terrain::TileId, emscripten_fetch_t*> in_flight_;
+  std::unordered_map<terrain::TileId, terrain::EncodedTile> arrived_;
+  // Each request's user data: the source, while it lives (cleared when it goes first).
+  std::shared_ptr<FetchedTiles*> self_;
+};
+
+}  // namespace trailray::web
