@@ -38,6 +38,7 @@ packages=(
   libavformat-dev        # `trailray video`: MP4 (faststart) and WebM containers
   libswscale-dev         # `trailray video`: sRGB RGBA frames to BT.709 YUV 4:2:0
   libavutil-dev          # `trailray video`: frames, options, errors of the libraries above
+  libmicrohttpd-dev      # `trailray serve`: HTTP with epoll, connection limits and timeouts, so slow clients stall nothing
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
   # --- the browser build (scripts/web.sh; sources of its C/C++ libraries: scripts/web-sources.sh) ---
   emscripten             # C++ to WebAssembly + WebGL2 (3.1.6, with its prebuilt libc/libc++ and node tests)

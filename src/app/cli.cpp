@@ -10,6 +10,7 @@
 #include "app/flight_command.hpp"
 #include "app/render_command.hpp"
 #include "app/score_command.hpp"
+#include "app/serve_command.hpp"
 #include "app/stats_command.hpp"
 #include "app/task_command.hpp"
 #include "app/terminal_diagnostics.hpp"
@@ -35,6 +36,7 @@ int run_cli(int argc, char** argv) {
   add_score_command(app, exit_code);
   add_flight_command(app, exit_code);
   add_task_command(app, exit_code);
+  add_serve_command(app, exit_code);
   add_bench_command(app, exit_code);
 
   try {

@@ -63,6 +63,8 @@ class EncodedImagerySource : public ImagerySource {
 
   const SourceInfo& info() const override { return tiles_->info(); }
   TileResult<ImageTile> load(const TileId& tile, StopToken stop) override;
+  // The tiles as stored, for those who pass them on undecoded (`trailray serve`).
+  EncodedTileSource& tiles() const { return *tiles_; }
 
  private:
   std::shared_ptr<EncodedTileSource> tiles_;

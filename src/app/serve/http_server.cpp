@@ -1,0 +1,250 @@
+#include "app/serve/http_server.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <microhttpd.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include "app/serve/job_pool.hpp"
+
+namespace trailray::app::serve {
+
+HttpResponse::HttpResponse(HttpResponse&& o) noexcept
+    : status(o.status),
+      content_type(std::move(o.content_type)),
+      headers(std::move(o.headers)),
+      body(std::move(o.body)),
+      file(std::exchange(o.file, -1)),
+      file_size(o.file_size) {}
+
+HttpResponse& HttpResponse::operator=(HttpResponse&& o) noexcept {
+  if (this != &o) {
+    if (file >= 0) ::close(file);
+    status = o.status;
+    content_type = std::move(o.content_type);
+    headers = std::move(o.headers);
+    body = std::move(o.body);
+    file = std::exchange(o.file, -1);
+    file_size = o.file_size;
+  }
+  return *this;
+}
+
+HttpResponse::~HttpResponse() {
+  if (file >= 0) ::close(file);
+}
+
+HttpResponse text_response(unsigned status, std::string message) {
+  HttpResponse r;
+  r.status = status;
+  r.body = std::move(message) + "\n";
+  r.headers.emplace_back("Cache-Control", "no-store");
+  return r;
+}
+
+bool is_loopback_address(std::string_view address) {
+  if (address == "localhost" || address == "::1") return true;
+  in_addr v4{};
+  const std::string text(address);
+  return inet_pton(AF_INET, text.c_str(), &v4) == 1 && (ntohl(v4.s_addr) >> 24) == 127;
+}
+
+namespace {
+
+// Per socket (MHD's socket context): the raw target of the request being read, kept by the URI
+// callback because the handler only gets the decoded one.
+struct ConnectionState {
+  std::string target;
+};
+
+// Per request (MHD's con_cls): the answer, made at once or by a worker while the connection waits
+// suspended, queued when libmicrohttpd has read the whole request (queued earlier, it would have
+// to close the connection after the answer instead of keeping it for the next request).
+struct PendingAnswer {
+  MHD_Connection* connection = nullptr;
+  HttpResponse response;
+  bool queued = false;
+};
+
+struct Listener {
+  int fd = -1;
+  bool ipv6 = false;
+};
+
+Listener open_listener(const std::string& bind, int port) {
+  const std::string address = bind == "localhost" ? "127.0.0.1" : bind;
+  sockaddr_storage storage{};
+  socklen_t length = 0;
+  Listener l;
+  if (auto* v4 = reinterpret_cast<sockaddr_in*>(&storage); inet_pton(AF_INET, address.c_str(), &v4->sin_addr) == 1) {
+    v4->sin_family = AF_INET;
+    v4->sin_port = htons(static_cast<std::uint16_t>(port));
+    length = sizeof(sockaddr_in);
+  } else if (auto* v6 = reinterpret_cast<sockaddr_in6*>(&storage);
+             inet_pton(AF_INET6, address.c_str(), &v6->sin6_addr) == 1) {
+    v6->sin6_family = AF_INET6;
+    v6->sin6_port = htons(static_cast<std::uint16_t>(port));
+    length = sizeof(sockaddr_in6);
+    l.ipv6 = true;
+  } else {
+    throw std::runtime_error(fmt::format("--bind {}: not an IPv4 or IPv6 address (e.g. 127.0.0.1, 0.0.0.0, ::)", bind));
+  }
+  const std::string where = l.ipv6 ? fmt::format("[{}]:{}", address, port) : fmt::format("{}:{}", address, port);
+  l.fd = ::socket(storage.ss_family, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+  if (l.fd < 0) throw std::runtime_error(fmt::format("{}: cannot open a socket ({})", where, std::strerror(errno)));
+  const int one = 1;
+  ::setsockopt(l.fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  if (::bind(l.fd, reinterpret_cast<sockaddr*>(&storage), length) != 0 || ::listen(l.fd, SOMAXCONN) != 0) {
+    const int error = errno;
+    ::close(l.fd);
+    throw std::runtime_error(fmt::format("{}: cannot listen ({}){}", where, std::strerror(error),
+                                         error == EADDRINUSE ? "; --port 0 picks a free port" : ""));
+  }
+  return l;
+}
+
+int bound_port(int fd) {
+  sockaddr_storage storage{};
+  socklen_t length = sizeof storage;
+  if (::getsockname(fd, reinterpret_cast<sockaddr*>(&storage), &length) != 0) return 0;
+  if (storage.ss_family == AF_INET6) return ntohs(reinterpret_cast<sockaddr_in6*>(&storage)->sin6_port);
+  return ntohs(reinterpret_cast<sockaddr_in*>(&storage)->sin_port);
+}
+
+MHD_Result queue_response(MHD_Connection* connection, HttpResponse&& r) {
+  MHD_Response* response = nullptr;
+  if (r.file >= 0) {
+    response = MHD_create_response_from_fd(r.file_size, r.file);
+    if (response != nullptr) r.file = -1;  // MHD closes it with the response
+  } else {
+    response = MHD_create_response_from_buffer(r.body.size(), r.body.data(), MHD_RESPMEM_MUST_COPY);
+  }
+  if (response == nullptr) return MHD_NO;
+  MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_TYPE, r.content_type.c_str());
+  for (const auto& [name, value] : r.headers) MHD_add_response_header(response, name.c_str(), value.c_str());
+  const MHD_Result result = MHD_queue_response(connection, r.status, response);
+  MHD_destroy_response(response);
+  return result;
+}
+
+}  // namespace
+
+struct HttpServer::Impl {
+  HttpHandler handler;
+  std::unique_ptr<JobPool> pool;
+  MHD_Daemon* daemon = nullptr;
+  int port = 0;
+
+  static void on_connection(void*, MHD_Connection*, void** socket_context, MHD_ConnectionNotificationCode code) {
+    if (code == MHD_CONNECTION_NOTIFY_STARTED) {
+      *socket_context = new ConnectionState;
+    } else {
+      delete static_cast<ConnectionState*>(*socket_context);
+      *socket_context = nullptr;
+    }
+  }
+
+  static void* on_uri(void*, const char* uri, MHD_Connection* connection) {
+    const MHD_ConnectionInfo* info = MHD_get_connection_info(connection, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+    if (info != nullptr && info->socket_context != nullptr)
+      static_cast<ConnectionState*>(info->socket_context)->target = uri;
+    return nullptr;  // the request's con_cls stays empty until the handler sets it
+  }
+
+  static void on_completed(void*, MHD_Connection*, void** con_cls, MHD_RequestTerminationCode) {
+    delete static_cast<PendingAnswer*>(*con_cls);
+    *con_cls = nullptr;
+  }
+
+  static MHD_Result on_request(void* cls, MHD_Connection* connection, const char* url, const char* method, const char*,
+                               const char*, std::size_t* upload_size, void** con_cls) {
+    Impl& self = *static_cast<Impl*>(cls);
+    if (*con_cls == nullptr) return self.first_call(connection, url, method, con_cls);
+    if (*upload_size != 0) {  // a body nobody asked for: read and dropped
+      *upload_size = 0;
+      return MHD_YES;
+    }
+    auto* pending = static_cast<PendingAnswer*>(*con_cls);
+    if (pending->queued) return MHD_NO;
+    pending->queued = true;
+    return queue_response(connection, std::move(pending->response));
+  }
+
+  MHD_Result first_call(MHD_Connection* connection, const char* url, const char* method, void** con_cls) {
+    const MHD_ConnectionInfo* info = MHD_get_connection_info(connection, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+    const auto* state = info != nullptr ? static_cast<const ConnectionState*>(info->socket_context) : nullptr;
+    const char* host = MHD_lookup_connection_value(connection, MHD_HEADER_KIND, MHD_HTTP_HEADER_HOST);
+    const HttpRequest request{method, state != nullptr ? std::string_view(state->target) : std::string_view(url),
+                              host != nullptr ? std::string_view(host) : std::string_view()};
+    HttpAnswer answer;
+    try {
+      answer = handler(request);
+    } catch (const std::exception& e) {
+      answer.now = text_response(500, std::string("internal error: ") + e.what());
+    }
+    auto* pending = new PendingAnswer;
+    pending->connection = connection;
+    *con_cls = pending;
+    if (answer.now || !answer.later) {
+      pending->response = answer.now ? std::move(*answer.now) : text_response(500, "no answer");
+      return MHD_YES;
+    }
+    // Suspended before the job can run, so its resume always follows the suspend.
+    MHD_suspend_connection(connection);
+    const bool taken = pool->submit([pending, later = std::move(answer.later)](std::stop_token stop) {
+      try {
+        pending->response = later(stop);
+      } catch (const std::exception& e) {
+        pending->response = text_response(500, std::string("internal error: ") + e.what());
+      }
+      MHD_resume_connection(pending->connection);
+    });
+    if (!taken) {
+      pending->response = text_response(503, "busy: too many answers waiting; try again");
+      pending->response.headers.emplace_back("Retry-After", "1");
+      MHD_resume_connection(connection);
+    }
+    return MHD_YES;
+  }
+};
+
+HttpServer::HttpServer(const HttpServerOptions& o, HttpHandler handler) : impl_(std::make_unique<Impl>()) {
+  impl_->handler = std::move(handler);
+  const Listener listener = open_listener(o.bind, o.port);
+  impl_->port = bound_port(listener.fd);
+  impl_->pool = std::make_unique<JobPool>(o.workers, o.max_queued);
+  unsigned flags = MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME;
+  if (listener.ipv6) flags |= MHD_USE_IPv6;
+  impl_->daemon = MHD_start_daemon(
+      flags, 0, nullptr, nullptr, &Impl::on_request, impl_.get(), MHD_OPTION_LISTEN_SOCKET, listener.fd,
+      MHD_OPTION_CONNECTION_LIMIT, o.max_connections, MHD_OPTION_PER_IP_CONNECTION_LIMIT, o.max_connections_per_address,
+      MHD_OPTION_CONNECTION_TIMEOUT, o.idle_timeout_s, MHD_OPTION_CONNECTION_MEMORY_LIMIT, o.connection_memory,
+      MHD_OPTION_NOTIFY_CONNECTION, &Impl::on_connection, nullptr, MHD_OPTION_URI_LOG_CALLBACK, &Impl::on_uri, nullptr,
+      MHD_OPTION_NOTIFY_COMPLETED, &Impl::on_completed, nullptr, MHD_OPTION_END);
+  if (impl_->daemon == nullptr) {
+    ::close(listener.fd);
+    impl_->pool->shutdown();
+    throw std::runtime_error(fmt::format("{}:{}: the HTTP server (libmicrohttpd) did not start", o.bind, o.port));
+  }
+}
+
+HttpServer::~HttpServer() {
+  // No new connections; every suspended one answered (the workers stop early) and resumed before
+  // the daemon stops: libmicrohttpd must not be stopped with a connection suspended.
+  const MHD_socket listen_fd = MHD_quiesce_daemon(impl_->daemon);
+  impl_->pool->shutdown();
+  MHD_stop_daemon(impl_->daemon);
+  if (listen_fd != MHD_INVALID_SOCKET) ::close(listen_fd);
+}
+
+int HttpServer::port() const { return impl_->port; }
+
+}  // namespace trailray::app::serve

@@ -1,0 +1,29 @@
+#pragma once
+// The target of a request as `trailray serve` reads it: the raw request-target (never the one a
+// library decoded for us, which turns %00 into an end of string and %2f into a separator) checked
+// and percent-decoded strictly, then cut into path segments. Anything a file system could read as
+// another place is refused here, before any path is built: `.` and `..` segments (also as
+// %2e%2e), empty segments (`//`), backslashes, encoded slashes, NUL and other control bytes, and
+// targets that are not a path from the root (`*`, `http://host/...`).
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace trailray::app::serve {
+
+struct RequestPath {
+  std::vector<std::string> segments;  // decoded; "/" has none
+  bool trailing_slash = false;        // "/a/b/": a folder asked for
+};
+
+struct ParsedTarget {
+  RequestPath path;
+  std::string error;  // empty: path is valid; else why the target is refused (for a 400 answer)
+  bool ok() const { return error.empty(); }
+};
+
+// The query (`?...`) and a fragment are ignored; the path before them must start with `/`.
+ParsedTarget parse_request_target(std::string_view target);
+
+}  // namespace trailray::app::serve

@@ -1,0 +1,37 @@
+#pragma once
+// /api/config.json of `trailray serve`: what the web page shows at start.
+//   {"tracks": [{"name": "flight.igc", "url": "/tracks/0/flight.igc"}, ...],
+//    "terrain": {"url": "/tiles/terrain/{z}/{x}/{y}.png", "encoding": "terrarium", "min_zoom": 0,
+//                "max_zoom": 14, "bounds": [west, south, east, north], "attribution": "..."} or null,
+//    "imagery": {"url": "/tiles/imagery/{z}/{x}/{y}", "min_zoom": 0, "max_zoom": 17, ...} or null,
+//    "options": {"color": "#ff00ff", "color-by": "vspeed", "no-ssao": true, ...}}
+// "bounds" and "attribution" only when the source says; "options" holds the style, camera, read
+// and cleaning options given on the command line, by their long names, exactly as given: a
+// string, an array of strings for an option given several times, true for a flag.
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/serve/serve_site.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::app::serve {
+
+// The options a command added between two snapshots of its option list (`before` taken first),
+// so that those the page understands are told without naming each one here.
+std::vector<const CLI::Option*> options_added_since(const CLI::App& command, std::size_t before);
+
+// The given ones among `options`, as "options" above.
+nlohmann::json given_options(const std::vector<const CLI::Option*>& options);
+
+// "terrain" or "imagery" above for a source (null without one); `max_zoom` the level served.
+nlohmann::json tile_layer(const terrain::SourceInfo* info, const std::string& url, int max_zoom, bool heights);
+
+nlohmann::json serve_config(const std::vector<ServedTrack>& tracks, nlohmann::json terrain, nlohmann::json imagery,
+                            nlohmann::json options);
+
+}  // namespace trailray::app::serve

@@ -1,0 +1,198 @@
+#include "app/serve_command.hpp"
+
+#include <sys/resource.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "app/camera_options.hpp"
+#include "app/interrupt_guard.hpp"
+#include "app/parallel_jobs.hpp"
+#include "app/scene_setup.hpp"
+#include "app/serve/http_server.hpp"
+#include "app/serve/serve_config.hpp"
+#include "app/serve/serve_site.hpp"
+#include "app/style_options.hpp"
+#include "app/terminal_diagnostics.hpp"
+#include "app/terrain_options.hpp"
+#include "app/track_arguments.hpp"
+#include "app/track_options.hpp"
+#include "app/track_reading.hpp"
+
+#ifndef TRAILRAY_WEB_ROOT
+#define TRAILRAY_WEB_ROOT "web"
+#endif
+
+namespace trailray::app {
+namespace {
+
+struct ServeArgs {
+  std::vector<std::string> tracks;
+  int port = 8123;
+  std::string bind = "127.0.0.1";
+  std::string web_root = TRAILRAY_WEB_ROOT;
+  unsigned max_connections = 256;
+  std::optional<unsigned> max_connections_per_address;
+  unsigned idle_timeout_s = 30;
+  CameraArgs camera;
+  StyleArgs style;
+  track::ReadOptions read;
+  track::AnalysisOptions analysis;
+  TerrainOptions terrain;
+  std::vector<const CLI::Option*> page_options;  // those the page takes, told in /api/config.json
+};
+
+// Each TRACK file read once at start: a file that cannot be read is an error here (file and
+// position), not a page that shows nothing.
+std::vector<serve::ServedTrack> read_served_tracks(const ServeArgs& a, TerminalDiagnostics& diagnostics) {
+  const std::vector<std::string> paths = expand_track_arguments(a.tracks);
+  for (const std::string& path : paths)
+    if (path == "-") throw CLI::ValidationError("TRACK", "- (standard input) cannot be served: give files");
+  const std::vector<TrackFileOutcome> outcomes = read_track_file_outcomes(paths, a.read, {}, &diagnostics);
+  diagnostics.progress_done();
+  std::vector<serve::ServedTrack> tracks;
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    for (const std::string& w : outcomes[i].warnings) diagnostics.warning(w);
+    if (outcomes[i].error) throw std::runtime_error(*outcomes[i].error);
+    tracks.push_back({paths[i], std::filesystem::path(paths[i]).filename().string()});
+  }
+  return tracks;
+}
+
+// Each connection holds a socket: make room for the limit when the soft limit is lower.
+void raise_file_limit(unsigned connections) {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_NOFILE, &limit) != 0) return;
+  const rlim_t wanted = static_cast<rlim_t>(connections) + 256;
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur < wanted) {
+    limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
+    setrlimit(RLIMIT_NOFILE, &limit);
+  }
+}
+
+std::string url_of(const std::string& bind, int port) {
+  const std::string host = bind == "localhost" ? "127.0.0.1" : bind;
+  return host.find(':') != std::string::npos ? fmt::format("http://[{}]:{}/", host, port)
+                                             : fmt::format("http://{}:{}/", host, port);
+}
+
+int run_serve(const ServeArgs& a) {
+  // The page's options are checked as `render` checks them, so a typo fails here, not in the page.
+  (void)parse_style(a.style);
+  (void)parse_sun_time(a.style.time);
+  (void)parse_camera_request(a.camera, true);
+  (void)parse_lens("1920x1080", a.camera.fov_deg);
+  TerminalDiagnostics diagnostics;
+
+  serve::ServeSite site;
+  site.tracks = read_served_tracks(a, diagnostics);
+  site.web_root = serve::WebRoot(a.web_root);
+  const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
+  site.heights = sources.heights.get();
+  site.imagery = sources.imagery.get();
+  if (site.heights != nullptr)
+    site.terrain_max_zoom = std::min(site.heights->info().max_zoom, a.terrain.terrain_zoom.value_or(geo::kMaxTileZoom));
+  if (site.imagery != nullptr) site.imagery_max_zoom = site.imagery->info().max_zoom;
+  site.config_json =
+      serve::serve_config(site.tracks,
+                          serve::tile_layer(site.heights ? &site.heights->info() : nullptr,
+                                            "/tiles/terrain/{z}/{x}/{y}.png", site.terrain_max_zoom, true),
+                          serve::tile_layer(site.imagery ? &site.imagery->info() : nullptr,
+                                            "/tiles/imagery/{z}/{x}/{y}", site.imagery_max_zoom, false),
+                          serve::given_options(a.page_options))
+          .dump(2);
+  const bool loopback = serve::is_loopback_address(a.bind);
+  site.loopback_hosts_only = loopback;
+  if (!site.web_root.has_index())
+    diagnostics.warning(
+        fmt::format("no web app in {} (build it with scripts/web.sh, or give --web-root DIR); / says so", a.web_root));
+
+  serve::HttpServerOptions options;
+  options.bind = a.bind;
+  options.port = a.port;
+  options.max_connections = a.max_connections;
+  // On loopback every client is this machine's user; beyond it one address may not take all.
+  options.max_connections_per_address =
+      a.max_connections_per_address.value_or(loopback ? 0u : std::max(1u, a.max_connections / 8));
+  options.idle_timeout_s = a.idle_timeout_s;
+  // Tiles from a server wait on round trips, not on the CPU.
+  const bool online = (site.heights && site.heights->info().name.starts_with("http")) ||
+                      (site.imagery && site.imagery->info().name.starts_with("http"));
+  options.workers = std::max(2u, default_job_threads()) + (online ? 8u : 0u);
+  raise_file_limit(a.max_connections);
+
+  InterruptGuard interrupt;  // before the first line: a SIGTERM right after it stops cleanly
+  serve::HttpServer server(options, [&site](const serve::HttpRequest& r) { return serve::answer_request(site, r); });
+  std::cout << "trailray: serving on " << url_of(a.bind, server.port()) << std::endl;
+  if (!loopback)
+    diagnostics.warning(
+        fmt::format("--bind {}: every machine that reaches this one can read the tracks and tiles "
+                    "served; open http://127.0.0.1:{}/ here",
+                    a.bind, server.port()));
+  while (!interrupt_requested()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  std::cerr << "trailray: stopping\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ServeArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "serve", "Serve the web app, the given tracks and the terrain and imagery as tiles over HTTP, for any browser");
+  cmd->footer(
+      "Open the printed URL in a browser: the page shows the tracks on the terrain with the style and camera\n"
+      "options given here. Paths (read-only, GET and HEAD):\n"
+      "  /                                 the web app (--web-root)\n"
+      "  /api/config.json                  tracks, tile URLs and options for the page\n"
+      "  /tracks/N/NAME                    the N-th TRACK file as it is on disk\n"
+      "  /tiles/terrain/{z}/{x}/{y}.png    heights from --terrain as Terrarium PNG\n"
+      "  /tiles/imagery/{z}/{x}/{y}        imagery tiles from --imagery (PNG, JPEG or WebP)\n"
+      "Only 127.0.0.1 by default; --bind 0.0.0.0 opens it to the network. Stops on Ctrl-C or SIGTERM.\n"
+      "Exit status: 0 stopped, 1 a file, source or the port failed, 2 a usage error.");
+  cmd->add_option("TRACK", args->tracks,
+                  "Track files (GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON), folders of them, or patterns ('flights/*.igc')")
+      ->type_name("FILE");
+  cmd->add_option("--port", args->port, "TCP port (default 8123; 0 picks a free one)")
+      ->check(CLI::Range(0, 65535))
+      ->type_name("N");
+  cmd->add_option("--bind", args->bind,
+                  "Address to listen on (default 127.0.0.1: this machine only; 0.0.0.0 or :: for every network)")
+      ->type_name("ADDR");
+  cmd->add_option("--web-root", args->web_root,
+                  std::string("Folder of the built web app (default ") + TRAILRAY_WEB_ROOT + ")")
+      ->type_name("DIR");
+  cmd->add_option("--max-connections", args->max_connections, "Connections served at once (default 256)")
+      ->check(CLI::Range(1u, 100000u))
+      ->type_name("N");
+  cmd->add_option("--max-connections-per-address", args->max_connections_per_address,
+                  "Connections one client address may hold (default: no limit on loopback, else an eighth of "
+                  "--max-connections)")
+      ->check(CLI::Range(1u, 100000u))
+      ->type_name("N");
+  cmd->add_option("--idle-timeout", args->idle_timeout_s,
+                  "Seconds a connection may stay silent before it is closed (default 30)")
+      ->check(CLI::Range(1u, 3600u))
+      ->type_name("S");
+  add_terrain_options(*cmd, args->terrain);
+  add_imagery_option(*cmd, args->terrain);
+  // Everything added from here on is an option of the page, told to it in /api/config.json.
+  const std::size_t before_page_options = cmd->get_options().size();
+  add_camera_options(*cmd, args->camera);
+  add_track_style_options(*cmd, args->style);
+  add_shading_options(*cmd, args->style);
+  add_label_options(*cmd, args->style);
+  add_read_options(*cmd, args->read);
+  add_cleaning_options(*cmd, args->analysis);
+  args->page_options = serve::options_added_since(*cmd, before_page_options);
+  cmd->callback([args, &exit_code] { exit_code = run_serve(*args); });
+}
+
+}  // namespace trailray::app
