@@ -4,14 +4,19 @@
 #include <fcntl.h>
 #include <microhttpd.h>
 #include <netinet/in.h>
+#include <poll.h>
+#include <sys/eventfd.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include "app/serve/job_pool.hpp"
 
@@ -119,6 +124,25 @@ int bound_port(int fd) {
   return ntohs(reinterpret_cast<sockaddr_in*>(&storage)->sin_port);
 }
 
+// Beyond the connection limit a client is told so at once, not left waiting in the kernel's queue
+// behind clients that may never finish: what it sent is read, the answer written (the socket's
+// buffer is empty, so it fits), and the connection closed.
+void refuse_busy(int fd) {
+  char sink[4096];
+  for (int i = 0; i < 16 && ::recv(fd, sink, sizeof sink, MSG_DONTWAIT) > 0; ++i) {
+  }
+  static const std::string kBusy = [] {
+    const std::string body = "busy: too many connections; try again\n";
+    return fmt::format(
+        "HTTP/1.1 503 Service Unavailable\r\nContent-Type: text/plain; charset=utf-8\r\nContent-Length: {}\r\n"
+        "Retry-After: 1\r\nConnection: close\r\n\r\n{}",
+        body.size(), body);
+  }();
+  [[maybe_unused]] const ssize_t sent = ::send(fd, kBusy.data(), kBusy.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
+  ::shutdown(fd, SHUT_WR);
+  ::close(fd);
+}
+
 MHD_Result queue_response(MHD_Connection* connection, HttpResponse&& r) {
   MHD_Response* response = nullptr;
   if (r.file >= 0) {
@@ -142,13 +166,53 @@ struct HttpServer::Impl {
   std::unique_ptr<JobPool> pool;
   MHD_Daemon* daemon = nullptr;
   int port = 0;
+  // Connections are accepted here, not by libmicrohttpd, which at its limit stops accepting and
+  // leaves new clients waiting without a word.
+  int listen_fd = -1;
+  int wake_fd = -1;  // an eventfd: written to stop the acceptor
+  std::thread acceptor;
+  unsigned max_connections = 0;
+  std::atomic<unsigned> open_connections{0};
 
-  static void on_connection(void*, MHD_Connection*, void** socket_context, MHD_ConnectionNotificationCode code) {
+  static void on_connection(void* cls, MHD_Connection*, void** socket_context, MHD_ConnectionNotificationCode code) {
     if (code == MHD_CONNECTION_NOTIFY_STARTED) {
       *socket_context = new ConnectionState;
     } else {
       delete static_cast<ConnectionState*>(*socket_context);
       *socket_context = nullptr;
+      static_cast<Impl*>(cls)->open_connections.fetch_sub(1);
+    }
+  }
+
+  void accept_loop() {
+    pollfd fds[2] = {{listen_fd, POLLIN, 0}, {wake_fd, POLLIN, 0}};
+    for (;;) {
+      if (::poll(fds, 2, -1) < 0) {
+        if (errno == EINTR) continue;
+        return;
+      }
+      if (fds[1].revents != 0) return;
+      for (;;) {
+        sockaddr_storage address{};
+        socklen_t length = sizeof address;
+        const int fd =
+            ::accept4(listen_fd, reinterpret_cast<sockaddr*>(&address), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (fd < 0) {
+          if (errno == EINTR || errno == ECONNABORTED) continue;
+          // Out of descriptors: the pending clients wait until a connection closes.
+          if (errno == EMFILE || errno == ENFILE) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+          break;
+        }
+        if (open_connections.load() >= max_connections) {
+          refuse_busy(fd);
+          continue;
+        }
+        open_connections.fetch_add(1);
+        // On failure (the per-address limit) libmicrohttpd has closed the socket without telling
+        // on_connection.
+        if (MHD_add_connection(daemon, fd, reinterpret_cast<sockaddr*>(&address), length) != MHD_YES)
+          open_connections.fetch_sub(1);
+      }
     }
   }
 
@@ -217,32 +281,44 @@ struct HttpServer::Impl {
 };
 
 HttpServer::HttpServer(const HttpServerOptions& o, HttpHandler handler) : impl_(std::make_unique<Impl>()) {
-  impl_->handler = std::move(handler);
+  Impl& self = *impl_;
+  self.handler = std::move(handler);
+  self.max_connections = o.max_connections;
   const Listener listener = open_listener(o.bind, o.port);
-  impl_->port = bound_port(listener.fd);
-  impl_->pool = std::make_unique<JobPool>(o.workers, o.max_queued);
-  unsigned flags = MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME;
-  if (listener.ipv6) flags |= MHD_USE_IPv6;
-  impl_->daemon = MHD_start_daemon(
-      flags, 0, nullptr, nullptr, &Impl::on_request, impl_.get(), MHD_OPTION_LISTEN_SOCKET, listener.fd,
-      MHD_OPTION_CONNECTION_LIMIT, o.max_connections, MHD_OPTION_PER_IP_CONNECTION_LIMIT, o.max_connections_per_address,
-      MHD_OPTION_CONNECTION_TIMEOUT, o.idle_timeout_s, MHD_OPTION_CONNECTION_MEMORY_LIMIT, o.connection_memory,
-      MHD_OPTION_NOTIFY_CONNECTION, &Impl::on_connection, nullptr, MHD_OPTION_URI_LOG_CALLBACK, &Impl::on_uri, nullptr,
-      MHD_OPTION_NOTIFY_COMPLETED, &Impl::on_completed, nullptr, MHD_OPTION_END);
-  if (impl_->daemon == nullptr) {
+  self.listen_fd = listener.fd;
+  self.port = bound_port(listener.fd);
+  self.wake_fd = ::eventfd(0, EFD_CLOEXEC);
+  self.pool = std::make_unique<JobPool>(o.workers, o.max_queued);
+  // libmicrohttpd's own limit is never reached (the acceptor refuses first); it is there as a bound.
+  const unsigned flags =
+      MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME | MHD_USE_NO_LISTEN_SOCKET;
+  self.daemon = MHD_start_daemon(flags, 0, nullptr, nullptr, &Impl::on_request, &self, MHD_OPTION_CONNECTION_LIMIT,
+                                 o.max_connections + 64, MHD_OPTION_PER_IP_CONNECTION_LIMIT,
+                                 o.max_connections_per_address, MHD_OPTION_CONNECTION_TIMEOUT, o.idle_timeout_s,
+                                 MHD_OPTION_CONNECTION_MEMORY_LIMIT, o.connection_memory, MHD_OPTION_NOTIFY_CONNECTION,
+                                 &Impl::on_connection, &self, MHD_OPTION_URI_LOG_CALLBACK, &Impl::on_uri, nullptr,
+                                 MHD_OPTION_NOTIFY_COMPLETED, &Impl::on_completed, nullptr, MHD_OPTION_END);
+  if (self.daemon == nullptr || self.wake_fd < 0) {
     ::close(listener.fd);
-    impl_->pool->shutdown();
+    if (self.wake_fd >= 0) ::close(self.wake_fd);
+    if (self.daemon != nullptr) MHD_stop_daemon(self.daemon);
+    self.pool->shutdown();
     throw std::runtime_error(fmt::format("{}:{}: the HTTP server (libmicrohttpd) did not start", o.bind, o.port));
   }
+  self.acceptor = std::thread([&self] { self.accept_loop(); });
 }
 
 HttpServer::~HttpServer() {
-  // No new connections; every suspended one answered (the workers stop early) and resumed before
-  // the daemon stops: libmicrohttpd must not be stopped with a connection suspended.
-  const MHD_socket listen_fd = MHD_quiesce_daemon(impl_->daemon);
-  impl_->pool->shutdown();
-  MHD_stop_daemon(impl_->daemon);
-  if (listen_fd != MHD_INVALID_SOCKET) ::close(listen_fd);
+  Impl& self = *impl_;
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const ssize_t written = ::write(self.wake_fd, &one, sizeof one);
+  self.acceptor.join();
+  ::close(self.listen_fd);
+  ::close(self.wake_fd);
+  // Every suspended connection answered (the workers stop early) and resumed before the daemon
+  // stops: libmicrohttpd must not be stopped with a connection suspended.
+  self.pool->shutdown();
+  MHD_stop_daemon(self.daemon);
 }
 
 int HttpServer::port() const { return impl_->port; }
