@@ -274,6 +274,9 @@ TEST(ServeCli, BeyondTheConnectionLimitClientsAreToldSoAndServedLater) {
   std::vector<http::Socket> held;
   for (int i = 0; i < 8; ++i) {
     held.emplace_back(serve.port());
+    // A whole request first: its answer proves the server counts this connection.
+    held.back().send_all("GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n");
+    ASSERT_EQ(http::read_response(held.back(), 20).status, 200) << i;
     held.back().send_all("GET / HT");
   }
   // The holders are in (each gets its answer once it finishes its request: checked with the first).

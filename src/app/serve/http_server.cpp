@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -171,12 +172,16 @@ struct HttpServer::Impl {
   int listen_fd = -1;
   int wake_fd = -1;  // an eventfd: written to stop the acceptor
   std::thread acceptor;
-  unsigned max_connections = 0;
-  std::atomic<unsigned> open_connections{0};
+  // Counted by libmicrohttpd's own notices (started, closed), which always come in pairs; a
+  // connection handed over counts once the network thread has taken it, so a burst may pass the
+  // limit by a few, up to libmicrohttpd's own cap.
+  int max_connections = 0;
+  std::atomic<int> open_connections{0};
 
   static void on_connection(void* cls, MHD_Connection*, void** socket_context, MHD_ConnectionNotificationCode code) {
     if (code == MHD_CONNECTION_NOTIFY_STARTED) {
       *socket_context = new ConnectionState;
+      static_cast<Impl*>(cls)->open_connections.fetch_add(1);
     } else {
       delete static_cast<ConnectionState*>(*socket_context);
       *socket_context = nullptr;
@@ -207,11 +212,8 @@ struct HttpServer::Impl {
           refuse_busy(fd);
           continue;
         }
-        open_connections.fetch_add(1);
-        // On failure (the per-address limit) libmicrohttpd has closed the socket without telling
-        // on_connection.
-        if (MHD_add_connection(daemon, fd, reinterpret_cast<sockaddr*>(&address), length) != MHD_YES)
-          open_connections.fetch_sub(1);
+        // libmicrohttpd closes the socket itself when it refuses it (the per-address limit).
+        MHD_add_connection(daemon, fd, reinterpret_cast<sockaddr*>(&address), length);
       }
     }
   }
@@ -283,7 +285,7 @@ struct HttpServer::Impl {
 HttpServer::HttpServer(const HttpServerOptions& o, HttpHandler handler) : impl_(std::make_unique<Impl>()) {
   Impl& self = *impl_;
   self.handler = std::move(handler);
-  self.max_connections = o.max_connections;
+  self.max_connections = static_cast<int>(std::min(o.max_connections, 1u << 30));
   const Listener listener = open_listener(o.bind, o.port);
   self.listen_fd = listener.fd;
   self.port = bound_port(listener.fd);
