@@ -131,11 +131,14 @@ int run_serve(const ServeArgs& a) {
   InterruptGuard interrupt;  // before the first line: a SIGTERM right after it stops cleanly
   serve::HttpServer server(options, [&site](const serve::HttpRequest& r) { return serve::answer_request(site, r); });
   std::cout << "trailray: serving on " << url_of(a.bind, server.port()) << std::endl;
-  if (!loopback)
-    diagnostics.warning(
-        fmt::format("--bind {}: every machine that reaches this one can read the tracks and tiles "
-                    "served; open http://127.0.0.1:{}/ here",
-                    a.bind, server.port()));
+  if (!loopback) {
+    const bool everywhere = a.bind == "0.0.0.0" || a.bind == "::";
+    diagnostics.warning(fmt::format(
+        "listening on {} (--bind): every machine that reaches this one can read the tracks "
+        "and tiles served{}",
+        a.bind,
+        everywhere ? fmt::format("; on this machine open http://127.0.0.1:{}/", server.port()) : std::string()));
+  }
   while (!interrupt_requested()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   std::cerr << "trailray: stopping\n";
   return 0;
