@@ -291,7 +291,7 @@ HttpServer::HttpServer(const HttpServerOptions& o, HttpHandler handler) : impl_(
   self.port = bound_port(listener.fd);
   self.wake_fd = ::eventfd(0, EFD_CLOEXEC);
   self.pool = std::make_unique<JobPool>(o.workers, o.max_queued);
-  // libmicrohttpd's own limit is never reached (the acceptor refuses first); it is there as a bound.
+  // libmicrohttpd's own limit is a hard cap above ours (the acceptor refuses first; a burst may pass ours by a few).
   const unsigned flags =
       MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME | MHD_USE_NO_LISTEN_SOCKET;
   self.daemon = MHD_start_daemon(flags, 0, nullptr, nullptr, &Impl::on_request, &self, MHD_OPTION_CONNECTION_LIMIT,
