@@ -433,6 +433,16 @@ TEST(ServeCli, ImageryTilesGoOutAsStored) {
   EXPECT_EQ(r.body, std::string(jpeg.begin(), jpeg.end()));
   EXPECT_EQ(r.header("access-control-allow-origin"), "*");
   EXPECT_EQ(http::get(serve.port(), "/tiles/imagery/3/4/3").status, 404);
+  // Tiles (answered by a worker) keep the connection for the next request, as a page loading
+  // hundreds of them needs.
+  http::Socket s(serve.port());
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(s.send_all("GET /tiles/imagery/3/4/2 HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")) << i;
+    const auto again = http::read_response(s, 30);
+    EXPECT_EQ(again.status, 200) << i;
+    EXPECT_EQ(again.body.size(), jpeg.size()) << i;
+    EXPECT_NE(again.header("connection"), "close") << i;
+  }
   EXPECT_EQ(serve.stop(), 0);
 }
 

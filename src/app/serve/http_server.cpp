@@ -72,11 +72,13 @@ struct ConnectionState {
 };
 
 // Per request (MHD's con_cls): the answer, made at once or by a worker while the connection waits
-// suspended, queued when libmicrohttpd has read the whole request (queued earlier, it would have
-// to close the connection after the answer instead of keeping it for the next request).
+// suspended. Work is handed over and answers queued only once libmicrohttpd has read the whole
+// request: earlier, it would close the connection after the answer instead of keeping it for the
+// next request.
 struct PendingAnswer {
   MHD_Connection* connection = nullptr;
   HttpResponse response;
+  std::function<HttpResponse(std::stop_token)> later;  // to run, when the answer takes time
   bool queued = false;
 };
 
@@ -239,6 +241,7 @@ struct HttpServer::Impl {
       return MHD_YES;
     }
     auto* pending = static_cast<PendingAnswer*>(*con_cls);
+    if (pending->later) return self.hand_over(*pending);
     if (pending->queued) return MHD_NO;
     pending->queued = true;
     return queue_response(connection, std::move(pending->response));
@@ -259,24 +262,33 @@ struct HttpServer::Impl {
     auto* pending = new PendingAnswer;
     pending->connection = connection;
     *con_cls = pending;
-    if (answer.now || !answer.later) {
+    if (answer.now || !answer.later)
       pending->response = answer.now ? std::move(*answer.now) : text_response(500, "no answer");
-      return MHD_YES;
-    }
+    else
+      pending->later = std::move(answer.later);
+    return MHD_YES;
+  }
+
+  // The work to a worker while the connection waits, suspended; the worker's resume brings the
+  // connection back here with the answer ready.
+  MHD_Result hand_over(PendingAnswer& pending) {
+    auto later = std::move(pending.later);
+    pending.later = nullptr;
     // Suspended before the job can run, so its resume always follows the suspend.
-    MHD_suspend_connection(connection);
-    const bool taken = pool->submit([pending, later = std::move(answer.later)](std::stop_token stop) {
+    MHD_suspend_connection(pending.connection);
+    PendingAnswer* p = &pending;
+    const bool taken = pool->submit([p, later = std::move(later)](std::stop_token stop) {
       try {
-        pending->response = later(stop);
+        p->response = later(stop);
       } catch (const std::exception& e) {
-        pending->response = text_response(500, std::string("internal error: ") + e.what());
+        p->response = text_response(500, std::string("internal error: ") + e.what());
       }
-      MHD_resume_connection(pending->connection);
+      MHD_resume_connection(p->connection);
     });
     if (!taken) {
-      pending->response = text_response(503, "busy: too many answers waiting; try again");
-      pending->response.headers.emplace_back("Retry-After", "1");
-      MHD_resume_connection(connection);
+      pending.response = text_response(503, "busy: too many answers waiting; try again");
+      pending.response.headers.emplace_back("Retry-After", "1");
+      MHD_resume_connection(pending.connection);
     }
     return MHD_YES;
   }
