@@ -74,7 +74,8 @@ std::optional<terrain::TileId> parse_tile_segments(const std::vector<std::string
   return geo::make_tile_id(static_cast<int>(*z), *x, *y);
 }
 
-HttpResponse terrain_tile_response(terrain::HeightSource& source, const terrain::TileId& tile, std::stop_token stop) {
+HttpResponse terrain_tile_response(terrain::HeightSource& source, const terrain::TileId& tile,
+                                   terrain::StopToken stop) {
   terrain::TileResult<terrain::HeightTile> result = source.load(tile, stop);
   if (result.status != terrain::TileStatus::ok) return no_tile(result.status, result.error, tile);
   if (!result.tile.has_data()) return no_tile(terrain::TileStatus::no_data, {}, tile);
@@ -85,7 +86,8 @@ HttpResponse terrain_tile_response(terrain::HeightSource& source, const terrain:
   }
 }
 
-HttpResponse imagery_tile_response(terrain::ImagerySource& source, const terrain::TileId& tile, std::stop_token stop) {
+HttpResponse imagery_tile_response(terrain::ImagerySource& source, const terrain::TileId& tile,
+                                   terrain::StopToken stop) {
   // Tiles stored as images go out as they are: no decoding, no loss, the source's format.
   if (auto* encoded = dynamic_cast<terrain::EncodedImagerySource*>(&source)) {
     terrain::EncodedTile fetched = encoded->tiles().fetch(tile, stop);

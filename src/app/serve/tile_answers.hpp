@@ -6,11 +6,11 @@
 // source stores tiles, a PNG where it warps a raster.
 
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <vector>
 
 #include "app/serve/http_server.hpp"
+#include "terrain/stop_token.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::app::serve {
@@ -23,7 +23,8 @@ std::optional<terrain::TileId> parse_tile_segments(const std::vector<std::string
 
 // 200 with the tile, 404 where the source has no data there, 502 when the source failed, 503
 // when cancelled (the server stopping). Thread-safe (the sources are).
-HttpResponse terrain_tile_response(terrain::HeightSource& source, const terrain::TileId& tile, std::stop_token stop);
-HttpResponse imagery_tile_response(terrain::ImagerySource& source, const terrain::TileId& tile, std::stop_token stop);
+HttpResponse terrain_tile_response(terrain::HeightSource& source, const terrain::TileId& tile, terrain::StopToken stop);
+HttpResponse imagery_tile_response(terrain::ImagerySource& source, const terrain::TileId& tile,
+                                   terrain::StopToken stop);
 
 }  // namespace trailray::app::serve
