@@ -74,11 +74,9 @@ HttpResponse file_response(const std::string& path, std::string_view content_typ
 }
 
 HttpResponse static_file_response(const std::filesystem::path& file) {
-  HttpResponse r = file_response(file.string(), content_type_for(file));
-  // Cross-origin isolation, so the web app may use threads (SharedArrayBuffer) if built with them.
-  r.headers.emplace_back("Cross-Origin-Opener-Policy", "same-origin");
-  r.headers.emplace_back("Cross-Origin-Embedder-Policy", "require-corp");
-  return r;
+  // No cross-origin isolation (COOP/COEP): the page has no threads to gain from it, and it would
+  // block tiles from servers that send no CORP header.
+  return file_response(file.string(), content_type_for(file));
 }
 
 // `/` where the web root has no index.html: the server still works (tracks, tiles); the page says

@@ -135,6 +135,18 @@ async function servedConfig() {
   }
 }
 
+// serve's terrain and imagery (its own tiles: relative URLs, made absolute), or none.
+function applyServedLayers(served) {
+  for (const layer of ['terrain', 'imagery']) {
+    if (!(layer in served)) continue;
+    const source = served[layer];
+    if (!source) { setOption(layer, 'none'); continue; }
+    setOption(layer, new URL(source.url, location.href).href.replace(/%7B/g, '{').replace(/%7D/g, '}'));
+    if (layer === 'terrain' && source.encoding) setOption('terrain-encoding', source.encoding);
+    if (source.max_zoom !== undefined) setOption(`${layer}-max-zoom`, String(source.max_zoom));
+  }
+}
+
 function installGestures(canvas) {
   const pointers = new Map();
   const ratio = () => window.devicePixelRatio || 1;
@@ -262,6 +274,7 @@ async function start() {
   const served = await servedConfig();
   const query = optionsOf(location.search.slice(1));
   const fragment = optionsOf(location.hash.slice(1));
+  if (served) applyServedLayers(served);
   if (served && served.options) for (const [name, value] of Object.entries(served.options)) setOption(name, String(value));
   for (const [name, value] of query.options) setOption(name, value);
   for (const url of (served && served.tracks ? served.tracks.map((t) => t.url) : [])) await openUrl(url);

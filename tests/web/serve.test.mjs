@@ -1,0 +1,93 @@
+// `trailray serve` and the page together in headless Chromium: the served page shows the given
+// track with the given options, on the given DEM's terrain (Terrarium tiles the page fetches).
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+
+import { canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor } from './harness.mjs';
+
+const MAGENTA = [255, 0, 255];
+let browser;
+const servers = [];
+
+before(async () => { browser = await launchBrowser(); });
+after(async () => {
+  await browser?.close();
+  for (const s of servers) s.kill('SIGTERM');
+});
+
+// Starts `trailray serve ARGS` on a free port; resolves to its address once it listens.
+function serve(args) {
+  const child = spawn(config.nativeBinary, ['serve', '--port', '0', '--web-root', config.webRoot, ...args]);
+  servers.push(child);
+  return new Promise((resolve, reject) => {
+    let output = '';
+    child.stdout.on('data', (d) => {
+      output += d;
+      const m = output.match(/serving on (http:\/\/\S+)/);
+      if (m) resolve(m[1]);
+    });
+    child.stderr.on('data', (d) => { output += d; });
+    child.on('exit', (code) => reject(new Error(`serve exited with ${code}: ${output}`)));
+  });
+}
+
+async function status(page) {
+  return JSON.parse(await page.evaluate(() => window.trailray.api.status()));
+}
+
+test('serve --terrain none --color shows the given track in that colour', async () => {
+  const url = await serve(['--terrain', 'none', '--imagery', 'none', '--color', '#ff00ff',
+    path.join(config.sourceDir, 'examples', 'paraglider_flight.igc')]);
+  const page = await openPage(browser, url);
+  await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).tracks.length === 1, { timeout: 60000 });
+  await framesDrawn(page);
+  const s = await status(page);
+  assert.equal(s.tracks[0].color, '#ff00ff');
+  assert.equal(s.tiles.wanted, 0, 'no terrain was asked for');
+  assert.ok(pixelsOfColor(await canvasPixels(page), MAGENTA, 60).count > 400);
+  assert.deepEqual(await page.evaluate(() => window.trailray.messages), []);
+  await page.close();
+});
+
+test('serve --terrain DEM: the page draws the served terrain under the track', async (t) => {
+  const dem = path.join(config.sharedData || '', 'dem', 'interlaken_dhm25_wgs84.tif');
+  const flight = path.join(config.sharedData || '', 'igc', 'goigc_0100_interlaken.igc');
+  if (!config.sharedData || !fs.existsSync(dem) || !fs.existsSync(flight)) {
+    t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`);
+    return;
+  }
+  const url = await serve(['--terrain', dem, '--imagery', 'none', '--color', '#ff00ff', flight]);
+  const started = Date.now();
+  const page = await openPage(browser, url);
+  // Every tile the view wants has come (from the DEM, or "no data" beyond it), none failed.
+  await page.waitForFunction(() => {
+    const s = JSON.parse(window.trailray.api.status());
+    return s.tracks.length === 1 && s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
+  }, { timeout: 180000, polling: 500 });
+  const before = (await status(page)).frames_drawn;
+  await framesDrawn(page, before + 1).catch(() => {});
+  const s = await status(page);
+  t.diagnostic(`tiles: ${JSON.stringify(s.tiles)} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  assert.deepEqual(s.tile_failures, []);
+  assert.ok(s.tiles.loaded > 0, 'height tiles from the DEM');
+  const image = await canvasPixels(page);
+  assert.ok(pixelsOfColor(image, MAGENTA, 60).count > 200, 'the track');
+  // The same view without the terrain (the fragment's option comes last) is another picture: the
+  // relief, lit and shadowed, instead of the flat neutral ground.
+  const view = await page.evaluate(() => window.trailray.api.viewState());
+  const flat = await openPage(browser, `${url}#${view}&terrain=none`);
+  await framesDrawn(flat);
+  const neutral = await canvasPixels(flat);
+  await flat.close();
+  let difference = 0;
+  for (let i = 0; i < image.data.length; i += 4)
+    for (let c = 0; c < 3; ++c) difference += Math.abs(image.data[i + c] - neutral.data[i + c]);
+  const mean = difference / (image.data.length / 4) / 3;
+  t.diagnostic(`terrain vs neutral ground: mean difference ${mean.toFixed(1)} of 255`);
+  assert.ok(mean > 8, `the terrain changes the picture (mean difference ${mean.toFixed(1)})`);
+  if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: process.env.TRAILRAY_SCREENSHOT });
+  await page.close();
+});
