@@ -12,6 +12,8 @@ import {
 } from './harness.mjs';
 
 const MAGENTA = [255, 0, 255];
+// No network in the tests: no online terrain (its default), so every picture is the same anywhere.
+const OFFLINE = 'terrain=none&imagery=none';
 let browser, server, base;
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'trailray-page-'));
 
@@ -43,7 +45,7 @@ async function pick(page, file) {
 }
 
 test('the page starts and draws the neutral ground', async () => {
-  const page = await openPage(browser, base);
+  const page = await openPage(browser, `${base}?${OFFLINE}`);
   await framesDrawn(page);
   const image = await canvasPixels(page);
   assert.equal(image.width, 640);
@@ -56,7 +58,7 @@ test('the page starts and draws the neutral ground', async () => {
 });
 
 test('a GPX given through the file input draws its track in its colour, framed', async () => {
-  const page = await openPage(browser, `${base}?color=%23ff00ff`);
+  const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff`);
   await framesDrawn(page);
   assert.equal(pixelsOfColor(await canvasPixels(page), MAGENTA).count, 0, 'no track before one is opened');
   await pick(page, path.join(config.sourceDir, 'examples', 'hike.gpx'));
@@ -76,7 +78,7 @@ test('a GPX given through the file input draws its track in its colour, framed',
 });
 
 test('a broken file shows its error (file and line) and what is open stays', async () => {
-  const page = await openPage(browser, `${base}?color=%23ff00ff&track=examples/hike.gpx`);
+  const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff&track=examples/hike.gpx`);
   await framesDrawn(page);
   const before = pixelsOfColor(await canvasPixels(page), MAGENTA, 60).count;
   assert.ok(before > 400);
@@ -94,7 +96,7 @@ test('a broken file shows its error (file and line) and what is open stays', asy
 });
 
 test('a bad option in the link is reported and the rest still applies', async () => {
-  const page = await openPage(browser, `${base}?width=huge&color=%23ff00ff&track=examples/hike.gpx`);
+  const page = await openPage(browser, `${base}?${OFFLINE}&width=huge&color=%23ff00ff&track=examples/hike.gpx`);
   await framesDrawn(page);
   const messages = await page.evaluate(() => window.trailray.messages);
   assert.equal(messages.length, 1);
@@ -158,7 +160,7 @@ async function pngPixels(file) {
 }
 
 test('the view kept in the address reproduces the picture after a drag', async () => {
-  const page = await openPage(browser, `${base}?track=examples/hike.gpx&color=%23ff00ff`);
+  const page = await openPage(browser, `${base}?${OFFLINE}&track=examples/hike.gpx&color=%23ff00ff`);
   await framesDrawn(page);
   const first = await status(page);
   await page.mouse.move(320, 200);

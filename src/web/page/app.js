@@ -234,6 +234,19 @@ function installButtons(canvas) {
   });
 }
 
+// "terrain: 12 of 25 tiles" while tiles are on their way; the first failure once, as a note.
+let tileFailureShown = false;
+function showTileProgress() {
+  const status = JSON.parse(page.api.status());
+  const t = status.tiles;
+  const pending = t.wanted - t.loaded - t.no_data - t.failed;
+  setProgress(pending > 0 ? `terrain: ${t.loaded + t.no_data} of ${t.wanted} tiles` : '');
+  if (status.tile_failures.length && !tileFailureShown) {
+    tileFailureShown = true;
+    showMessage(`${status.tile_failures[0]} (and ${status.tile_failures.length - 1} more)`, 'note');
+  }
+}
+
 function runFrames(canvas) {
   let last = performance.now();
   let lastState = '';
@@ -246,6 +259,7 @@ function runFrames(canvas) {
     last = now;
     if (drew < 0) showMessage(`drawing failed: ${page.api.error()}`);
     if (drew > 0) {
+      showTileProgress();
       const state = page.api.viewState();
       if (state !== lastState) {
         lastState = state;
