@@ -10,6 +10,7 @@
 
 #include "app/serve/request_path.hpp"
 #include "app/serve/tile_answers.hpp"
+#include "track/io/text_output.hpp"
 
 namespace trailray::app::serve {
 namespace {
@@ -17,32 +18,6 @@ namespace {
 // Files that may change while the server runs (the app rebuilt, a track rewritten): the browser
 // asks again each time.
 constexpr const char* kRevalidate = "no-cache";
-
-std::string html_escape(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string percent_encode_segment(std::string_view text) {
   std::string out;
@@ -84,8 +59,8 @@ HttpResponse static_file_response(const std::filesystem::path& file) {
 HttpResponse not_built_page(const ServeSite& site) {
   std::string tracks;
   for (std::size_t i = 0; i < site.tracks.size(); ++i)
-    tracks += fmt::format("<li><a href=\"{}\">{}</a></li>\n", html_escape(track_url(i, site.tracks[i].name)),
-                          html_escape(site.tracks[i].name));
+    tracks += fmt::format("<li><a href=\"{}\">{}</a></li>\n", track::xml_escape(track_url(i, site.tracks[i].name)),
+                          track::xml_escape(site.tracks[i].name));
   HttpResponse r;
   r.content_type = "text/html; charset=utf-8";
   r.headers.emplace_back("Cache-Control", kRevalidate);
@@ -97,7 +72,7 @@ HttpResponse not_built_page(const ServeSite& site) {
       "<code>--web-root DIR</code>, then reload this page.</p>\n"
       "<p>Configuration: <a href=\"/api/config.json\">/api/config.json</a></p>\n"
       "<h2>Tracks</h2>\n{}\n</body></html>\n",
-      html_escape(site.web_root.path().string()),
+      track::xml_escape(site.web_root.path().string()),
       tracks.empty() ? std::string("<p>None given.</p>") : "<ul>\n" + tracks + "</ul>");
   return r;
 }
