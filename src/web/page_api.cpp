@@ -89,6 +89,11 @@ EMSCRIPTEN_KEEPALIVE int trailray_frame(int width, int height, double pixel_rati
 }
 EMSCRIPTEN_KEEPALIVE const char* trailray_error() { return frame_error.c_str(); }
 
+// The legend's pixels (RGBA, straight alpha; its place and size are in trailray_status()).
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* trailray_legend_pixels() {
+  return viewer && !viewer->legend().rgba.empty() ? viewer->legend().rgba.data() : nullptr;
+}
+
 EMSCRIPTEN_KEEPALIVE const char* trailray_view_state() { return kept(viewer ? viewer->view_state() : ""); }
 EMSCRIPTEN_KEEPALIVE const char* trailray_status() { return kept(viewer ? viewer->status_json() : "{}"); }
 

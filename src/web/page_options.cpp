@@ -82,6 +82,12 @@ OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::stri
     tracks.width = *width.value;
     return {OptionEffect::style, {}};
   }
+  if (name == "legend") {
+    const auto on = flag(value);
+    if (!on) return fail(name, value, "on or off");
+    o.style.legend = *on;
+    return {OptionEffect::style, {}};
+  }
   if (name == "curtain" || name == "no-shadows" || name == "no-ssao" || name == "no-atmosphere") {
     const auto on = flag(value);
     if (!on) return fail(name, value, "1 or 0 (true/false, on/off)");
@@ -148,7 +154,7 @@ OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::stri
   }
   return {std::nullopt, fmt::format("{}: not an option of the page (color, color-by, colormap, width, curtain, "
                                     "look-at, distance, heading, pitch, camera, time, no-shadows, no-ssao, "
-                                    "no-atmosphere, terrain, terrain-encoding, terrain-max-zoom, imagery, "
+                                    "no-atmosphere, legend, terrain, terrain-encoding, terrain-max-zoom, imagery, "
                                     "imagery-max-zoom)",
                                     name)};
 }

@@ -140,6 +140,7 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
   }
   std::erase_if(given_options_, [&](const auto& kv) { return kv.first == name; });
   if (*outcome.effect != OptionEffect::camera) given_options_.emplace_back(name, value);
+  if (*outcome.effect == OptionEffect::style) legend_dirty_ = true;
   dirty_ = true;
   return {};
 }
@@ -153,6 +154,7 @@ void PageViewer::rebuild_tracks() {
   for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics))
     fresh.add(std::move(t));
   tracks_ = std::move(fresh);
+  legend_dirty_ = true;
 }
 
 scene::Lens PageViewer::lens() const {
@@ -218,7 +220,7 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
       camera_->set_image_size(width_px, height_px);
     else if (!tracks_.empty() || options_.look_at || options_.camera)
       place_camera();
-    dirty_ = true;
+    dirty_ = legend_dirty_ = true;
   }
   if (camera_ && camera_->animating()) {
     camera_->update(seconds);
@@ -256,6 +258,11 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
     scene::CameraController start(overview, lens());
     terrain_report_ = renderer_.draw(scene, start.camera(), target_).terrain;
   }
+  if (legend_dirty_) {
+    legend_ = page_legend(scene, width_px, height_px);
+    legend_dirty_ = false;
+    ++legend_version_;
+  }
   ++frames_drawn_;
   return true;
 }
@@ -289,6 +296,11 @@ std::string PageViewer::status_json() const {
   j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};
   j["tile_failures"] = terrain_report_.failures;
   j["frames_drawn"] = frames_drawn_;
+  j["legend"] = {{"x", legend_.rect.x},
+                 {"y", legend_.rect.y},
+                 {"width", legend_.rgba.empty() ? 0 : legend_.rect.width},
+                 {"height", legend_.rgba.empty() ? 0 : legend_.rect.height},
+                 {"version", legend_version_}};
   return j.dump();
 }
 

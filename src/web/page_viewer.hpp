@@ -19,6 +19,7 @@
 #include "scene/terrain_view.hpp"
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
+#include "web/page_legend.hpp"
 #include "web/page_options.hpp"
 
 namespace trailray::web {
@@ -52,6 +53,9 @@ class PageViewer {
   // What the page shows beside the picture, as JSON: the tracks (name, points, colour), the colour
   // scale, the warnings of the last file opened, the frames drawn.
   std::string status_json() const;
+  // The legend drawn with the last frame (its place is in status_json, with a version that
+  // changes whenever it does).
+  const PageLegend& legend() const { return legend_; }
 
  private:
   void rebuild_tracks();
@@ -77,6 +81,9 @@ class PageViewer {
   std::uint32_t width_px_ = 0, height_px_ = 0;
   std::vector<std::string> warnings_;
   std::uint64_t frames_drawn_ = 0;
+  PageLegend legend_;
+  bool legend_dirty_ = true;  // tracks, style or size changed
+  std::uint64_t legend_version_ = 0;
   int files_opened_ = 0;
 };
 

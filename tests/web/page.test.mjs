@@ -183,3 +183,50 @@ test('the view kept in the address reproduces the picture after a drag', async (
   assert.ok(Math.hypot(a.x - b.x, a.y - b.y) < 1.5, `centroids ${a.x},${a.y} and ${b.x},${b.y}`);
   assert.ok(Math.abs(a.count - b.count) < 0.05 * a.count);
 });
+
+// The picture with the legend over it, as the screenshot button makes it.
+async function composedPixels(page) {
+  const { width, height, data } = await page.evaluate(() => {
+    const canvas = document.getElementById('canvas');
+    const picture = document.createElement('canvas');
+    picture.width = canvas.width;
+    picture.height = canvas.height;
+    const context = picture.getContext('2d');
+    context.drawImage(canvas, 0, 0);
+    const legend = window.trailray.legend;
+    if (legend && legend.width) context.drawImage(document.getElementById('legend'), legend.x, legend.y);
+    return { width: picture.width, height: picture.height, data: Array.from(context.getImageData(0, 0, picture.width, picture.height).data) };
+  });
+  return { width, height, data: Uint8Array.from(data) };
+}
+
+test('the legend over the page is the one `trailray render` draws into its picture', async (t) => {
+  const view = 'terrain=none&imagery=none&look-at=46.70,7.85,1500&distance=9000&heading=0&pitch=-40' +
+    '&time=2024-07-14T12:00:00Z&color-by=vspeed';
+  const page = await openPage(browser, `${base}?track=examples/paraglider_flight.igc&${view}`);
+  await framesDrawn(page);
+  const legend = (await status(page)).legend;
+  assert.ok(legend.width > 50 && legend.height > 20, `a colour bar (${JSON.stringify(legend)})`);
+  const web = await composedPixels(page);
+  await page.close();
+
+  const native = path.join(scratch, 'legend.png');
+  const args = ['render', '--size', `${web.width}x${web.height}`, '-o', native];
+  for (const [name, value] of new URLSearchParams(view)) args.push(`--${name}`, value);
+  args.push(path.join(config.sourceDir, 'examples', 'paraglider_flight.igc'));
+  const rendered = await run(config.nativeBinary, args);
+  assert.equal(rendered.code, 0, rendered.output);
+  const reference = await pngPixels(native);
+  // Within the legend's panel: the same panel, text and colour bar (mean difference of a few
+  // levels for the picture showing through its translucent back; a missing legend gives ~100).
+  let difference = 0;
+  for (let y = legend.y; y < legend.y + legend.height; ++y)
+    for (let x = legend.x; x < legend.x + legend.width; ++x)
+      for (let c = 0; c < 3; ++c) {
+        const i = (y * web.width + x) * 4 + c;
+        difference += Math.abs(web.data[i] - reference.data[i]);
+      }
+  const mean = difference / (legend.width * legend.height * 3);
+  t.diagnostic(`legend panel: mean difference ${mean.toFixed(2)} of 255`);
+  assert.ok(mean < 6, `mean difference in the legend ${mean.toFixed(2)}`);
+});

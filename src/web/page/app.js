@@ -52,6 +52,7 @@ function bindApi() {
     error: c('trailray_error', 'string', []),
     viewState: c('trailray_view_state', 'string', []),
     status: c('trailray_status', 'string', []),
+    legendPixels: c('trailray_legend_pixels', 'number', []),
   };
 }
 
@@ -224,7 +225,14 @@ function installButtons(canvas) {
     }
   });
   document.getElementById('screenshot').addEventListener('click', () => {
-    canvas.toBlob((blob) => {
+    // The picture with the legend over it, at the canvas's size.
+    const picture = document.createElement('canvas');
+    picture.width = canvas.width;
+    picture.height = canvas.height;
+    const context = picture.getContext('2d');
+    context.drawImage(canvas, 0, 0);
+    if (page.legend && page.legend.width) context.drawImage(document.getElementById('legend'), page.legend.x, page.legend.y);
+    picture.toBlob((blob) => {
       const link = document.createElement('a');
       link.href = URL.createObjectURL(blob);
       link.download = 'trailray.png';
@@ -247,6 +255,25 @@ function showTileProgress() {
   }
 }
 
+// The legend the viewer drew with the frame, in its canvas over the picture (redrawn only when
+// its version changes).
+let legendVersion = -1;
+function showLegend(ratio) {
+  const { legend } = JSON.parse(page.api.status());
+  if (legend.version === legendVersion) return;
+  legendVersion = legend.version;
+  const overlay = document.getElementById('legend');
+  const pointer = page.api.legendPixels();
+  if (!legend.width || !pointer) { overlay.width = overlay.height = 0; return; }
+  overlay.width = legend.width;
+  overlay.height = legend.height;
+  Object.assign(overlay.style, { left: `${legend.x / ratio}px`, top: `${legend.y / ratio}px`,
+    width: `${legend.width / ratio}px`, height: `${legend.height / ratio}px` });
+  const bytes = Module.HEAPU8.slice(pointer, pointer + legend.width * legend.height * 4);
+  overlay.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(bytes.buffer), legend.width), 0, 0);
+  page.legend = legend;
+}
+
 function runFrames(canvas) {
   let last = performance.now();
   let lastState = '';
@@ -260,6 +287,7 @@ function runFrames(canvas) {
     if (drew < 0) showMessage(`drawing failed: ${page.api.error()}`);
     if (drew > 0) {
       showTileProgress();
+      showLegend(ratio);
       const state = page.api.viewState();
       if (state !== lastState) {
         lastState = state;
