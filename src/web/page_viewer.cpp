@@ -237,7 +237,10 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   scene::Scene scene;
   scene.tracks = &tracks_;
   scene.style = options_.style;
-  scene.color_range = scene::color_range(tracks_, options_.style);
+  // The robust range sorts every value: only when the tracks or the style changed (what also
+  // changes the legend), not for each camera move.
+  if (legend_dirty_) color_range_ = scene::color_range(tracks_, options_.style);
+  scene.color_range = color_range_;
   scene.sun_time_unix_s = options_.time_unix_s.value_or(scene::default_sun_time(recorded_));
   if (!options_.time_unix_s && tracks_.empty()) scene.sun_time_unix_s = noon_today(kOverviewLonDeg);
   scene.terrain = terrain_view_.get();
@@ -289,8 +292,7 @@ std::string PageViewer::status_json() const {
                            {"points", t.point_count()},
                            {"color", fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b))}});
   }
-  const auto range = scene::color_range(tracks_, options_.style);
-  if (range) j["color_range"] = {range->min, range->max};
+  if (color_range_) j["color_range"] = {color_range_->min, color_range_->max};
   j["warnings"] = warnings_;
   const terrain::LoadProgress& p = terrain_report_.progress;
   j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};

@@ -82,7 +82,8 @@ class PageViewer {
   std::vector<std::string> warnings_;
   std::uint64_t frames_drawn_ = 0;
   PageLegend legend_;
-  bool legend_dirty_ = true;  // tracks, style or size changed
+  bool legend_dirty_ = true;                      // tracks, style or size changed
+  std::optional<track::ValueRange> color_range_;  // of the last frame
   std::uint64_t legend_version_ = 0;
   int files_opened_ = 0;
 };

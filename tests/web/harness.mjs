@@ -76,18 +76,21 @@ export async function framesDrawn(page, count = 1) {
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
-// The canvas's pixels (RGBA, top-down) and size.
-export async function canvasPixels(page) {
-  const { width, height, data } = await page.evaluate(() => {
+// The canvas's pixels (RGBA, top-down) and size; `withLegend`: with the legend over them, as the
+// screenshot button makes the picture.
+export async function canvasPixels(page, { withLegend = false } = {}) {
+  const { width, height, data } = await page.evaluate((legendToo) => {
     const canvas = document.getElementById('canvas');
     const copy = document.createElement('canvas');
     copy.width = canvas.width;
     copy.height = canvas.height;
     const context = copy.getContext('2d');
     context.drawImage(canvas, 0, 0);
+    const legend = window.trailray.legend;
+    if (legendToo && legend && legend.width) context.drawImage(document.getElementById('legend'), legend.x, legend.y);
     const image = context.getImageData(0, 0, copy.width, copy.height);
     return { width: copy.width, height: copy.height, data: Array.from(image.data) };
-  });
+  }, withLegend);
   return { width, height, data: Uint8Array.from(data) };
 }
 

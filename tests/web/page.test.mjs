@@ -184,22 +184,6 @@ test('the view kept in the address reproduces the picture after a drag', async (
   assert.ok(Math.abs(a.count - b.count) < 0.05 * a.count);
 });
 
-// The picture with the legend over it, as the screenshot button makes it.
-async function composedPixels(page) {
-  const { width, height, data } = await page.evaluate(() => {
-    const canvas = document.getElementById('canvas');
-    const picture = document.createElement('canvas');
-    picture.width = canvas.width;
-    picture.height = canvas.height;
-    const context = picture.getContext('2d');
-    context.drawImage(canvas, 0, 0);
-    const legend = window.trailray.legend;
-    if (legend && legend.width) context.drawImage(document.getElementById('legend'), legend.x, legend.y);
-    return { width: picture.width, height: picture.height, data: Array.from(context.getImageData(0, 0, picture.width, picture.height).data) };
-  });
-  return { width, height, data: Uint8Array.from(data) };
-}
-
 test('the legend over the page is the one `trailray render` draws into its picture', async (t) => {
   const view = 'terrain=none&imagery=none&look-at=46.70,7.85,1500&distance=9000&heading=0&pitch=-40' +
     '&time=2024-07-14T12:00:00Z&color-by=vspeed';
@@ -207,7 +191,7 @@ test('the legend over the page is the one `trailray render` draws into its pictu
   await framesDrawn(page);
   const legend = (await status(page)).legend;
   assert.ok(legend.width > 50 && legend.height > 20, `a colour bar (${JSON.stringify(legend)})`);
-  const web = await composedPixels(page);
+  const web = await canvasPixels(page, { withLegend: true });
   await page.close();
 
   const native = path.join(scratch, 'legend.png');

@@ -244,8 +244,7 @@ function installButtons(canvas) {
 
 // "terrain: 12 of 25 tiles" while tiles are on their way; the first failure once, as a note.
 let tileFailureShown = false;
-function showTileProgress() {
-  const status = JSON.parse(page.api.status());
+function showTileProgress(status) {
   const t = status.tiles;
   const pending = t.wanted - t.loaded - t.no_data - t.failed;
   setProgress(pending > 0 ? `terrain: ${t.loaded + t.no_data} of ${t.wanted} tiles` : '');
@@ -258,8 +257,7 @@ function showTileProgress() {
 // The legend the viewer drew with the frame, in its canvas over the picture (redrawn only when
 // its version changes).
 let legendVersion = -1;
-function showLegend(ratio) {
-  const { legend } = JSON.parse(page.api.status());
+function showLegend(legend, ratio) {
   if (legend.version === legendVersion) return;
   legendVersion = legend.version;
   const overlay = document.getElementById('legend');
@@ -286,8 +284,9 @@ function runFrames(canvas) {
     last = now;
     if (drew < 0) showMessage(`drawing failed: ${page.api.error()}`);
     if (drew > 0) {
-      showTileProgress();
-      showLegend(ratio);
+      const status = JSON.parse(page.api.status());
+      showTileProgress(status);
+      showLegend(status.legend, ratio);
       const state = page.api.viewState();
       if (state !== lastState) {
         lastState = state;
