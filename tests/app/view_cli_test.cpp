@@ -13,10 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "app/view/panel_layout.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/legend.hpp"
 #include "scene/text_raster.hpp"
 #include "track_cli_support.hpp"
+#include "ui/panel_layout.hpp"
 #include "xvfb_command.hpp"
 
 namespace trailray::test {

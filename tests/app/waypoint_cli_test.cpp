@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "app/view/waypoint_view.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/style.hpp"
 #include "track_cli_support.hpp"
+#include "ui/waypoint_view.hpp"
 #include "xvfb_command.hpp"
 
 namespace trailray::test {
@@ -188,8 +189,8 @@ TEST(WaypointCli, TheViewerHoversAPinAndFliesToIt) {
                         << "\nprint-hover\nselect-waypoint 0\nprint-camera\n";
   std::string view = env.prefix();
   view.replace(view.find(" render "), 8, " view ");
-  const auto r =
-      run_command(xvfb_command_prefix(env.file("Xauthority")) + view + shell_quote(gpx) + kPlain + " --script " + shell_quote(script) + " 2>&1");
+  const auto r = run_command(xvfb_command_prefix(env.file("Xauthority")) + view + shell_quote(gpx) + kPlain +
+                             " --script " + shell_quote(script) + " 2>&1");
   ASSERT_EQ(r.status, 0) << r.out;
   // On the chart of its track (40 m from it), near the line's middle point (30 of 60).
   std::smatch m;

@@ -1,4 +1,5 @@
 #include "app/view/film_panel.hpp"
+#include "app/view/film_settings.hpp"
 
 #include <fmt/format.h>
 #include <imgui.h>

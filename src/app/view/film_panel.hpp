@@ -4,9 +4,10 @@
 // film records, shows its progress (frames done of all, frames per second, time left) and a
 // Cancel button. The recording itself is the shell's (viewer_film.cpp).
 
-#include "app/view/panel_layout.hpp"
-#include "app/view/viewer_model.hpp"
-#include "app/view/viewer_panels.hpp"
+#include "app/view/viewer_ui.hpp"
+#include "ui/panel_layout.hpp"
+#include "ui/viewer_model.hpp"
+#include "ui/viewer_panels.hpp"
 
 namespace trailray::app::view {
 

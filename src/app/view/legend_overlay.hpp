@@ -11,14 +11,13 @@
 namespace trailray::app::view {
 
 // Call between ImGui::NewFrame and ImGui::Render.
-void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
-                         const std::vector<scene::TrackKeyEntry>& key);
+void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend, const std::vector<scene::TrackKeyEntry>& key);
 
 // Where draw_legend_overlay first puts its window in a display of that size (the bottom-left
 // corner), from the same layout, in whole pixels covering it; empty when it shows nothing. Needs
 // an ImGui context, not a frame (the atlas is built if it is not yet).
 scene::PixelRect legend_overlay_rect(const std::optional<scene::ColorLegend>& legend,
-                                      const std::vector<scene::TrackKeyEntry>& key, float display_width,
-                                      float display_height);
+                                     const std::vector<scene::TrackKeyEntry>& key, float display_width,
+                                     float display_height);
 
 }  // namespace trailray::app::view

@@ -2,8 +2,9 @@
 // The frame profiler's averages as the viewer's profiler panel lists them (viewer_model.hpp's
 // ProfilerTable: plain data, so the panel and its tests need no GL context).
 
-#include "app/view/viewer_model.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "render/gl/frame_profiler.hpp"
+#include "ui/viewer_model.hpp"
 
 namespace trailray::app::view {
 

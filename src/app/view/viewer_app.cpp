@@ -11,14 +11,17 @@
 #include <numeric>
 
 #include "app/interrupt_guard.hpp"
+#include "app/parallel_jobs.hpp"
+#include "app/view/film_panel.hpp"
 #include "app/view/legend_overlay.hpp"
 #include "app/view/profiler_table.hpp"
-#include "app/view/viewer_overlay.hpp"
-#include "app/view/viewer_panels.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "app/view/waypoint_view.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/legend_content.hpp"
 #include "scene/waypoint_building.hpp"
+#include "ui/viewer_overlay.hpp"
+#include "ui/viewer_panels.hpp"
+#include "ui/waypoint_view.hpp"
 
 namespace trailray::app::view {
 namespace {
@@ -72,6 +75,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.settings.style = o.style;
   model_.settings.sun_time_unix = sun_time(o.sun_time_unix, recorded_);
   model_.analysis = o.analysis;
+  model_.parallel_for = parallel_for();
   model_.settings.show_waypoints = !o.no_waypoints;
   model_.settings.moving_frame = o.moving_frame;
   // The tracks first: the legend they call for is kept clear by the first view's framing.
@@ -126,7 +130,7 @@ void ViewerApp::adopt(LoadedViewerTracks loaded) {
   const scene::TrackStyle& style = model_.settings.style.tracks;
   if (recount && track::counts_neighbours(style.color_by)) {
     try {
-      apply_color_metric(model_.tracks, style.color_by, style.neighbour_radius_m);
+      apply_color_metric(model_.tracks, style.color_by, style.neighbour_radius_m, model_.parallel_for);
     } catch (const std::exception& e) {
       model_.errors.emplace_back(e.what());
     }
@@ -191,7 +195,8 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   }
   controller_.update(wall_s);
   follow_replay();
-  const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s) : PanelActions{};
+  static const FilmPanel film{film_button, film_window};
+  const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s, &film) : PanelActions{};
   if (actions.record_film) {
     try {
       start_film();

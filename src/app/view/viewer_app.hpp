@@ -43,7 +43,7 @@ struct ViewerOptions {
   std::string task_file;                    // --task: a task drawn
   std::vector<std::string> airspace_files;  // --airspace: OpenAir files drawn as volumes
   bool thermals = false;                    // --thermals (resolved: on by default with --color-by phase)
-  bool moving_frame = true;  // false (--no-moving-frame): the full frame while the camera moves too
+  bool moving_frame = true;                 // false (--no-moving-frame): the full frame while the camera moves too
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when

@@ -5,10 +5,11 @@
 #include <limits>
 
 #include "app/view/legend_overlay.hpp"
-#include "app/view/panel_layout.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "app/view/waypoint_view.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/legend_content.hpp"
+#include "ui/panel_layout.hpp"
+#include "ui/waypoint_view.hpp"
 
 namespace trailray::app::view {
 

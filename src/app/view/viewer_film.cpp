@@ -6,6 +6,7 @@
 
 #include "app/video/film_plan.hpp"
 #include "app/video_options.hpp"
+#include "app/view/film_settings.hpp"
 #include "app/view/viewer_shell.hpp"
 
 namespace trailray::app::view {

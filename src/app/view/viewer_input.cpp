@@ -7,9 +7,10 @@
 #include <ctime>
 #include <limits>
 
-#include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "app/view/waypoint_view.hpp"
+#include "app/view/viewer_ui.hpp"
+#include "ui/track_picking.hpp"
+#include "ui/waypoint_view.hpp"
 
 namespace trailray::app::view {
 

@@ -5,11 +5,12 @@
 #include <cstdio>
 
 #include "app/interrupt_guard.hpp"
-#include "app/view/tooltip.hpp"
-#include "app/view/track_picking.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "app/view/waypoint_view.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/volume_shapes.hpp"
+#include "ui/tooltip.hpp"
+#include "ui/track_picking.hpp"
+#include "ui/waypoint_view.hpp"
 
 namespace trailray::app::view {
 

@@ -17,7 +17,7 @@
 #include "app/view/track_loading.hpp"
 #include "app/view/view_script.hpp"
 #include "app/view/viewer_app.hpp"
-#include "app/view/viewer_model.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "render/gl/frame_profiler.hpp"
 #include "render/platform/imgui_layer.hpp"
 #include "render/platform/window.hpp"
@@ -28,6 +28,7 @@
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
 #include "scene/volume_shapes.hpp"
+#include "ui/viewer_model.hpp"
 
 namespace trailray::app::view {
 

@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "app/view/profile_chart.hpp"
-#include "app/view/tooltip.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/track_files.hpp"
 #include "test_support.hpp"
+#include "ui/profile_chart.hpp"
+#include "ui/tooltip.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {

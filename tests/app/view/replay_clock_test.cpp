@@ -6,7 +6,8 @@
 
 #include <glm/glm.hpp>
 
-#include "app/view/replay.hpp"
+#include "app/view/viewer_ui.hpp"
+#include "ui/replay.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {

@@ -8,11 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "app/view/tooltip.hpp"
-#include "app/view/viewer_model.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
 #include "track/summary.hpp"
+#include "ui/tooltip.hpp"
+#include "ui/viewer_model.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {

@@ -13,12 +13,13 @@
 #include <vector>
 
 #include "app/view/legend_overlay.hpp"
-#include "app/view/profile_chart.hpp"
 #include "app/view/profiler_table.hpp"
-#include "app/view/viewer_model.hpp"
-#include "app/view/viewer_panels.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "render/gl/frame_profiler.hpp"
 #include "scene/colormap.hpp"
+#include "ui/profile_chart.hpp"
+#include "ui/viewer_model.hpp"
+#include "ui/viewer_panels.hpp"
 #include "viewer_test_tracks.hpp"
 
 namespace trailray::app::view {

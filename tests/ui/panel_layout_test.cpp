@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "app/view/panel_layout.hpp"
+#include "ui/panel_layout.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 constexpr float kMenu = 19.0f;
@@ -67,4 +67,4 @@ TEST(PanelLayout, SmallWindowsOpenTheSecondaryPanelsCollapsed) {
 }
 
 }  // namespace
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

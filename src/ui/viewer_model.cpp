@@ -1,13 +1,12 @@
 // The viewer model's shared computations: the cached colour scale, colouring every track.
 #include <cmath>
 
-#include "app/parallel_jobs.hpp"
-#include "app/view/viewer_model.hpp"
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
 #include "scene/track_density.hpp"
+#include "ui/viewer_model.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 const std::optional<track::ValueRange>& ColorRangeCache::get(const scene::TrackSet& tracks, const scene::Style& style) {
   Key key{style.tracks.color_by, std::nullopt, {}};
@@ -24,16 +23,16 @@ const std::optional<track::ValueRange>& ColorRangeCache::get(const scene::TrackS
   return value_;
 }
 
-void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric, std::optional<double> neighbour_radius_m) {
+void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric, std::optional<double> neighbour_radius_m,
+                        const track::ParallelFor& parallel) {
   for (scene::Track& t : tracks.tracks()) scene::apply_color_metric(t, metric);
   if (track::counts_neighbours(metric))
     scene::apply_neighbour_counts(tracks.tracks(), metric,
-                                  neighbour_radius_m.value_or(scene::default_neighbour_radius_m(metric)),
-                                  parallel_for());
+                                  neighbour_radius_m.value_or(scene::default_neighbour_radius_m(metric)), parallel);
 }
 
 void apply_curtain(scene::TrackSet& tracks, bool on) {
   for (scene::Track& t : tracks.tracks()) scene::apply_curtain(t, on);
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -11,17 +11,18 @@
 #include <utility>
 #include <vector>
 
-#include "app/view/film_settings.hpp"
-#include "app/view/replay.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
 #include "scene/volumes.hpp"
 #include "scene/waypoints.hpp"
 #include "track/color_values.hpp"
+#include "track/density.hpp"
 #include "track/statistics.hpp"
 #include "track/summary.hpp"
+#include "ui/film_state.hpp"
+#include "ui/replay.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 struct HoverState {
   int track = -1;           // -1: no track point hovered
@@ -96,8 +97,11 @@ struct ViewerModel {
   ChartSelection selection;
   int selected_track = -1;  // the statistics panel's track (-1: none)
   ReplayClock clock;
-  FilmSettings film;       // the replay panel's "record film"
+  FilmSettings film;       // the replay panel's "record film" (the desktop's; the page has none)
   FilmStatus film_status;  // the recording (the shell updates it)
+  // How the panels' recolouring spreads density and thermal counts over the cores (the desktop:
+  // a pool; empty: on the calling thread, as in the page).
+  track::ParallelFor parallel_for;
   ProfilerTable profile;
   std::vector<std::string> errors;  // files that could not be read etc., shown in a window
   track::AnalysisOptions analysis;  // how the tracks were cleaned and measured (range statistics)
@@ -115,11 +119,12 @@ struct ViewerModel {
 };
 
 // Every track's colour values for `metric` (none for solid); density and thermals counted over
-// all the tracks within `neighbour_radius_m` (nullopt: the metric's default), on every core.
+// all the tracks within `neighbour_radius_m` (nullopt: the metric's default), spread by `parallel`.
 // Throws std::invalid_argument for agl on a track without ground heights.
 void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric,
-                        std::optional<double> neighbour_radius_m = std::nullopt);
+                        std::optional<double> neighbour_radius_m = std::nullopt,
+                        const track::ParallelFor& parallel = {});
 // Curtains on or off for every track.
 void apply_curtain(scene::TrackSet& tracks, bool on);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "app/view/track_picking.hpp"
 #include "scene/camera.hpp"
+#include "ui/track_picking.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 // A camera 2 km above Interlaken looking north and down 20 degrees, 640x360.
@@ -116,4 +116,4 @@ TEST(TrackPicking, APointOnTheGroundIsNotHiddenByIt) {
 }
 
 }  // namespace
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

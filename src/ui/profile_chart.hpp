@@ -16,9 +16,9 @@
 
 #include <glm/glm.hpp>
 
-#include "app/view/viewer_model.hpp"
+#include "ui/viewer_model.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 // A point's position along the chart's x axis: cumulative distance in metres, or seconds since
 // the track's first timestamp (NaN for a point without a time).
@@ -72,4 +72,4 @@ std::vector<std::string> statistics_lines(const track::Statistics& statistics);
 // and the selection's statistics.
 void draw_profile_chart(ViewerModel& model);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -8,11 +8,11 @@
 #include <optional>
 #include <string>
 
-#include "app/view/viewer_model.hpp"
 #include "scene/camera.hpp"
 #include "terrain/tile_loader.hpp"
+#include "ui/viewer_model.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 struct OverlayState {
   const ViewerModel& model;
@@ -26,4 +26,4 @@ struct OverlayState {
 // Call between ImGui::NewFrame and ImGui::Render. True when the compass was clicked.
 bool draw_overlays(const OverlayState& state);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

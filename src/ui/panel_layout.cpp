@@ -1,8 +1,8 @@
-#include "app/view/panel_layout.hpp"
+#include "ui/panel_layout.hpp"
 
 #include <algorithm>
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 constexpr float kMargin = 10.0f;
@@ -39,4 +39,4 @@ PanelLayout default_panel_layout(float width, float height, float menu_height) {
   return l;
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

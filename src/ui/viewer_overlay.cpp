@@ -1,4 +1,4 @@
-#include "app/view/viewer_overlay.hpp"
+#include "ui/viewer_overlay.hpp"
 
 #include <fmt/format.h>
 #include <imgui.h>
@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "app/view/tooltip.hpp"
-#include "app/view/track_picking.hpp"
-#include "app/view/waypoint_view.hpp"
 #include "scene/volume_shapes.hpp"
+#include "ui/tooltip.hpp"
+#include "ui/track_picking.hpp"
+#include "ui/waypoint_view.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 ImU32 colour_of(const glm::vec3& srgb, float alpha = 1.0f) {
@@ -175,4 +175,4 @@ bool draw_overlays(const OverlayState& s) {
   return compass(s.heading_deg);
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

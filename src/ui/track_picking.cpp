@@ -1,10 +1,10 @@
-#include "app/view/track_picking.hpp"
+#include "ui/track_picking.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 std::optional<glm::dvec2> screen_position(const scene::Camera& camera, const glm::dvec3& ecef) {
   const auto p = camera.project(ecef);
@@ -48,4 +48,4 @@ HoverState pick_track_point(const scene::TrackSet& tracks, const scene::Camera& 
   return best;
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -7,7 +7,7 @@
 
 #include "scene/track_set.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 // "time", "altitude", "height above ground", "speed", "vertical speed", "heart rate", one line
 // each as "label: value unit" (km/h, m/s, m, bpm; the time as "YYYY-MM-DD hh:mm:ss UTC"); a
@@ -18,4 +18,4 @@ std::vector<std::string> tooltip_lines(const scene::Track& track, std::size_t po
 // A time as the tooltips show it: "YYYY-MM-DD hh:mm:ss UTC" ("—" when it cannot be shown).
 std::string tooltip_time_text(double unix_s);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <ctime>
 
-#include "app/view/tooltip.hpp"
+#include "ui/tooltip.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 constexpr const char* kMissingText = "\u2014";  // em dash
@@ -48,4 +48,4 @@ std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
   return lines;
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

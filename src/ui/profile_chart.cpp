@@ -1,5 +1,5 @@
 // The profile chart: pure mapping between points and pixels, and its ImGui drawing.
-#include "app/view/profile_chart.hpp"
+#include "ui/profile_chart.hpp"
 
 #include <fmt/format.h>
 #include <imgui.h>
@@ -8,12 +8,12 @@
 #include <cmath>
 #include <limits>
 
-#include "app/view/flight_panel.hpp"
-#include "app/view/waypoint_view.hpp"
 #include "scene/colormap.hpp"
 #include "scene/track_building.hpp"
+#include "ui/flight_panel.hpp"
+#include "ui/waypoint_view.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 constexpr const char* kMissingText = "\u2014";
@@ -394,4 +394,4 @@ void draw_profile_chart(ViewerModel& model) {
   draw_selection_statistics(model, ti);
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

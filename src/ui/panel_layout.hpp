@@ -4,7 +4,7 @@
 // of the 3D view stays free. On a small window the secondary panels open collapsed (title bar
 // only). Only the first placement: the user moves and resizes them from there.
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 inline constexpr float kPanelTitleBarHeight = 22.0f;  // a collapsed panel, with the default font
 
@@ -25,4 +25,4 @@ struct PanelLayout {
 // `menu_height`: the main menu bar's height at the top (0 without it).
 PanelLayout default_panel_layout(float width, float height, float menu_height);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -1,4 +1,4 @@
-#include "app/view/flight_panel.hpp"
+#include "ui/flight_panel.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 #include "scene/thermal_markers.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 namespace fl = track::flight;
@@ -136,4 +136,4 @@ void shade_thermals(ImDrawList* draw, const scene::Track& track, const std::func
     }
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -1,16 +1,16 @@
 // The viewer's flight analysis text and the chart's thermal bands, on a simulated flight with
 // known thermals (tests/track/flight/synthetic_flight.hpp), built as the viewer builds tracks.
-#include "app/view/flight_panel.hpp"
+#include "ui/flight_panel.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "../../track/flight/synthetic_flight.hpp"
+#include "../track/flight/synthetic_flight.hpp"
 #include "scene/track_building.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 using track::test::SyntheticFlight;
@@ -88,4 +88,4 @@ TEST(FlightPanel, ThermalBandsSpanTheThermalsPoints) {
 }
 
 }  // namespace
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

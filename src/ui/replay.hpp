@@ -9,7 +9,7 @@
 #include "scene/replay_position.hpp"
 #include "scene/track_set.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 enum class FollowMode { off, chase, orbit };
 
@@ -50,4 +50,4 @@ class ReplayClock {
   bool playing_ = false;
 };
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

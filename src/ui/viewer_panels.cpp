@@ -13,16 +13,15 @@
 #include <string_view>
 #include <unordered_set>
 
-#include "app/view/film_panel.hpp"
-#include "app/view/flight_panel.hpp"
-#include "app/view/panel_layout.hpp"
-#include "app/view/profile_chart.hpp"
-#include "app/view/viewer_panels.hpp"
 #include "scene/volume_shapes.hpp"
 #include "scene/waypoint_building.hpp"
 #include "track/density.hpp"
+#include "ui/flight_panel.hpp"
+#include "ui/panel_layout.hpp"
+#include "ui/profile_chart.hpp"
+#include "ui/viewer_panels.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 // A combo over a list of names; returns true when the choice changed.
@@ -59,7 +58,7 @@ void colour_scale_controls(ViewerModel& model) {
     const track::ColorMetric previous = s.color_by;
     const auto next = static_cast<track::ColorMetric>(metric);
     try {
-      apply_color_metric(model.tracks, next, s.neighbour_radius_m);
+      apply_color_metric(model.tracks, next, s.neighbour_radius_m, model.parallel_for);
       s.color_by = next;
       s.range.reset();  // another metric's range means nothing for this one
       // Into or out of a metric with a map of its own (phase, density, thermals): it means little
@@ -68,7 +67,7 @@ void colour_scale_controls(ViewerModel& model) {
         s.colormap = scene::default_colormap(s.color_by);
     } catch (const std::exception& e) {
       model.errors.push_back(fmt::format("colour by {}: {}", track::color_metric_name(next), e.what()));
-      apply_color_metric(model.tracks, previous, s.neighbour_radius_m);
+      apply_color_metric(model.tracks, previous, s.neighbour_radius_m, model.parallel_for);
     }
   }
   if (s.color_by == track::ColorMetric::solid) return;
@@ -79,7 +78,7 @@ void colour_scale_controls(ViewerModel& model) {
     if (ImGui::IsItemDeactivatedAfterEdit() && radius >= track::kMinNeighbourRadiusM &&
         radius <= track::kMaxNeighbourRadiusM) {
       s.neighbour_radius_m = static_cast<double>(radius);
-      apply_color_metric(model.tracks, s.color_by, s.neighbour_radius_m);
+      apply_color_metric(model.tracks, s.color_by, s.neighbour_radius_m, model.parallel_for);
     }
   }
   static constexpr const char* kColormaps[] = {"turbo", "viridis", "magma", "cividis", "diverging", "warm"};
@@ -394,7 +393,7 @@ std::string clock_text(double unix_s) {
   return fmt::format("{:02}:{:02}:{:02} UTC", day_s / 3600, (day_s / 60) % 60, day_s % 60);
 }
 
-void replay_window(ViewerModel& model) {
+void replay_window(ViewerModel& model, const FilmPanel* film) {
   place(layout_now(model).replay);
   if (!ImGui::Begin("Replay", &model.settings.show_replay)) {
     ImGui::End();
@@ -409,8 +408,10 @@ void replay_window(ViewerModel& model) {
   if (ImGui::Button(clock.playing() ? "pause" : "play")) clock.toggle();
   ImGui::SameLine();
   ImGui::TextUnformatted(clock_text(clock.time()).c_str());
-  ImGui::SameLine();
-  film_button(model);
+  if (film) {
+    ImGui::SameLine();
+    film->button(model);
+  }
   float speed = static_cast<float>(clock.speed());
   if (ImGui::SliderFloat("speed", &speed, static_cast<float>(ReplayClock::kMinSpeed),
                          static_cast<float>(ReplayClock::kMaxSpeed), "%.0fx", ImGuiSliderFlags_Logarithmic))
@@ -446,14 +447,14 @@ void keep_clock_span(ViewerModel& model) {
   if (!current || current->start != span->start || current->end != span->end) model.clock.set_span(*span);
 }
 
-void window_menu(ViewerSettings& s) {
+void window_menu(ViewerSettings& s, bool film) {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("Windows")) {
     ImGui::MenuItem("Tracks", nullptr, &s.show_tracks);
     ImGui::MenuItem("Statistics", nullptr, &s.show_statistics);
     ImGui::MenuItem("Profile", nullptr, &s.show_chart);
     ImGui::MenuItem("Replay", nullptr, &s.show_replay);
-    ImGui::MenuItem("Record film", nullptr, &s.show_film);
+    if (film) ImGui::MenuItem("Record film", nullptr, &s.show_film);
     ImGui::MenuItem("Shading", nullptr, &s.show_shading);
     ImGui::MenuItem("Occlusion", nullptr, &s.show_occlusion);
     ImGui::MenuItem("Profiler", nullptr, &s.show_profiler);
@@ -464,22 +465,22 @@ void window_menu(ViewerSettings& s) {
 
 }  // namespace
 
-PanelActions draw_panels(ViewerModel& model, double wall_seconds) {
+PanelActions draw_panels(ViewerModel& model, double wall_seconds, const FilmPanel* film) {
   PanelActions actions;
   keep_clock_span(model);
   model.clock.advance(wall_seconds);
   ViewerSettings& s = model.settings;
-  if (s.show_menu) window_menu(s);
+  if (s.show_menu) window_menu(s, film != nullptr);
   if (s.show_tracks) track_list_window(model, actions);
   if (s.show_statistics) statistics_window(model, actions);
   if (s.show_shading) shading_window(model);
   if (s.show_occlusion) occlusion_window(model);
   if (s.show_profiler) profiler_window(model);
   if (s.show_chart) chart_window(model);
-  if (s.show_replay) replay_window(model);
-  if (s.show_film) film_window(model, layout_now(model).film, actions);
+  if (s.show_replay) replay_window(model, film);
+  if (film && s.show_film) film->window(model, layout_now(model).film, actions);
   errors_window(model);
   return actions;
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -10,10 +10,10 @@
 #include <optional>
 #include <vector>
 
-#include "app/view/viewer_model.hpp"
 #include "scene/camera.hpp"
+#include "ui/viewer_model.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 inline constexpr double kPickRadiusPx = 8.0;
 
@@ -28,4 +28,4 @@ HoverState pick_track_point(const scene::TrackSet& tracks, const scene::Camera& 
 // Where an ECEF point appears (pixel), nullopt behind the camera.
 std::optional<glm::dvec2> screen_position(const scene::Camera& camera, const glm::dvec3& ecef);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

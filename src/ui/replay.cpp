@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/view/replay.hpp"
+#include "ui/replay.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 void ReplayClock::set_span(const TimeSpan& span) {
   span_ = TimeSpan{span.start, std::max(span.start, span.end)};
@@ -43,4 +43,4 @@ void ReplayClock::advance(double wall_seconds) {
   if (time_ >= span_->end) playing_ = false;
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

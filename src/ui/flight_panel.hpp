@@ -14,11 +14,11 @@
 #include <utility>
 #include <vector>
 
-#include "app/view/viewer_panels.hpp"
 #include "scene/track_set.hpp"
 #include "track/flight/flight_analysis.hpp"
+#include "ui/viewer_panels.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 // The summary of one flight, a line each: "take-off 14:20:53 UTC, 1593 m", "landing ...",
 // "duration 1:28:38, 11.4 km", "circling 32 % (left 17 min, right 11 min)", "thermals 10, mean
@@ -40,4 +40,4 @@ void flight_statistics(const scene::Track& track, PanelActions& actions);
 void shade_thermals(ImDrawList* draw, const scene::Track& track, const std::function<float(std::size_t)>& x_px,
                     float top, float bottom);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

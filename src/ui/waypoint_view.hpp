@@ -15,7 +15,7 @@
 #include "scene/track_set.hpp"
 #include "scene/waypoints.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 // A waypoint farther than this from every point of a track is not on its chart.
 inline constexpr double kChartWaypointReachM = 1000.0;
@@ -47,4 +47,4 @@ std::vector<std::string> waypoint_tooltip_lines(const scene::Waypoint& waypoint)
 scene::LookAt look_at_waypoint(const scene::Waypoint& waypoint, double heading_deg, double pitch_deg,
                                double distance_m = 1500.0);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

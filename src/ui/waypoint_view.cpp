@@ -1,4 +1,4 @@
-#include "app/view/waypoint_view.hpp"
+#include "ui/waypoint_view.hpp"
 
 #include <fmt/format.h>
 
@@ -6,10 +6,10 @@
 #include <ctime>
 #include <limits>
 
-#include "app/view/tooltip.hpp"
 #include "geo/wgs84.hpp"
+#include "ui/tooltip.hpp"
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 constexpr const char* kMissingText = "\u2014";  // em dash
@@ -90,4 +90,4 @@ scene::LookAt look_at_waypoint(const scene::Waypoint& w, double heading_deg, dou
   return {{g.lat_deg, g.lon_deg, g.height_m}, distance_m, heading_deg, pitch_deg};
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui
