@@ -19,4 +19,22 @@ void DefaultFramebufferTarget::receive(const ColorDepthTarget& frame) {
   glViewport(0, 0, width, height);
 }
 
+void KeptFrameTarget::receive(const ColorDepthTarget& frame) {
+  if (!kept_ || kept_->width() != frame.width() || kept_->height() != frame.height())
+    kept_.emplace(frame.width(), frame.height());
+  frame.bind();
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, kept_->framebuffer_id());
+  glBlitFramebuffer(0, 0, frame.width(), frame.height(), 0, 0, frame.width(), frame.height(), GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+  DefaultFramebufferTarget::receive(*kept_);
+}
+
+bool KeptFrameTarget::show_kept() {
+  const int width = window_width_px > 0 ? window_width_px : (kept_ ? kept_->width() : 0);
+  const int height = window_height_px > 0 ? window_height_px : (kept_ ? kept_->height() : 0);
+  if (!kept_ || kept_->width() != width || kept_->height() != height) return false;
+  DefaultFramebufferTarget::receive(*kept_);
+  return true;
+}
+
 }  // namespace trailray::render

@@ -3,6 +3,7 @@
 // camera's lens size, then hands it to its target, which reads it back into a picture, copies it
 // into a window; a browser canvas or a video encoder's frame is one more kind of target.
 
+#include <optional>
 #include <string_view>
 
 #include "render/gl/frame_profiler.hpp"
@@ -46,6 +47,20 @@ class DefaultFramebufferTarget : public FrameTarget {
   void receive(const ColorDepthTarget& frame) override;
 
   int window_width_px = 0, window_height_px = 0;  // 0: the frame's size
+};
+
+// A DefaultFramebufferTarget that keeps a copy of the last frame, so that a window whose
+// interface changed but whose scene did not (the page: a panel hovered, a tooltip) shows the
+// same picture again under the new interface without drawing the scene (show_kept).
+class KeptFrameTarget : public DefaultFramebufferTarget {
+ public:
+  void receive(const ColorDepthTarget& frame) override;
+  // The kept frame copied into the default framebuffer as receive did; false when none is kept
+  // (nothing drawn yet, or the window's size changed since).
+  bool show_kept();
+
+ private:
+  std::optional<ColorDepthTarget> kept_;
 };
 
 }  // namespace trailray::render

@@ -74,6 +74,30 @@ EMSCRIPTEN_KEEPALIVE void trailray_move(double right, double forward) {
   if (viewer) viewer->move(right, forward);
 }
 
+// The pointer (CSS pixels of the canvas, x NaN: it left; the DOM's button mask), the wheel (lines)
+// and keys (the DOM's keyCode; modifier bits 1 ctrl, 2 shift, 4 alt, 8 meta) for the panels. Each
+// returns whether the panels want the pointer / the keyboard (as of the last frame): then the
+// page does not move the camera with them.
+EMSCRIPTEN_KEEPALIVE int trailray_pointer(double x, double y, int buttons) {
+  if (!viewer) return 0;
+  viewer->input().pointer(x, y, buttons);
+  return viewer->wants_mouse() ? 1 : 0;
+}
+EMSCRIPTEN_KEEPALIVE int trailray_wheel(double steps_y, double steps_x) {
+  if (!viewer) return 0;
+  const bool wanted = viewer->wants_mouse();
+  if (wanted) viewer->input().wheel(steps_y, steps_x);
+  return wanted ? 1 : 0;
+}
+EMSCRIPTEN_KEEPALIVE int trailray_key(int key_code, int down, int modifiers) {
+  if (!viewer) return 0;
+  viewer->input().key(key_code, down != 0, modifiers & 1, modifiers & 2, modifiers & 4, modifiers & 8);
+  return viewer->wants_keyboard() ? 1 : 0;
+}
+EMSCRIPTEN_KEEPALIVE void trailray_char(int codepoint) {
+  if (viewer && codepoint > 0) viewer->input().character(static_cast<unsigned>(codepoint));
+}
+
 // 1 when a frame was drawn, 0 when nothing changed; an error ends as text in trailray_error().
 static std::string frame_error;
 EMSCRIPTEN_KEEPALIVE int trailray_frame(int width, int height, double pixel_ratio, double seconds) {

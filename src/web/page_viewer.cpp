@@ -1,9 +1,11 @@
 #include "web/page_viewer.hpp"
 
 #include <fmt/format.h>
+#include <imgui.h>
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -16,6 +18,11 @@
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
 #include "terrain/encoded_sources.hpp"
+#include "ui/tooltip.hpp"
+#include "ui/track_picking.hpp"
+#include "ui/viewer_overlay.hpp"
+#include "ui/viewer_panels.hpp"
+#include "ui/waypoint_view.hpp"
 #include "web/fetched_tiles.hpp"
 
 namespace trailray::web {
@@ -123,6 +130,16 @@ std::string PageViewer::open_track(const std::string& name, std::string_view byt
 }
 
 std::string PageViewer::set_option(std::string_view name, std::string_view value) {
+  // The page's own: the picture alone, without the panels and what lies over it (an embedded
+  // view, a picture to compare with `render`).
+  if (name == "no-panels") {
+    if (!value.empty() && value != "true" && value != "1") return "no-panels takes no value";
+    panels_ = false;
+    std::erase_if(given_options_, [&](const auto& kv) { return kv.first == name; });
+    given_options_.emplace_back(name, "");
+    ui_frames_ = kUiFramesAfterInput;
+    return {};
+  }
   const PageOptions before = options_;
   const OptionOutcome outcome = apply_page_option(options_, name, value);
   if (!outcome.effect) return outcome.error;
@@ -141,6 +158,7 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
   std::erase_if(given_options_, [&](const auto& kv) { return kv.first == name; });
   if (*outcome.effect != OptionEffect::camera) given_options_.emplace_back(name, value);
   if (*outcome.effect == OptionEffect::style) legend_dirty_ = true;
+  model_.settings.style = options_.style;  // the panels show and edit what the options say
   dirty_ = true;
   return {};
 }
@@ -153,7 +171,11 @@ void PageViewer::rebuild_tracks() {
   scene::TrackSet fresh;
   for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics))
     fresh.add(std::move(t));
-  tracks_ = std::move(fresh);
+  model_.tracks = std::move(fresh);
+  model_.hover = ui::HoverState{};
+  model_.selection = ui::ChartSelection{};
+  if (model_.selected_track >= static_cast<int>(model_.tracks.size())) model_.selected_track = -1;
+  if (model_.selected_track < 0 && !model_.tracks.empty()) model_.selected_track = 0;
   legend_dirty_ = true;
 }
 
@@ -177,10 +199,10 @@ void PageViewer::place_camera() {
     camera_.emplace(scene::CameraController::look_at_from_camera(*camera.value, ground), l);
     return;
   }
-  if (tracks_.empty()) return;
+  if (model_.tracks.empty()) return;
   scene::FramingOptions framing;
   framing.lens = l;
-  const auto framed = scene::frame_tracks(tracks_, framing);
+  const auto framed = scene::frame_tracks(model_.tracks, framing);
   if (!framed.ok()) throw std::runtime_error(framed.error);
   camera_.emplace(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m), l);
 }
@@ -218,7 +240,7 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
     height_px_ = height_px;
     if (camera_)
       camera_->set_image_size(width_px, height_px);
-    else if (!tracks_.empty() || options_.look_at || options_.camera)
+    else if (!model_.tracks.empty() || options_.look_at || options_.camera)
       place_camera();
     dirty_ = legend_dirty_ = true;
   }
@@ -230,19 +252,97 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   // Tiles the view wants beyond those on their way are asked for by the next frame's request:
   // while any are missing, a frame now and then (each arrival also asks for one).
   if (terrain_report_.progress.pending() > 0 && since_drawn_s_ > 0.25) dirty_ = true;
-  if (!dirty_) return false;
+  const bool interface_due = ui_frames_ > 0 || input_.pending() || model_.clock.playing();
+  if (!dirty_ && !interface_due) return false;
+  if (ui_frames_ > 0) --ui_frames_;
+  if (interface_frame(width_px, height_px, pixel_ratio, seconds)) dirty_ = legend_dirty_ = true;
+  // The scene again only when it changed; else the last picture under the new interface.
+  if (dirty_ || !target_.show_kept()) draw_scene(width_px, height_px, pixel_ratio);
+  imgui_.render();
+  return true;
+}
+
+bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds) {
+  ImGuiIO& io = ImGui::GetIO();
+  const float ratio = static_cast<float>(pixel_ratio > 0.0 ? pixel_ratio : 1.0);
+  io.DisplaySize = ImVec2(static_cast<float>(width_px) / ratio, static_cast<float>(height_px) / ratio);
+  io.DisplayFramebufferScale = ImVec2(ratio, ratio);
+  io.DeltaTime = static_cast<float>(std::clamp(seconds, 1e-3, 1.0));
+  const bool pressed = input_.apply(io);
+  if (pressed || input_.moved()) ui_frames_ = std::max(ui_frames_, kUiFramesAfterInput);
+  imgui_.begin_frame();
+  if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
+  const ui::PanelActions actions = ui::draw_panels(model_, seconds);
+  // An edit in the panels (a click, a key, the wheel over them) may have changed the scene.
+  const bool edited = pressed && (io.WantCaptureMouse || io.WantCaptureKeyboard);
+  if (edited) options_.style = model_.settings.style;
+  if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
+  if (camera_ && actions.fly_to_waypoint >= 0 &&
+      actions.fly_to_waypoint < static_cast<int>(model_.waypoints.points.size())) {
+    const scene::LookAt& now = camera_->view();
+    camera_->fly_to(ui::look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(actions.fly_to_waypoint)],
+                                         now.heading_deg, now.pitch_deg));
+  }
+  if (camera_ && actions.fly_to_point) {
+    const scene::LookAt& now = camera_->view();
+    camera_->fly_to(ui::look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
+  }
+  if (camera_) {
+    // The hover follows the pointer over the picture (not over a panel), in device pixels.
+    if (input_.moved() && !io.WantCaptureMouse) {
+      if (const auto at = input_.position())
+        update_hover(at->x * ratio, at->y * ratio);
+      else if (!model_.hover.from_chart)
+        model_.hover = ui::HoverState{};
+    }
+    const scene::Camera camera = camera_->camera();
+    const ui::OverlayState overlay{
+        model_, camera, terrain_report_.progress, status_line_, camera_->view().heading_deg, std::nullopt};
+    if (ui::draw_overlays(overlay)) camera_->reset_north();
+  }
+  return edited;
+}
+
+void PageViewer::update_hover(double x_px, double y_px) {
+  const scene::Camera camera = camera_->camera();
+  std::optional<double> ground_depth_m;
+  if (const auto ground = camera_->ground_point_at(x_px, y_px))
+    if (const auto seen = camera.project(scene::ecef_from(*ground))) ground_depth_m = seen->depth_m;
+  const ui::HoverState picked =
+      ui::pick_track_point(model_.tracks, camera, x_px, y_px, ui::kPickRadiusPx, ground_depth_m);
+  if (picked.track >= 0 || !model_.hover.from_chart) model_.hover = picked;
+}
+
+void PageViewer::fly_to_track(int index) {
+  if (!camera_ || index < 0 || index >= static_cast<int>(model_.tracks.size())) return;
+  const scene::Track& t = model_.tracks[static_cast<std::size_t>(index)];
+  scene::FramingOptions framing;
+  framing.lens = lens();
+  framing.preferred_heading_deg = camera_->view().heading_deg;
+  framing.ground_height_m = t.lowest_altitude();
+  if (std::isnan(framing.ground_height_m)) framing.ground_height_m = recorded_.lowest_or_sea_level();
+  const scene::Track* const one[] = {&t};
+  const auto framed = scene::frame_tracks(one, framing);
+  if (!framed.ok()) return;
+  camera_moved_ = true;
+  camera_->fly_to(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m));
+}
+
+bool PageViewer::wants_mouse() const { return imgui_.wants_mouse(); }
+bool PageViewer::wants_keyboard() const { return imgui_.wants_keyboard(); }
+
+void PageViewer::draw_scene(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio) {
   dirty_ = false;
   since_drawn_s_ = 0.0;
-
   scene::Scene scene;
-  scene.tracks = &tracks_;
+  scene.tracks = &model_.tracks;
   scene.style = options_.style;
   // The robust range sorts every value: only when the tracks or the style changed (what also
   // changes the legend), not for each camera move.
-  if (legend_dirty_) color_range_ = scene::color_range(tracks_, options_.style);
+  if (legend_dirty_) color_range_ = scene::color_range(model_.tracks, options_.style);
   scene.color_range = color_range_;
   scene.sun_time_unix_s = options_.time_unix_s.value_or(scene::default_sun_time(recorded_));
-  if (!options_.time_unix_s && tracks_.empty()) scene.sun_time_unix_s = noon_today(kOverviewLonDeg);
+  if (!options_.time_unix_s && model_.tracks.empty()) scene.sun_time_unix_s = noon_today(kOverviewLonDeg);
   scene.terrain = terrain_view_.get();
   // Where the terrain has no tiles the ground lies at the lowest terrain loaded; before any has
   // come (or without terrain, or offline), at the tracks' lowest point.
@@ -261,13 +361,13 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
     scene::CameraController start(overview, lens());
     terrain_report_ = renderer_.draw(scene, start.camera(), target_).terrain;
   }
+  model_.loading = terrain_report_.progress.pending() > 0;
   if (legend_dirty_) {
     legend_ = page_legend(scene, width_px, height_px);
     legend_dirty_ = false;
     ++legend_version_;
   }
   ++frames_drawn_;
-  return true;
 }
 
 std::string PageViewer::view_state() const {
@@ -285,7 +385,7 @@ std::string PageViewer::view_state() const {
 std::string PageViewer::status_json() const {
   nlohmann::json j;
   j["tracks"] = nlohmann::json::array();
-  for (const scene::Track& t : tracks_.tracks()) {
+  for (const scene::Track& t : model_.tracks.tracks()) {
     const glm::vec3 c = t.color_srgb;
     const auto byte = [](float v) { return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
     j["tracks"].push_back({{"name", t.name},
@@ -298,6 +398,14 @@ std::string PageViewer::status_json() const {
   j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};
   j["tile_failures"] = terrain_report_.failures;
   j["frames_drawn"] = frames_drawn_;
+  // What the pointer is over: a track point (its tooltip's lines) or a panel.
+  nlohmann::json hover = {{"track", model_.hover.track}};
+  if (model_.hover.track >= 0 && model_.hover.track < static_cast<int>(model_.tracks.size())) {
+    hover["point"] = model_.hover.point;
+    hover["lines"] = ui::tooltip_lines(model_.tracks[static_cast<std::size_t>(model_.hover.track)], model_.hover.point);
+  }
+  j["hover"] = hover;
+  j["interface"] = {{"wants_mouse", wants_mouse()}, {"wants_keyboard", wants_keyboard()}};
   j["legend"] = {{"x", legend_.rect.x},
                  {"y", legend_.rect.y},
                  {"width", legend_.rgba.empty() ? 0 : legend_.rect.width},

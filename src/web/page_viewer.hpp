@@ -14,11 +14,14 @@
 #include <vector>
 
 #include "render/frame_target.hpp"
+#include "render/platform/imgui_layer.hpp"
 #include "render/renderer.hpp"
 #include "scene/camera_controller.hpp"
 #include "scene/terrain_view.hpp"
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
+#include "ui/viewer_model.hpp"
+#include "web/page_input.hpp"
 #include "web/page_legend.hpp"
 #include "web/page_options.hpp"
 
@@ -42,9 +45,20 @@ class PageViewer {
   void tilt(double degrees);
   void move(double right, double forward);
 
+  // The pointer, wheel and keys for the panels (and the hover); the gestures above move the camera
+  // when the panels do not want them (wants_mouse, wants_keyboard: as of the last frame).
+  PageInput& input() {
+    ui_frames_ = kUiFramesAfterInput;
+    return input_;
+  }
+  bool wants_mouse() const;
+  bool wants_keyboard() const;
+
   // Draws a frame into the canvas of `width_px` x `height_px` device pixels (`pixel_ratio` of
   // them per CSS pixel) when anything changed since the last, or a camera flight is under way.
-  // Returns whether it drew.
+  // The panels and what lies over the picture (tooltip, markers, compass) are drawn with it; when
+  // only they changed, the last picture of the scene is shown again under them. Returns whether
+  // it drew.
   bool frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds_since_last);
 
   // The view as option text for the fragment ("look-at=LAT,LON,ALT&distance=M&heading=D&pitch=D"
@@ -62,6 +76,15 @@ class PageViewer {
   void open_terrain();  // the sources of options_.terrain / .imagery, fetched by the page
   void place_camera();
   scene::Lens lens() const;
+  // The panels and overlays (ImGui) for this frame; true when an edit may have changed the scene.
+  bool interface_frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds);
+  void update_hover(double x_px, double y_px);
+  void fly_to_track(int index);
+  void draw_scene(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio);
+
+  // Frames of the interface drawn after an input (ImGui settles hover and active items over a
+  // few), without drawing the scene again.
+  static constexpr int kUiFramesAfterInput = 3;
 
   std::unique_ptr<terrain::HeightSource> heights_;
   std::unique_ptr<terrain::ImagerySource> imagery_;
@@ -69,17 +92,22 @@ class PageViewer {
   scene::TerrainReport terrain_report_;               // of the last frame
   double since_drawn_s_ = 0.0;
   render::Renderer renderer_;
-  render::DefaultFramebufferTarget target_;
+  render::KeptFrameTarget target_;
+  render::ImGuiLayer imgui_;
+  PageInput input_;
+  int ui_frames_ = kUiFramesAfterInput;
+  bool panels_ = true;  // false: `no-panels`
   PageOptions options_;
   std::vector<std::pair<std::string, std::string>> given_options_;  // as given, for view_state
   std::vector<scene::LoadedTrackFile> files_;
-  scene::TrackSet tracks_;
+  ui::ViewerModel model_;  // the tracks, the panels' settings, hover, selection, replay
   scene::RecordedPoints recorded_;
   std::optional<scene::CameraController> camera_;
   bool camera_moved_ = false;  // by a gesture or an option: opening another track keeps the view
   bool dirty_ = true;
   std::uint32_t width_px_ = 0, height_px_ = 0;
   std::vector<std::string> warnings_;
+  std::string status_line_;  // the overlay's line at the bottom (nothing to say yet)
   std::uint64_t frames_drawn_ = 0;
   PageLegend legend_;
   bool legend_dirty_ = true;                      // tracks, style or size changed

@@ -11,7 +11,28 @@
 
 namespace trailray::render {
 
-ImGuiLayer::ImGuiLayer(Window& window, float font_px) {
+ImGuiLayer::ImGuiLayer(Window& window, float font_px) : window_(&window) {
+  create_context(font_px);
+  if (!ImGui_ImplGlfw_InitForOpenGL(window.handle(), true)) {
+    ImGui::DestroyContext();
+    throw RenderError("ImGui: the GLFW backend did not start");
+  }
+  if (!ImGui_ImplOpenGL3_Init("#version 300 es")) {
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    throw RenderError("ImGui: the OpenGL ES 3 backend did not start");
+  }
+}
+
+ImGuiLayer::ImGuiLayer(float font_px) {
+  create_context(font_px);
+  if (!ImGui_ImplOpenGL3_Init("#version 300 es")) {
+    ImGui::DestroyContext();
+    throw RenderError("ImGui: the OpenGL ES 3 backend did not start");
+  }
+}
+
+void ImGuiLayer::create_context(float font_px) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -27,26 +48,17 @@ ImGuiLayer::ImGuiLayer(Window& window, float font_px) {
                                         0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
   io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(font.data()), static_cast<int>(font.size()), font_px,
                                  &config, kRanges);
-  if (!ImGui_ImplGlfw_InitForOpenGL(window.handle(), true)) {
-    ImGui::DestroyContext();
-    throw RenderError("ImGui: the GLFW backend did not start");
-  }
-  if (!ImGui_ImplOpenGL3_Init("#version 300 es")) {
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    throw RenderError("ImGui: the OpenGL ES 3 backend did not start");
-  }
 }
 
 ImGuiLayer::~ImGuiLayer() {
   ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
+  if (window_) ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
 }
 
 void ImGuiLayer::begin_frame(std::optional<std::array<float, 2>> scripted_cursor) {
   ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
+  if (window_) ImGui_ImplGlfw_NewFrame();
   if (scripted_cursor) {
     // Scripts must not depend on where the display's pointer happens to be (Xvfb's starts at the
     // screen's centre, which can lie over a panel).

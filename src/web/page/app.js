@@ -53,6 +53,10 @@ function bindApi() {
     viewState: c('trailray_view_state', 'string', []),
     status: c('trailray_status', 'string', []),
     legendPixels: c('trailray_legend_pixels', 'number', []),
+    pointer: c('trailray_pointer', 'number', ['number', 'number', 'number']),
+    wheel: c('trailray_wheel', 'number', ['number', 'number']),
+    key: c('trailray_key', 'number', ['number', 'number', 'number']),
+    char: c('trailray_char', null, ['number']),
   };
 }
 
@@ -101,15 +105,9 @@ function setOption(name, value) {
   return error;
 }
 
+// The tracks are listed in the viewer's own Tracks panel; the page only hides its drop hint.
 function updateTrackList() {
   const status = JSON.parse(page.api.status());
-  const list = document.getElementById('tracks');
-  list.replaceChildren(...status.tracks.map((t) => {
-    const item = document.createElement('li');
-    item.textContent = `${t.name} (${t.points} points)`;
-    item.style.setProperty('--color', t.color);
-    return item;
-  }));
   document.body.classList.toggle('has-tracks', status.tracks.length > 0);
   for (const w of status.warnings) showMessage(w, 'note');
 }
@@ -148,23 +146,31 @@ function applyServedLayers(served) {
   }
 }
 
+// The pointer, wheel and keys go to the viewer's panels first (page_api.cpp): what they want
+// (a panel under the pointer, a text field with the focus) does not move the camera.
 function installGestures(canvas) {
   const pointers = new Map();
   const ratio = () => window.devicePixelRatio || 1;
-  const at = (e) => { const r = canvas.getBoundingClientRect(); return [(e.clientX - r.left) * ratio(), (e.clientY - r.top) * ratio()]; };
+  const css = (e) => { const r = canvas.getBoundingClientRect(); return [e.clientX - r.left, e.clientY - r.top]; };
+  const at = (e) => css(e).map((v) => v * ratio());
+  const toPanels = (e) => { const [x, y] = css(e); return page.api.pointer(x, y, e.buttons) === 1; };
   let pinch = null;
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
   canvas.addEventListener('pointerdown', (e) => {
     canvas.setPointerCapture(e.pointerId);
-    pointers.set(e.pointerId, { xy: at(e), button: e.button, shift: e.shiftKey });
+    canvas.focus();
+    const panels = toPanels(e);
+    pointers.set(e.pointerId, { xy: at(e), button: e.button, shift: e.shiftKey, panels });
     pinch = null;
   });
-  const release = (e) => { pointers.delete(e.pointerId); pinch = null; };
+  const release = (e) => { toPanels(e); pointers.delete(e.pointerId); pinch = null; };
   canvas.addEventListener('pointerup', release);
   canvas.addEventListener('pointercancel', release);
+  canvas.addEventListener('pointerleave', () => { if (!pointers.size) page.api.pointer(NaN, NaN, 0); });
   canvas.addEventListener('pointermove', (e) => {
+    toPanels(e);
     const p = pointers.get(e.pointerId);
-    if (!p) return;
+    if (!p || p.panels) return;
     const xy = at(e);
     if (pointers.size === 1) {
       if (p.button === 2 || p.shift) page.api.pan(p.xy[0], p.xy[1], xy[0], xy[1]);
@@ -187,9 +193,15 @@ function installGestures(canvas) {
     e.preventDefault();
     const xy = at(e);
     const lines = e.deltaMode === 1 ? e.deltaY / 3 : e.deltaY / 100;
+    if (page.api.wheel(-lines, 0) === 1) return;  // a panel scrolls
     page.api.zoom(-lines, xy[0], xy[1]);
   }, { passive: false });
+  const modifiers = (e) => (e.ctrlKey ? 1 : 0) | (e.shiftKey ? 2 : 0) | (e.altKey ? 4 : 0) | (e.metaKey ? 8 : 0);
+  canvas.addEventListener('keyup', (e) => page.api.key(e.keyCode, 0, modifiers(e)));
   canvas.addEventListener('keydown', (e) => {
+    const panels = page.api.key(e.keyCode, 1, modifiers(e)) === 1;
+    if (e.key.length === 1 && !e.ctrlKey && !e.metaKey) page.api.char(e.key.codePointAt(0));
+    if (panels) { if (e.key === 'Tab' || e.key === ' ') e.preventDefault(); return; }
     const keys = {
       ArrowUp: () => page.api.move(0, 0.1), ArrowDown: () => page.api.move(0, -0.1),
       ArrowLeft: () => page.api.move(-0.1, 0), ArrowRight: () => page.api.move(0.1, 0),
