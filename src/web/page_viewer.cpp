@@ -15,9 +15,11 @@
 
 #include "scene/diagnostics.hpp"
 #include "scene/framing.hpp"
+#include "scene/legend_content.hpp"
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
 #include "terrain/encoded_sources.hpp"
+#include "ui/framing_room.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/track_picking.hpp"
 #include "ui/viewer_overlay.hpp"
@@ -202,6 +204,17 @@ void PageViewer::place_camera() {
   if (model_.tracks.empty()) return;
   scene::FramingOptions framing;
   framing.lens = l;
+  // Where neither the panels nor the legend cover the tracks.
+  scene::Scene legend_scene;
+  legend_scene.tracks = &model_.tracks;
+  legend_scene.style = options_.style;
+  legend_scene.color_range = scene::color_range(model_.tracks, options_.style);
+  const scene::KeptClearCorner legend =
+      scene::legend_clearance(scene::scene_legend_panel(l.width_px, l.height_px, legend_scene), l.height_px);
+  const ui::FramingRoom room = panels_ ? ui::panel_framing_room(model_.settings, l, legend, pixel_ratio_)
+                                       : ui::FramingRoom{legend, std::nullopt};
+  framing.keep_clear = room.keep_clear;
+  framing.area = room.area;
   const auto framed = scene::frame_tracks(model_.tracks, framing);
   if (!framed.ok()) throw std::runtime_error(framed.error);
   camera_.emplace(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m), l);
@@ -235,7 +248,8 @@ void PageViewer::move(double right, double forward) {
 
 bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds) {
   if (width_px == 0 || height_px == 0) return false;
-  if (width_px != width_px_ || height_px != height_px_) {
+  if (width_px != width_px_ || height_px != height_px_ || pixel_ratio != pixel_ratio_) {
+    pixel_ratio_ = pixel_ratio > 0.0 ? pixel_ratio : 1.0;
     width_px_ = width_px;
     height_px_ = height_px;
     if (camera_)
@@ -319,6 +333,11 @@ void PageViewer::fly_to_track(int index) {
   scene::FramingOptions framing;
   framing.lens = lens();
   framing.preferred_heading_deg = camera_->view().heading_deg;
+  if (panels_) {
+    const ui::FramingRoom room = ui::panel_framing_room(model_.settings, framing.lens, {}, pixel_ratio_);
+    framing.keep_clear = room.keep_clear;
+    framing.area = room.area;
+  }
   framing.ground_height_m = t.lowest_altitude();
   if (std::isnan(framing.ground_height_m)) framing.ground_height_m = recorded_.lowest_or_sea_level();
   const scene::Track* const one[] = {&t};

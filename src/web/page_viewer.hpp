@@ -106,6 +106,7 @@ class PageViewer {
   bool camera_moved_ = false;  // by a gesture or an option: opening another track keeps the view
   bool dirty_ = true;
   std::uint32_t width_px_ = 0, height_px_ = 0;
+  double pixel_ratio_ = 1.0;
   std::vector<std::string> warnings_;
   std::string status_line_;  // the overlay's line at the bottom (nothing to say yet)
   std::uint64_t frames_drawn_ = 0;

@@ -72,8 +72,7 @@ test('a GPX given through the file input draws its track in its colour, framed',
   // Framed: the track's pixels gather around the middle of the picture.
   assert.ok(Math.abs(track.x - image.width / 2) < image.width * 0.2, `centred across (${track.x})`);
   assert.ok(Math.abs(track.y - image.height / 2) < image.height * 0.25, `centred down (${track.y})`);
-  const listed = await page.$eval('#tracks', (list) => list.textContent);
-  assert.match(listed, /Harder slope hike/);
+  assert.match(s.tracks[0].name, /Harder slope hike/);
   await page.close();
 });
 
@@ -113,7 +112,8 @@ test('a bad option in the link is reported and the rest still applies', async ()
 test('a link with ?track= and view options draws what `trailray render` draws', async (t) => {
   const view = 'terrain=none&imagery=none&look-at=46.6975,7.8625,800&distance=2600&heading=20&pitch=-35' +
     '&time=2024-06-18T12:00:00Z';
-  const page = await openPage(browser, `${base}?track=examples/hike.gpx&color=%23ff00ff&${view}`);
+  // no-panels: the picture alone (`render` draws no panels).
+  const page = await openPage(browser, `${base}?track=examples/hike.gpx&color=%23ff00ff&no-panels&${view}`);
   await framesDrawn(page);
   const web = await canvasPixels(page);
   await page.close();
@@ -213,4 +213,105 @@ test('the legend over the page is the one `trailray render` draws into its pictu
   const mean = difference / (legend.width * legend.height * 3);
   t.diagnostic(`legend panel: mean difference ${mean.toFixed(2)} of 255`);
   assert.ok(mean < 6, `mean difference in the legend ${mean.toFixed(2)}`);
+});
+
+// The viewer's interface in the page (ui/: the same panels and overlays as `trailray view`), at
+// 960x540 where the panels open at fixed places (ui/panel_layout: the track list at the top left
+// under the menu bar, its first row's visibility box at 28,70; the compass at the right, 36 px in
+// from the edge, 241 px down).
+const WIDE = [960, 540];
+
+// Waits until the page has drawn the interface after an input (a few animation frames).
+const settle = (page) => page.evaluate(() => new Promise((r) => {
+  let n = 0;
+  const step = () => (++n >= 8 ? r() : requestAnimationFrame(step));
+  requestAnimationFrame(step);
+}));
+
+test('hover over the track shows its tooltip (the point\'s numbers) over the picture', async (t) => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff&track=examples/hike.gpx`, ...WIDE);
+  await framesDrawn(page);
+  await settle(page);
+  const before = await canvasPixels(page);
+  // A pixel of the track: the magenta pixel nearest the track's centroid.
+  const track = pixelsOfColor(before, MAGENTA, 60);
+  assert.ok(track.count > 400, `the track is drawn (${track.count})`);
+  let best = null;
+  for (let y = 0; y < before.height; ++y)
+    for (let x = 0; x < before.width; ++x) {
+      const i = (y * before.width + x) * 4;
+      const d = Math.abs(before.data[i] - 255) + before.data[i + 1] + Math.abs(before.data[i + 2] - 255);
+      if (d < 60) {
+        const r = Math.hypot(x - track.x, y - track.y);
+        if (!best || r < best.r) best = { x, y, r };
+      }
+    }
+  await page.mouse.move(best.x, best.y);
+  await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).hover.track === 0, { timeout: 20000 });
+  await settle(page);
+  const hover = (await status(page)).hover;
+  t.diagnostic(`hovered ${best.x},${best.y}: ${hover.lines.join('; ')}`);
+  assert.match(hover.lines[0], /^time: 20\d\d-\d\d-\d\d \d\d:\d\d:\d\d UTC$/);
+  assert.ok(hover.lines.some((l) => /^altitude: \d+ m$/.test(l)), hover.lines.join('; '));
+  // The tooltip: a dark box right of and below the cursor that was not there before.
+  const after = await canvasPixels(page);
+  let changed = 0, dark = 0;
+  for (let y = best.y + 12; y < Math.min(after.height, best.y + 140); ++y)
+    for (let x = best.x + 12; x < Math.min(after.width, best.x + 220); ++x) {
+      const i = (y * after.width + x) * 4;
+      if (Math.abs(after.data[i] - before.data[i]) + Math.abs(after.data[i + 1] - before.data[i + 1]) > 60) ++changed;
+      if (after.data[i] + after.data[i + 1] + after.data[i + 2] < 120) ++dark;
+    }
+  assert.ok(changed > 5000 && dark > 5000, `the tooltip's box (${changed} pixels changed, ${dark} dark)`);
+  // Away from the track: no tooltip, the picture as before.
+  await page.mouse.move(5, before.height - 5);
+  await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).hover.track === -1, { timeout: 20000 });
+  await page.close();
+});
+
+// The part of a 960x540 picture that no panel covers (right of the track list, above the chart,
+// below the menu bar): the panels themselves show the track's colour (its swatch, its profile).
+function pictureArea(image) {
+  const [left, top, right, bottom] = [270, 60, 900, 360];
+  const data = new Uint8Array((right - left) * (bottom - top) * 4);
+  for (let y = top; y < bottom; ++y)
+    data.set(image.data.subarray((y * image.width + left) * 4, (y * image.width + right) * 4), (y - top) * (right - left) * 4);
+  return { width: right - left, height: bottom - top, data };
+}
+
+test('the Tracks panel hides and shows a track; the scene is drawn again for it', async () => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff&track=examples/hike.gpx`, ...WIDE);
+  await framesDrawn(page);
+  await settle(page);
+  const shown = pixelsOfColor(pictureArea(await canvasPixels(page)), MAGENTA, 60).count;
+  assert.ok(shown > 400, `the track is drawn (${shown})`);
+  const drawn = (await status(page)).frames_drawn;
+  await page.mouse.click(28, 70);
+  await framesDrawn(page, drawn + 1);
+  await settle(page);
+  const hidden = pixelsOfColor(pictureArea(await canvasPixels(page)), MAGENTA, 60).count;
+  assert.ok(hidden < shown * 0.05, `hidden: ${hidden} magenta pixels of ${shown}`);
+  await page.mouse.click(28, 70);
+  await framesDrawn(page, drawn + 2);
+  await settle(page);
+  const again = pixelsOfColor(pictureArea(await canvasPixels(page)), MAGENTA, 60).count;
+  assert.ok(Math.abs(again - shown) < shown * 0.05, `shown again: ${again} of ${shown}`);
+  // Hovering a panel draws the interface, not the scene.
+  const frames = (await status(page)).frames_drawn;
+  await page.mouse.move(120, 100);
+  await settle(page);
+  assert.equal((await status(page)).frames_drawn, frames);
+  await page.close();
+});
+
+test('the compass turns the view north up', async () => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&track=examples/hike.gpx&heading=70`, ...WIDE);
+  await framesDrawn(page);
+  await settle(page);
+  const heading = async () => Number(/heading=([-0-9.]+)/.exec(await page.evaluate(() => window.trailray.api.viewState()))[1]);
+  assert.ok(Math.abs((await heading()) - 70) < 0.5, `starts at the given heading (${await heading()})`);
+  await page.mouse.click(WIDE[0] - 36, 241);
+  await page.waitForFunction(() => / heading=0\.00|&heading=-?0\.00/.test(`&${window.trailray.api.viewState()}`),
+    { timeout: 30000 });
+  await page.close();
 });

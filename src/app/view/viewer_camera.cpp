@@ -8,6 +8,7 @@
 #include "app/view/viewer_shell.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "scene/legend_content.hpp"
+#include "ui/framing_room.hpp"
 #include "ui/panel_layout.hpp"
 #include "ui/waypoint_view.hpp"
 
@@ -101,29 +102,7 @@ scene::KeptClearCorner ViewerApp::legend_corner(const scene::Lens& lens) {
 FramingRoom ViewerApp::framing_room(const scene::Lens& lens) {
   const scene::KeptClearCorner legend = legend_corner(lens);
   if (!panels_) return {legend, std::nullopt};
-  const ViewerSettings& s = model_.settings;
-  const auto w = static_cast<float>(lens.width_px), h = static_cast<float>(lens.height_px);
-  const float menu = s.show_menu ? kPanelTitleBarHeight : 0.0f;
-  const PanelLayout l = default_panel_layout(w, h, menu);
-  scene::ImageArea area{0.0, menu, w, h};
-  if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right();
-  if (s.show_chart) area.bottom_px = l.chart.y;
-  const double margin = scene::FramingOptions{}.margin_fraction;
-  if (!legend.empty() && legend.width_px > area.left_px) {
-    scene::ImageArea above_legend = area;
-    above_legend.bottom_px = std::min(area.bottom_px, static_cast<double>(h) - legend.height_px);
-    // A tall key (many tracks) under a wide one leaves too little above it: the legend's corner
-    // is kept clear instead, the area stays beside the panels.
-    if (!scene::area_holds_centre(above_legend, lens, margin) && scene::area_holds_centre(area, lens, margin))
-      return {legend, area};
-    area = above_legend;
-  }
-  // A window too small for the panels and a view (the free part, less its margins, misses the
-  // window's centre, which framing needs): frame on all of it.
-  if (!scene::area_holds_centre(area, lens, margin)) return {legend, std::nullopt};
-  scene::KeptClearCorner replay;
-  if (s.show_replay) replay = {scene::ImageCorner::top_right, w - l.replay.x, l.replay.bottom()};
-  return {replay, area};
+  return panel_framing_room(model_.settings, lens, legend);
 }
 
 }  // namespace trailray::app::view

@@ -28,15 +28,10 @@
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
 #include "scene/volume_shapes.hpp"
+#include "ui/framing_room.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::app::view {
-
-// Where a framing may put the tracks: out of a corner, within an area of the window.
-struct FramingRoom {
-  scene::KeptClearCorner keep_clear;
-  std::optional<scene::ImageArea> area;
-};
 
 class ViewerApp {
  public:
