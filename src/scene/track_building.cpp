@@ -296,7 +296,7 @@ void apply_color_metric(Track& t, track::ColorMetric metric) {
   t.bump_revision();
 }
 
-void apply_curtain(Track& t, bool on) {
+void apply_curtain(Track& t, bool on, double neutral_ground_m) {
   for (std::size_t line = 0; line < t.geometry.segments.size() && line < t.segment_first.size(); ++line) {
     auto& heights = t.geometry.segments[line].heights_above_ground_m;
     heights.clear();
@@ -304,7 +304,8 @@ void apply_curtain(Track& t, bool on) {
     const std::size_t first = t.segment_first[line];
     const std::size_t count = t.geometry.segments[line].points_ecef.size();
     for (std::size_t i = first; i < first + count && i < t.point_count(); ++i)
-      heights.push_back(static_cast<float>(t.altitude_m[i] - t.ground_m[i]));
+      heights.push_back(
+          static_cast<float>(t.altitude_m[i] - (std::isnan(t.ground_m[i]) ? neutral_ground_m : t.ground_m[i])));
   }
   t.bump_revision();
 }

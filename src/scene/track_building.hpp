@@ -4,6 +4,7 @@
 // colour values of the style's metric; curtain heights; the per-point numbers the viewer reads.
 // Segments stay apart: gaps are never bridged.
 
+#include <limits>
 #include <vector>
 
 #include "scene/diagnostics.hpp"
@@ -69,8 +70,9 @@ void set_ground_heights(Track& track, terrain::HeightSource& heights);
 void apply_color_metric(Track& track, track::ColorMetric metric);
 
 // Curtains (walls down to the ground) on or off: each line's heights above the ground from
-// altitude - ground height (NaN where either is unknown: no wall there), or none; bumps revision.
-void apply_curtain(Track& track, bool on);
+// altitude - ground height, where the ground is unknown down to `neutral_ground_m` as
+// build_tracks does (NaN: no wall there, nor where the altitude is unknown), or none; bumps revision.
+void apply_curtain(Track& track, bool on, double neutral_ground_m = std::numeric_limits<double>::quiet_NaN());
 
 // The statistics of flat points [first, last] (inclusive; clamped): the track cut to those
 // points (its segments kept), metrics recomputed on the cut: what `trailray stats` says of a file

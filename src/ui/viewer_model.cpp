@@ -31,8 +31,8 @@ void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric, std:
                                   neighbour_radius_m.value_or(scene::default_neighbour_radius_m(metric)), parallel);
 }
 
-void apply_curtain(scene::TrackSet& tracks, bool on) {
-  for (scene::Track& t : tracks.tracks()) scene::apply_curtain(t, on);
+void apply_curtain(scene::TrackSet& tracks, bool on, double neutral_ground_m) {
+  for (scene::Track& t : tracks.tracks()) scene::apply_curtain(t, on, neutral_ground_m);
 }
 
 }  // namespace trailray::ui

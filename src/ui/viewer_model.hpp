@@ -102,6 +102,9 @@ struct ViewerModel {
   // How the panels' recolouring spreads density and thermal counts over the cores (the desktop:
   // a pool; empty: on the calling thread, as in the page).
   track::ParallelFor parallel_for;
+  // The ground where no terrain is known (the tracks' lowest point, as the tracks were built
+  // with): where a curtain switched on in the panels goes down to.
+  double neutral_ground_m = std::numeric_limits<double>::quiet_NaN();
   ProfilerTable profile;
   std::vector<std::string> errors;  // files that could not be read etc., shown in a window
   track::AnalysisOptions analysis;  // how the tracks were cleaned and measured (range statistics)
@@ -125,6 +128,8 @@ void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric,
                         std::optional<double> neighbour_radius_m = std::nullopt,
                         const track::ParallelFor& parallel = {});
 // Curtains on or off for every track.
-void apply_curtain(scene::TrackSet& tracks, bool on);
+// Where the ground is unknown the walls go down to `neutral_ground_m` (NaN: no wall there).
+void apply_curtain(scene::TrackSet& tracks, bool on,
+                   double neutral_ground_m = std::numeric_limits<double>::quiet_NaN());
 
 }  // namespace trailray::ui

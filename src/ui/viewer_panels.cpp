@@ -267,7 +267,7 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
   ImGui::SameLine();
   ImGui::Checkbox("labels", &model.settings.style.labels.enabled);
   ImGui::SameLine();
-  if (ImGui::Checkbox("curtain", &s.curtain)) apply_curtain(model.tracks, s.curtain);
+  if (ImGui::Checkbox("curtain", &s.curtain)) apply_curtain(model.tracks, s.curtain, model.neutral_ground_m);
   ImGui::End();
 }
 

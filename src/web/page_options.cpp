@@ -159,4 +159,24 @@ OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::stri
                                     name)};
 }
 
+std::vector<std::pair<std::string, std::string>> style_option_changes(const scene::Style& before,
+                                                                      const scene::Style& after) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const scene::TrackStyle &a = before.tracks, &b = after.tracks;
+  const auto on_off = [](bool on) { return std::string(on ? "1" : "0"); };
+  if (a.color_by != b.color_by) out.emplace_back("color-by", std::string(track::color_metric_name(b.color_by)));
+  if (a.colormap != b.colormap || a.color_by != b.color_by)
+    out.emplace_back("colormap", std::string(scene::colormap_name(b.colormap)));
+  if (a.width.value != b.width.value || a.width.unit != b.width.unit)
+    out.emplace_back(
+        "width", fmt::format("{:g}{}", b.width.value, b.width.unit == scene::TrackWidth::Unit::pixels ? "px" : "m"));
+  if (a.curtain != b.curtain) out.emplace_back("curtain", on_off(b.curtain));
+  if (before.legend != after.legend) out.emplace_back("legend", after.legend ? "on" : "off");
+  if (before.shading.shadows != after.shading.shadows) out.emplace_back("no-shadows", on_off(!after.shading.shadows));
+  if (before.shading.ssao != after.shading.ssao) out.emplace_back("no-ssao", on_off(!after.shading.ssao));
+  if (before.shading.atmosphere != after.shading.atmosphere)
+    out.emplace_back("no-atmosphere", on_off(!after.shading.atmosphere));
+  return out;
+}
+
 }  // namespace trailray::web

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "scene/camera.hpp"
 #include "scene/style.hpp"
@@ -36,5 +38,11 @@ struct OptionOutcome {
   std::string error;
 };
 OptionOutcome apply_page_option(PageOptions& options, std::string_view name, std::string_view value);
+
+// The options that turn `before` into `after` where the panels edit what options also set
+// (color-by, colormap, width, curtain, legend, no-shadows, no-ssao, no-atmosphere), as name and
+// value in the form apply_page_option reads: a panel's edit goes into the address like an option.
+std::vector<std::pair<std::string, std::string>> style_option_changes(const scene::Style& before,
+                                                                      const scene::Style& after);
 
 }  // namespace trailray::web

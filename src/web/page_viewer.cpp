@@ -167,6 +167,7 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
 
 void PageViewer::rebuild_tracks() {
   recorded_ = scene::recorded_points(files_);
+  model_.neutral_ground_m = recorded_.lowest_or_sea_level();
   scene::TrackBuildOptions build;
   build.neutral_ground_m = recorded_.lowest_or_sea_level();
   scene::CollectedDiagnostics diagnostics;
@@ -289,7 +290,14 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   const ui::PanelActions actions = ui::draw_panels(model_, seconds);
   // An edit in the panels (a click, a key, the wheel over them) may have changed the scene.
   const bool edited = pressed && (io.WantCaptureMouse || io.WantCaptureKeyboard);
-  if (edited) options_.style = model_.settings.style;
+  if (edited) {
+    // Into the address like the options they stand for, so a copied link keeps them.
+    for (auto& change : style_option_changes(options_.style, model_.settings.style)) {
+      std::erase_if(given_options_, [&](const auto& kv) { return kv.first == change.first; });
+      given_options_.push_back(std::move(change));
+    }
+    options_.style = model_.settings.style;
+  }
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   if (camera_ && actions.fly_to_waypoint >= 0 &&
       actions.fly_to_waypoint < static_cast<int>(model_.waypoints.points.size())) {

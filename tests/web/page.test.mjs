@@ -315,3 +315,37 @@ test('the compass turns the view north up', async () => {
     { timeout: 30000 });
   await page.close();
 });
+
+// Pixels that differ by more than 30 levels (in any channel) between two pictures of one size.
+function changedPixels(a, b) {
+  let n = 0;
+  for (let i = 0; i < a.data.length; i += 4)
+    if (Math.max(...[0, 1, 2].map((c) => Math.abs(a.data[i + c] - b.data[i + c]))) > 30) ++n;
+  return n;
+}
+
+test('an edit in the panels goes into the address like the option it stands for', async (t) => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff&track=examples/hike.gpx`, ...WIDE);
+  await framesDrawn(page);
+  await settle(page);
+  assert.doesNotMatch(page.url(), /curtain/);
+  const before = pictureArea(await canvasPixels(page));
+  // The Tracks panel's "curtain" box (a solid track: its fourth row, the third box).
+  const drawn = (await status(page)).frames_drawn;
+  await page.mouse.click(176, 149);
+  await framesDrawn(page, drawn + 1);
+  await page.waitForFunction(() => /[#&]curtain=1/.test(location.hash), { timeout: 20000 });
+  await settle(page);
+  const curtained = pictureArea(await canvasPixels(page));
+  const curtain = changedPixels(before, curtained);
+  assert.ok(curtain > 1000, `the curtain under the track (${curtain} pixels changed)`);
+  // The address reproduces it.
+  const again = await openPage(browser, page.url(), ...WIDE);
+  await page.close();
+  await framesDrawn(again);
+  await settle(again);
+  const restored = changedPixels(curtained, pictureArea(await canvasPixels(again)));
+  t.diagnostic(`curtain: ${curtain} pixels changed; reopened from the address: ${restored} differ`);
+  assert.ok(restored < curtain * 0.05, `reopened: ${restored} pixels differ from the edited picture`);
+  await again.close();
+});

@@ -72,6 +72,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   LoadedViewerTracks first = load_viewer_tracks(o.tracks, first_inputs);
   recorded_ = first.recorded;
   neutral_ = recorded_.lowest_or_sea_level();
+  model_.neutral_ground_m = neutral_;
   model_.settings.style = o.style;
   model_.settings.sun_time_unix = sun_time(o.sun_time_unix, recorded_);
   model_.analysis = o.analysis;

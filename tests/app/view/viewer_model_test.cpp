@@ -221,6 +221,11 @@ TEST(ViewerTrack, CurtainHeightsFromAltitudeAndGround) {
   EXPECT_TRUE(std::isnan(t.geometry.segments[1].heights_above_ground_m[2]));
   apply_curtain(tracks, false);
   EXPECT_TRUE(t.geometry.segments[0].heights_above_ground_m.empty());
+  // Where the ground is unknown, down to the neutral ground (as the tracks are built).
+  apply_curtain(tracks, true, 450.0);
+  EXPECT_FLOAT_EQ(t.geometry.segments[0].heights_above_ground_m[2], 80.0f);
+  EXPECT_FLOAT_EQ(t.geometry.segments[1].heights_above_ground_m[2],
+                  static_cast<float>(t.altitude_m[t.segment_first[1] + 2] - 450.0));
 }
 
 TEST(ViewerTrack, FillPointArraysRejectsMismatchedGround) {
