@@ -118,7 +118,7 @@ function optionsOf(text) {
   const tracks = [];
   for (const [name, value] of new URLSearchParams(text)) {
     if (name === 'track') tracks.push(value);
-    else options.push([name, value]);
+    else if (!window.trailrayTileCache?.options.includes(name)) options.push([name, value]);  // tile_cache.js's
   }
   return { options, tracks };
 }
@@ -322,6 +322,7 @@ async function start() {
   installGestures(canvas);
   installFileOpening();
   installButtons(canvas);
+  await window.trailrayTileCache?.ready;  // what follows is fetched through the tile cache
 
   // Served options first, then the query's, then the fragment's (the view last seen).
   const served = await servedConfig();

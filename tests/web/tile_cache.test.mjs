@@ -1,0 +1,184 @@
+// The browser's tile cache (src/web/page/tile_cache_worker.js) in headless Chromium: tiles seen
+// through `trailray serve` are drawn again after a reload with the server stopped (no network at
+// all: the shell, the served configuration, the track and the tiles all come from the cache),
+// and a small budget keeps the cache within it while the page still works.
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+
+import { canvasPixels, config, framesDrawn, launchBrowser, openPage } from './harness.mjs';
+
+const dem = path.join(config.sharedData || '', 'dem', 'interlaken_dhm25_wgs84.tif');
+const flight = path.join(config.sharedData || '', 'igc', 'goigc_0100_interlaken.igc');
+const haveData = config.sharedData && fs.existsSync(dem) && fs.existsSync(flight);
+const TILE_CACHE = 'trailray-tiles-v1';
+let browser;
+const servers = [];
+
+before(async () => { browser = await launchBrowser(); });
+after(async () => {
+  await browser?.close();
+  for (const s of servers) s.kill('SIGTERM');
+});
+
+// `trailray serve` with the Interlaken DEM and flight on a free port (each test its own port, so
+// its own origin: a cache of its own); resolves to its address and process once it listens.
+function serve(args = ['--terrain', dem, flight]) {
+  const child = spawn(config.nativeBinary, ['serve', '--port', '0', '--web-root', config.webRoot, '--imagery', 'none',
+    '--color', '#ff00ff', ...args]);
+  servers.push(child);
+  return new Promise((resolve, reject) => {
+    let output = '';
+    child.stdout.on('data', (d) => {
+      output += d;
+      const m = output.match(/serving on (http:\/\/\S+)/);
+      if (m) resolve({ url: m[1], child });
+    });
+    child.stderr.on('data', (d) => { output += d; });
+    child.on('exit', (code) => reject(new Error(`serve exited with ${code}: ${output}`)));
+  });
+}
+
+async function stop(child) {
+  const exited = new Promise((resolve) => child.once('exit', resolve));
+  child.kill('SIGTERM');
+  await exited;
+}
+
+const status = async (page) => JSON.parse(await page.evaluate(() => window.trailray.api.status()));
+const cacheStatus = (page) => page.evaluate(() => window.trailrayTileCache.status());
+
+// Every tile the view wants has come (tiles, "no data" or failures); then the frame that shows
+// them on the canvas.
+async function allTiles(page) {
+  await page.waitForFunction(() => {
+    const s = JSON.parse(window.trailray.api.status());
+    return s.tracks.length === 1 && s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
+  }, { timeout: 180000, polling: 200 });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
+// Waits until the worker has stored at least `count` tiles (it stores them after handing them on).
+async function tilesKept(page, count) {
+  await page.waitForFunction(async (n) => (await window.trailrayTileCache.status()).tiles >= n, { timeout: 30000, polling: 200 }, count);
+  return cacheStatus(page);
+}
+
+function meanDifference(a, b) {
+  assert.equal(a.data.length, b.data.length);
+  let sum = 0;
+  for (let i = 0; i < a.data.length; i += 4)
+    for (let c = 0; c < 3; ++c) sum += Math.abs(a.data[i + c] - b.data[i + c]);
+  return sum / (a.data.length / 4) / 3;
+}
+
+test('a reload with the server stopped starts the page and draws the terrain seen before', async (t) => {
+  if (!haveData) { t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`); return; }
+  const { url, child } = await serve();
+  const opened = Date.now();
+  const page = await openPage(browser, url);
+  assert.ok(await page.evaluate(() => window.trailrayTileCache.ready), 'the worker controls the page');
+  await allTiles(page);
+  t.diagnostic(`first visit: every tile drawn ${Date.now() - opened} ms`);
+  const before = await status(page);
+  assert.deepEqual(before.tile_failures, []);
+  assert.ok(before.tiles.loaded > 0, 'height tiles from the DEM');
+  // The first visit's tiles too: the page waited for the worker before it fetched any.
+  const kept = await tilesKept(page, before.tiles.loaded + before.tiles.no_data);
+  t.diagnostic(`kept after the first visit: ${kept.tiles} tiles, ${kept.entries} entries, ${(kept.bytes / 1048576).toFixed(2)} MB ` +
+    `(view: ${JSON.stringify(before.tiles)})`);
+  const image = await canvasPixels(page);
+  const view = await page.evaluate(() => window.trailray.api.viewState());
+
+  await stop(child);
+  await assert.rejects(fetch(url), 'the server is gone');
+  const started = Date.now();
+  await page.reload();
+  await page.waitForFunction(() => window.trailray && (window.trailray.started || window.trailray.failed), { timeout: 30000 });
+  assert.equal(await page.evaluate(() => window.trailray.failed), null);
+  const startedMs = Date.now() - started;
+  await framesDrawn(page);
+  const firstFrameMs = Date.now() - started;
+  await allTiles(page);
+  const allMs = Date.now() - started;
+  t.diagnostic(`offline reload: started ${startedMs} ms, first frame ${firstFrameMs} ms, every tile drawn ${allMs} ms`);
+  const after = await status(page);
+  assert.equal(after.tracks.length, 1, 'the served track, from the cache');
+  assert.deepEqual(after.tile_failures, []);
+  assert.deepEqual(after.tiles, before.tiles, 'the same tiles, every one from the cache');
+  const again = await canvasPixels(page);
+  // The same tiles, view and renderer (SwiftShader is deterministic): the same picture, up to
+  // rounding in the blending of the frame (well under 1 of 255 on average).
+  const same = meanDifference(image, again);
+  // Offline still, the same view without terrain: the neutral ground, another picture.
+  const flat = await openPage(browser, `${url}#${view}&terrain=none`);
+  await framesDrawn(flat);
+  const neutral = meanDifference(again, await canvasPixels(flat));
+  await flat.close();
+  t.diagnostic(`offline picture vs online: mean difference ${same.toFixed(2)}; vs neutral ground ${neutral.toFixed(1)} (of 255)`);
+  assert.ok(same < 1, `the offline picture is the online one (mean difference ${same.toFixed(2)})`);
+  assert.ok(neutral > 8, `the offline picture has the terrain (mean difference to none ${neutral.toFixed(1)})`);
+  assert.deepEqual(await page.evaluate(() => window.trailray.messages), []);
+  await page.close();
+});
+
+// The bytes the Cache API really holds for the page's tiles and files (bodies read), and how many.
+function cacheContents(page) {
+  return page.evaluate(async (name) => {
+    const cache = await caches.open(name);
+    let bytes = 0;
+    const keys = await cache.keys();
+    for (const key of keys) bytes += (await (await cache.match(key)).arrayBuffer()).byteLength;
+    return { entries: keys.length, bytes, tiles: keys.filter((k) => k.url.includes('/tiles/terrain/')).length };
+  }, TILE_CACHE);
+}
+
+test('a small cache-max-size-mb keeps the cache within it, and 0 keeps nothing; the page works', async (t) => {
+  if (!haveData) { t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`); return; }
+  const { url } = await serve();
+  // The view's 12 height tiles are about 260 kB (Terrarium PNG from serve, 13 "no data" answers
+  // beside them): 50 kB holds a few.
+  const budget = Math.round(0.05 * 1048576);
+  const page = await openPage(browser, `${url}?cache-max-size-mb=0.05`);
+  await allTiles(page);
+  const s = await status(page);
+  assert.deepEqual(s.tile_failures, []);
+  assert.ok(s.tiles.loaded > 0);
+  await page.waitForFunction(async (n) => (await window.trailrayTileCache.status()).stored >= n, { timeout: 30000 },
+    s.tiles.loaded + s.tiles.no_data);
+  const kept = await cacheStatus(page);
+  const real = await cacheContents(page);
+  t.diagnostic(`budget ${budget} B: kept ${JSON.stringify(kept)}; in the Cache API: ${JSON.stringify(real)}`);
+  assert.equal(kept.budget, budget);
+  assert.ok(kept.evicted > 0, 'tiles were evicted');
+  assert.ok(kept.bytes <= budget, `the account is within the budget (${kept.bytes} B)`);
+  assert.ok(real.bytes <= budget, `the bodies in the Cache API are within the budget (${real.bytes} B)`);
+  assert.equal(real.entries, kept.entries, 'the index knows every entry');
+  assert.ok(real.tiles > 0, 'the most recent tiles are kept');
+  assert.deepEqual(await page.evaluate(() => window.trailray.messages), []);
+
+  // 0: nothing kept, and the budget stays for the next visit that gives none.
+  await page.goto(`${url}?cache-max-size-mb=0`);
+  await page.waitForFunction(() => window.trailray && window.trailray.started, { timeout: 30000 });
+  await allTiles(page);
+  assert.deepEqual((await status(page)).tile_failures, []);
+  await page.goto(url);
+  await page.waitForFunction(() => window.trailray && window.trailray.started, { timeout: 30000 });
+  await allTiles(page);
+  const off = await cacheStatus(page);
+  assert.equal(off.budget, 0);
+  assert.equal(off.enabled, false);
+  assert.deepEqual(await cacheContents(page), { entries: 0, bytes: 0, tiles: 0 });
+  await page.close();
+});
+
+test('a bad cache-max-size-mb is shown as an error, and the page still starts', async () => {
+  const { url } = await serve(['--terrain', 'none']);
+  const page = await openPage(browser, `${url}?cache-max-size-mb=lots`);
+  await page.waitForFunction(() => window.trailray.messages.length > 0, { timeout: 10000 });
+  assert.deepEqual(await page.evaluate(() => window.trailray.messages),
+    ['cache-max-size-mb=lots: expected a size in MB (0: no tile cache)']);
+  await page.close();
+});
