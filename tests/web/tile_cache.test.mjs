@@ -8,7 +8,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 
-import { canvasPixels, config, framesDrawn, launchBrowser, openPage } from './harness.mjs';
+import http from 'node:http';
+
+import { canvasPixels, config, framesDrawn, launchBrowser, openPage, staticServer } from './harness.mjs';
 
 const dem = path.join(config.sharedData || '', 'dem', 'interlaken_dhm25_wgs84.tif');
 const flight = path.join(config.sharedData || '', 'igc', 'goigc_0100_interlaken.igc');
@@ -52,11 +54,11 @@ const cacheStatus = (page) => page.evaluate(() => window.trailrayTileCache.statu
 
 // Every tile the view wants has come (tiles, "no data" or failures); then the frame that shows
 // them on the canvas.
-async function allTiles(page) {
-  await page.waitForFunction(() => {
+async function allTiles(page, tracks = 1) {
+  await page.waitForFunction((n) => {
     const s = JSON.parse(window.trailray.api.status());
-    return s.tracks.length === 1 && s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
-  }, { timeout: 180000, polling: 200 });
+    return s.tracks.length === n && s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
+  }, { timeout: 180000, polling: 200 }, tracks);
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
@@ -180,5 +182,72 @@ test('a bad cache-max-size-mb is shown as an error, and the page still starts', 
   await page.waitForFunction(() => window.trailray.messages.length > 0, { timeout: 10000 });
   assert.deepEqual(await page.evaluate(() => window.trailray.messages),
     ['cache-max-size-mb=lots: expected a size in MB (0: no tile cache)']);
+  await page.close();
+});
+
+// A tile server on another origin in front of serve's tiles that answers some tiles badly, by a
+// rule on the tile's numbers: as serve does (a whole PNG, or 404 "no data"), 503 (with the PNG:
+// some servers send a placeholder image with their error), an HTML page
+// with 200 (a captive portal), a PNG cut short with a Content-Length that agrees (a broken
+// server), or serve's tile without CORS headers. Counts the requests for each path.
+const KINDS = ['as-served', 'as-served', 'error', 'html', 'cut-short', 'no-cors'];
+function badTileServer(upstream) {
+  const requests = new Map();
+  const kinds = new Map();
+  const server = http.createServer(async (request, response) => {
+    const m = request.url.match(/^\/tiles\/terrain\/(\d+)\/(\d+)\/(\d+)\.png$/);
+    if (!m) { response.writeHead(404).end(); return; }
+    const [z, x, y] = m.slice(1).map(Number);
+    const kind = KINDS[(x * 7 + y * 13 + z) % KINDS.length];
+    requests.set(request.url, (requests.get(request.url) || 0) + 1);
+    const answer = await fetch(new URL(request.url, upstream));
+    const body = Buffer.from(await answer.arrayBuffer());
+    kinds.set(request.url, kind === 'as-served' ? (answer.status === 200 ? 'tile' : 'no-data') : kind);
+    const cors = { 'Access-Control-Allow-Origin': '*' };
+    if (kind === 'as-served') response.writeHead(answer.status, { ...cors, 'Content-Type': answer.headers.get('content-type') }).end(body);
+    else if (kind === 'error') response.writeHead(503, { ...cors, 'Content-Type': 'image/png' }).end(body);  // a whole image, but an error
+    else if (kind === 'html') response.writeHead(200, { ...cors, 'Content-Type': 'text/html' }).end('<html><body>log in first</body></html>');
+    else if (kind === 'cut-short') response.writeHead(200, { ...cors, 'Content-Type': 'image/png' }).end(body.subarray(0, body.length >> 1));
+    else response.writeHead(200, { 'Content-Type': 'image/png' }).end(body);
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => {
+    servers.push({ kill: () => server.close() });
+    resolve({ url: `http://127.0.0.1:${server.address().port}/`, requests, kinds });
+  }));
+}
+
+test('only whole, readable tiles are kept (and "no data"): not errors, HTML, cut-short or non-CORS answers', async (t) => {
+  if (!haveData) { t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`); return; }
+  const { url: upstream } = await serve();
+  const tiles = await badTileServer(upstream);
+  const { server, url: base } = await staticServer(config.webRoot);
+  servers.push({ kill: () => server.close() });
+  const address = `${base}?terrain=${tiles.url}tiles/terrain/{z}/{x}/{y}.png&imagery=none` +
+    '&look-at=46.69,7.86,600&distance=6000&heading=0&pitch=-89';
+  const page = await openPage(browser, address);
+  await allTiles(page, 0);
+  const s = await status(page);
+  const byKind = {};
+  for (const kind of tiles.kinds.values()) byKind[kind] = (byKind[kind] || 0) + 1;
+  t.diagnostic(`tiles answered: ${JSON.stringify(byKind)}; the viewer: ${JSON.stringify(s.tiles)}`);
+  for (const kind of ['tile', 'no-data', 'error', 'html', 'cut-short', 'no-cors'])
+    assert.ok(byKind[kind] > 0, `the view asks for at least one tile answered "${kind}"`);
+  assert.ok(s.tiles.failed > 0 && s.tiles.loaded > 0);
+  const good = [...tiles.kinds].filter(([, kind]) => kind === 'tile' || kind === 'no-data').map(([p]) => p);
+  await page.waitForFunction(async (n) => (await window.trailrayTileCache.status()).stored >= n, { timeout: 30000 }, good.length);
+  const kept = await page.evaluate(async (name) => (await (await caches.open(name)).keys()).map((k) => new URL(k.url).pathname),
+    TILE_CACHE);
+  assert.deepEqual(kept.filter((p) => p.startsWith('/tiles/')).sort(), good.sort(), 'exactly the good answers are kept');
+  const refused = (await cacheStatus(page)).refused;
+  assert.ok(refused >= byKind.html + byKind['cut-short'], `the HTML and cut-short answers were refused (${refused})`);
+
+  // A reload asks the network only for what was not kept.
+  const before = new Map(tiles.requests);
+  await page.reload();
+  await page.waitForFunction(() => window.trailray && window.trailray.started, { timeout: 30000 });
+  await allTiles(page, 0);
+  for (const p of good) assert.equal(tiles.requests.get(p), before.get(p), `${p} came from the cache`);
+  const asked = [...tiles.kinds].filter(([, kind]) => kind === 'error').map(([p]) => p);
+  assert.ok(asked.some((p) => tiles.requests.get(p) > before.get(p)), 'the failed tiles are asked for again');
   await page.close();
 });
