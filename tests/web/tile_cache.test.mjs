@@ -94,6 +94,9 @@ test('a reload with the server stopped starts the page and draws the terrain see
   const image = await canvasPixels(page);
   const view = await page.evaluate(() => window.trailray.api.viewState());
 
+  // The server stopped, not puppeteer's setOfflineMode: that cuts the page's requests but not
+  // the worker's own fetches (with nothing kept, a reload in offline mode still got every tile
+  // from serve), so a broken cache would pass.
   await stop(child);
   await assert.rejects(fetch(url), 'the server is gone');
   const started = Date.now();
