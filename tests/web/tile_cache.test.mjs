@@ -254,3 +254,37 @@ test('only whole, readable tiles are kept (and "no data"): not errors, HTML, cut
   assert.ok(asked.some((p) => tiles.requests.get(p) > before.get(p)), 'the failed tiles are asked for again');
   await page.close();
 });
+
+test('the least recently used tiles are evicted first, not the first stored', async (t) => {
+  if (!haveData) { t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`); return; }
+  const { url } = await serve();
+  // The page fetches no tiles itself (terrain=none): the test asks for them, as the viewer would:
+  // tiles over the DEM, the first (about 37 kB) asked for again after each of the others (12, 20,
+  // 6, 12 kB, then smaller ones). 80 kB holds it and a few of them: under LRU the first stays
+  // and the second goes; first in, first out would have evicted the first.
+  const page = await openPage(browser, `${url}?terrain=none&cache-max-size-mb=0.08`);
+  const tiles = ['11/1068/722', '12/2136/1445', '12/2138/1445', '11/1069/722', '10/534/361', '9/267/180', '8/133/90',
+    '7/66/45', '6/33/22', '5/16/11', '4/8/5'].map((zxy) => `tiles/terrain/${zxy}.png`);
+  const result = await page.evaluate(async (urls) => {
+    const status = () => window.trailrayTileCache.status();
+    const stored = async (count) => { while ((await status()).stored < count) await new Promise((r) => setTimeout(r, 20)); };
+    const answers = [];
+    const before = (await status()).stored;
+    for (const [i, u] of urls.entries()) {
+      answers.push((await fetch(u)).status);
+      await stored(before + i + 1);  // stored in turn (the worker stores after it answers)
+      if (i > 0) await (await fetch(urls[0])).arrayBuffer();
+    }
+    const kept = new Set((await (await caches.open('trailray-tiles-v1')).keys()).map((k) => new URL(k.url).pathname.slice(1)));
+    return { answers, kept: urls.map((u) => kept.has(u)), summary: await status() };
+  }, tiles);
+  t.diagnostic(JSON.stringify(result));
+  assert.ok(result.answers.every((s) => s === 200), 'whole tiles from the DEM');
+  assert.ok(result.summary.evicted > 0, 'tiles were evicted');
+  assert.ok(result.summary.hits >= tiles.length - 1, 'the first tile came from the cache each time');
+  assert.ok(result.summary.bytes <= result.summary.budget);
+  assert.equal(result.kept[0], true, 'the first tile, used after every other, is kept');
+  assert.equal(result.kept[1], false, 'the second, never used again, is gone');
+  assert.equal(result.kept.at(-1), true, 'the last stored is kept');
+  await page.close();
+});
