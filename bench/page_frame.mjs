@@ -1,6 +1,7 @@
 // Benchmark: the page in headless Chromium (WebGL 2 on SwiftShader): load to the first frame,
 // and the median of 7 frames while the camera moves, each timed around trailray_frame with a
-// 1-pixel read-back (which waits for the GPU). Prints one line per track; never fails a build.
+// 1-pixel read-back (which waits for the GPU), and of 7 frames of the interface alone (the pointer
+// over a panel: the scene's picture is kept). Prints one line per track; never fails a build.
 //   node bench/page_frame.mjs TRACK...     (after scripts/web.sh and `npm ci --prefix tests/web`)
 // Compare with `trailray render --terrain none --imagery none --size 960x540 --legend off
 // --profile --frames 7 TRACK` in the same run (README, "Speed").
@@ -38,11 +39,21 @@ try {
         gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
         out.push(performance.now() - t);
       }
-      return out.sort((a, b) => a - b);
+      // Frames of the interface alone: the pointer over a panel, the scene's picture kept.
+      const ui = [];
+      for (let i = 0; i < 7; ++i) {
+        api.pointer(100 + i, 100, 0);
+        const t = performance.now();
+        api.frame(canvas.width, canvas.height, 1, 0.016);
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        ui.push(performance.now() - t);
+      }
+      return { scene: out.sort((a, b) => a - b), ui: ui.sort((a, b) => a - b) };
     });
     const s = JSON.parse(await page.evaluate(() => window.trailray.api.status()));
     console.log(`${path.basename(track)}: ${s.tracks.map((t) => t.points).join('+')} points drawn; load to first frame ` +
-      `${first.toFixed(1)} s; frame median ${times[3].toFixed(0)} ms (min ${times[0].toFixed(0)}, max ${times[6].toFixed(0)})`);
+      `${first.toFixed(1)} s; frame median ${times.scene[3].toFixed(0)} ms (min ${times.scene[0].toFixed(0)}, ` +
+      `max ${times.scene[6].toFixed(0)}); interface-only frame median ${times.ui[3].toFixed(1)} ms`);
     await page.close();
   }
 } finally {

@@ -44,6 +44,11 @@ PageOptions::PageOptions() {
   const terrain::TerrainConfig defaults = terrain::default_terrain_config();
   terrain = defaults.terrain;
   imagery = defaults.imagery;
+  // The same bucket by its own host name (S3's virtual-hosted form), as browser map libraries
+  // fetch it: one public configuration reports no CORS headers on the path form the desktop uses.
+  const std::string path_form = "https://s3.amazonaws.com/elevation-tiles-prod/";
+  if (terrain.source.starts_with(path_form))
+    terrain.source = "https://elevation-tiles-prod.s3.amazonaws.com/" + terrain.source.substr(path_form.size());
 }
 
 OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::string_view value) {
