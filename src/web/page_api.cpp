@@ -98,6 +98,10 @@ EMSCRIPTEN_KEEPALIVE void trailray_char(int codepoint) {
   if (viewer && codepoint > 0) viewer->input().character(static_cast<unsigned>(codepoint));
 }
 
+// The scene's picture alone in the canvas, for the screenshot (read it before the next frame):
+// 1, or 0 before the first frame.
+EMSCRIPTEN_KEEPALIVE int trailray_picture() { return viewer && viewer->draw_picture() ? 1 : 0; }
+
 // 1 when a frame was drawn, 0 when nothing changed; an error ends as text in trailray_error().
 static std::string frame_error;
 EMSCRIPTEN_KEEPALIVE int trailray_frame(int width, int height, double pixel_ratio, double seconds) {

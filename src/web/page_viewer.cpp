@@ -19,6 +19,7 @@
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
 #include "terrain/encoded_sources.hpp"
+#include "track/io/text_output.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/track_picking.hpp"
@@ -160,7 +161,8 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
   std::erase_if(given_options_, [&](const auto& kv) { return kv.first == name; });
   if (*outcome.effect != OptionEffect::camera) given_options_.emplace_back(name, value);
   if (*outcome.effect == OptionEffect::style) legend_dirty_ = true;
-  model_.settings.style = options_.style;  // the panels show and edit what the options say
+  // The panels show and edit what the options say.
+  model_.settings.style = options_.style;
   dirty_ = true;
   return {};
 }
@@ -285,6 +287,7 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   io.DeltaTime = static_cast<float>(std::clamp(seconds, 1e-3, 1.0));
   const bool pressed = input_.apply(io);
   if (pressed || input_.moved()) ui_frames_ = std::max(ui_frames_, kUiFramesAfterInput);
+  model_.settings.sun_time_unix = sun_time();  // what the shading panel starts from
   imgui_.begin_frame();
   if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
   const ui::PanelActions actions = ui::draw_panels(model_, seconds);
@@ -297,6 +300,13 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
       given_options_.push_back(std::move(change));
     }
     options_.style = model_.settings.style;
+    // The shading panel's time of day: the `time` option.
+    const double sun = model_.settings.sun_time_unix;
+    if (!std::isnan(sun) && sun != sun_time()) {
+      options_.time_unix_s = sun;
+      std::erase_if(given_options_, [](const auto& kv) { return kv.first == "time"; });
+      given_options_.emplace_back("time", track::format_iso_time(std::round(sun)));
+    }
   }
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
   if (camera_ && actions.fly_to_waypoint >= 0 &&
@@ -355,6 +365,18 @@ void PageViewer::fly_to_track(int index) {
   camera_->fly_to(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m));
 }
 
+bool PageViewer::draw_picture() {
+  if (width_px_ == 0 || height_px_ == 0) return false;
+  if (dirty_ || !target_.show_kept()) draw_scene(width_px_, height_px_, pixel_ratio_);
+  ui_frames_ = kUiFramesAfterInput;
+  return true;
+}
+
+double PageViewer::sun_time() const {
+  if (options_.time_unix_s) return *options_.time_unix_s;
+  return model_.tracks.empty() ? noon_today(kOverviewLonDeg) : scene::default_sun_time(recorded_);
+}
+
 bool PageViewer::wants_mouse() const { return imgui_.wants_mouse(); }
 bool PageViewer::wants_keyboard() const { return imgui_.wants_keyboard(); }
 
@@ -368,8 +390,7 @@ void PageViewer::draw_scene(std::uint32_t width_px, std::uint32_t height_px, dou
   // changes the legend), not for each camera move.
   if (legend_dirty_) color_range_ = scene::color_range(model_.tracks, options_.style);
   scene.color_range = color_range_;
-  scene.sun_time_unix_s = options_.time_unix_s.value_or(scene::default_sun_time(recorded_));
-  if (!options_.time_unix_s && model_.tracks.empty()) scene.sun_time_unix_s = noon_today(kOverviewLonDeg);
+  scene.sun_time_unix_s = sun_time();
   scene.terrain = terrain_view_.get();
   // Where the terrain has no tiles the ground lies at the lowest terrain loaded; before any has
   // come (or without terrain, or offline), at the tracks' lowest point.

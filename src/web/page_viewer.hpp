@@ -53,6 +53,9 @@ class PageViewer {
   }
   bool wants_mouse() const;
   bool wants_keyboard() const;
+  // The scene's picture alone in the canvas (the screenshot's: no panels); the next frame draws
+  // the interface over it again. False before the first frame.
+  bool draw_picture();
 
   // Draws a frame into the canvas of `width_px` x `height_px` device pixels (`pixel_ratio` of
   // them per CSS pixel) when anything changed since the last, or a camera flight is under way.
@@ -79,6 +82,9 @@ class PageViewer {
   // The panels and overlays (ImGui) for this frame; true when an edit may have changed the scene.
   bool interface_frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds);
   void update_hover(double x_px, double y_px);
+  // The sun's time: the `time` option (or the shading panel's), else the tracks' day at noon, or
+  // today's noon where the page looks before any track is open.
+  double sun_time() const;
   void fly_to_track(int index);
   void draw_scene(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio);
 

@@ -76,8 +76,7 @@ export async function framesDrawn(page, count = 1) {
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
-// The canvas's pixels (RGBA, top-down) and size; `withLegend`: with the legend over them, as the
-// screenshot button makes the picture.
+// The canvas's pixels (RGBA, top-down) and size; `withLegend`: with the legend over them.
 export async function canvasPixels(page, { withLegend = false } = {}) {
   const { width, height, data } = await page.evaluate((legendToo) => {
     const canvas = document.getElementById('canvas');
@@ -91,6 +90,16 @@ export async function canvasPixels(page, { withLegend = false } = {}) {
     const image = context.getImageData(0, 0, copy.width, copy.height);
     return { width: copy.width, height: copy.height, data: Array.from(image.data) };
   }, withLegend);
+  return { width, height, data: Uint8Array.from(data) };
+}
+
+// The picture as the Screenshot button saves it (the scene without the panels, the legend over it).
+export async function screenshotPixels(page) {
+  const { width, height, data } = await page.evaluate(() => {
+    const picture = window.trailray.picture();
+    const image = picture.getContext('2d').getImageData(0, 0, picture.width, picture.height);
+    return { width: picture.width, height: picture.height, data: Array.from(image.data) };
+  });
   return { width, height, data: Uint8Array.from(data) };
 }
 

@@ -8,7 +8,7 @@ import path from 'node:path';
 import { after, before, test } from 'node:test';
 
 import {
-  canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor, run, staticServer,
+  canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor, run, screenshotPixels, staticServer,
 } from './harness.mjs';
 
 const MAGENTA = [255, 0, 255];
@@ -348,4 +348,37 @@ test('an edit in the panels goes into the address like the option it stands for'
   t.diagnostic(`curtain: ${curtain} pixels changed; reopened from the address: ${restored} differ`);
   assert.ok(restored < curtain * 0.05, `reopened: ${restored} pixels differ from the edited picture`);
   await again.close();
+});
+
+// Mean absolute difference of two pictures of one size, per channel, in levels of 255.
+function meanDifference(a, b) {
+  let sum = 0;
+  for (let i = 0; i < a.data.length; i += 4)
+    for (let c = 0; c < 3; ++c) sum += Math.abs(a.data[i + c] - b.data[i + c]);
+  return sum / (a.data.length / 4) / 3;
+}
+
+test('the screenshot is the picture without the panels, with the legend', async (t) => {
+  const view = `${OFFLINE}&track=examples/paraglider_flight.igc&color-by=vspeed&look-at=46.70,7.85,1500` +
+    '&distance=9000&heading=0&pitch=-40&time=2024-07-14T12:00:00Z';
+  const page = await openPage(browser, `${base}?${view}`, ...WIDE);
+  await framesDrawn(page);
+  await settle(page);
+  const withPanels = await canvasPixels(page, { withLegend: true });
+  const shot = await screenshotPixels(page);
+  await settle(page);
+  const after = await canvasPixels(page, { withLegend: true });
+  await page.close();
+  const bare = await openPage(browser, `${base}?${view}&no-panels`, ...WIDE);
+  await framesDrawn(bare);
+  await settle(bare);
+  const picture = await canvasPixels(bare, { withLegend: true });
+  await bare.close();
+  const [toPicture, toPanels, back] = [meanDifference(shot, picture), meanDifference(shot, withPanels),
+    meanDifference(after, withPanels)];
+  t.diagnostic(`screenshot vs the bare picture ${toPicture.toFixed(2)}, vs the canvas with panels ${toPanels.toFixed(2)}`);
+  assert.equal(shot.width, WIDE[0]);
+  assert.ok(toPicture < 1, `the screenshot is the picture (mean difference ${toPicture.toFixed(2)})`);
+  assert.ok(toPanels > 5, `the panels are not in it (${toPanels.toFixed(2)} from the canvas with them)`);
+  assert.ok(back < 1, `the panels come back after it (${back.toFixed(2)})`);
 });

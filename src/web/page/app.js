@@ -57,6 +57,7 @@ function bindApi() {
     wheel: c('trailray_wheel', 'number', ['number', 'number']),
     key: c('trailray_key', 'number', ['number', 'number', 'number']),
     char: c('trailray_char', null, ['number']),
+    picture: c('trailray_picture', 'number', []),
   };
 }
 
@@ -227,7 +228,21 @@ function installFileOpening() {
   });
 }
 
-function installButtons(canvas) {
+// The picture as "Screenshot" saves it, at the canvas's size: the scene without the panels (drawn
+// for it; the next frame puts them back), the legend over it.
+page.picture = () => {
+  const canvas = document.getElementById('canvas');
+  page.api.picture();
+  const picture = document.createElement('canvas');
+  picture.width = canvas.width;
+  picture.height = canvas.height;
+  const context = picture.getContext('2d');
+  context.drawImage(canvas, 0, 0);
+  if (page.legend && page.legend.width) context.drawImage(document.getElementById('legend'), page.legend.x, page.legend.y);
+  return picture;
+};
+
+function installButtons() {
   document.getElementById('share').addEventListener('click', async () => {
     try {
       await navigator.clipboard.writeText(location.href);
@@ -237,14 +252,7 @@ function installButtons(canvas) {
     }
   });
   document.getElementById('screenshot').addEventListener('click', () => {
-    // The picture with the legend over it, at the canvas's size.
-    const picture = document.createElement('canvas');
-    picture.width = canvas.width;
-    picture.height = canvas.height;
-    const context = picture.getContext('2d');
-    context.drawImage(canvas, 0, 0);
-    if (page.legend && page.legend.width) context.drawImage(document.getElementById('legend'), page.legend.x, page.legend.y);
-    picture.toBlob((blob) => {
+    page.picture().toBlob((blob) => {
       const link = document.createElement('a');
       link.href = URL.createObjectURL(blob);
       link.download = 'trailray.png';
@@ -321,7 +329,7 @@ async function start() {
   }
   installGestures(canvas);
   installFileOpening();
-  installButtons(canvas);
+  installButtons();
   await window.trailrayTileCache?.ready;  // what follows is fetched through the tile cache
 
   // Served options first, then the query's, then the fragment's (the view last seen).
