@@ -319,6 +319,7 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
     const scene::LookAt& now = camera_->view();
     camera_->fly_to(ui::look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
   }
+  if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
   if (camera_) {
     // The hover follows the pointer over the picture (not over a panel), in device pixels.
     if (input_.moved() && !io.WantCaptureMouse) {
@@ -333,6 +334,34 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
     if (ui::draw_overlays(overlay)) camera_->reset_north();
   }
   return edited;
+}
+
+bool PageViewer::handle_keys(double seconds) {
+  // The DOM's key codes (page_input.hpp): letters as upper case, 187/189 for =/- (107/109 keypad).
+  const auto down = [](int code) { return ImGui::IsKeyDown(code); };
+  const auto pressed = [](int code) { return ImGui::IsKeyPressed(code, false); };
+  const double step = std::min(0.1, 0.8 * seconds);  // fractions of the distance per frame
+  bool held = false;
+  const auto when = [&](bool on, auto&& action) {
+    if (!on) return;
+    action();
+    held = camera_moved_ = dirty_ = true;
+  };
+  when(down('W') || down(38), [&] { camera_->move(0.0, step); });
+  when(down('S') || down(40), [&] { camera_->move(0.0, -step); });
+  when(down('D') || down(39), [&] { camera_->move(step, 0.0); });
+  when(down('A') || down(37), [&] { camera_->move(-step, 0.0); });
+  when(down('Q'), [&] { camera_->orbit(-200.0 * seconds, 0.0); });
+  when(down('E'), [&] { camera_->orbit(200.0 * seconds, 0.0); });
+  when(down(33), [&] { camera_->tilt(40.0 * seconds); });
+  when(down(34), [&] { camera_->tilt(-40.0 * seconds); });
+  const double cx = width_px_ / 2.0, cy = height_px_ / 2.0;
+  when(down(187) || down(107), [&] { camera_->zoom(4.0 * seconds, cx, cy); });
+  when(down(189) || down(109), [&] { camera_->zoom(-4.0 * seconds, cx, cy); });
+  if (pressed('N')) camera_->reset_north();
+  if (pressed('F')) fly_to_track(std::max(0, model_.selected_track));
+  if (pressed(' ')) model_.clock.toggle();
+  return held;
 }
 
 void PageViewer::update_hover(double x_px, double y_px) {

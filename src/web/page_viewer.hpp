@@ -82,6 +82,9 @@ class PageViewer {
   // The panels and overlays (ImGui) for this frame; true when an edit may have changed the scene.
   bool interface_frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds);
   void update_hover(double x_px, double y_px);
+  // The desktop viewer's keys (app/view/viewer_input.cpp) from ImGui's key state: true while one
+  // that moves the camera is held (frames must go on).
+  bool handle_keys(double seconds);
   // The sun's time: the `time` option (or the shading panel's), else the tracks' day at noon, or
   // today's noon where the page looks before any track is open.
   double sun_time() const;

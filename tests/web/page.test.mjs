@@ -382,3 +382,18 @@ test('the screenshot is the picture without the panels, with the legend', async 
   assert.ok(toPanels > 5, `the panels are not in it (${toPanels.toFixed(2)} from the canvas with them)`);
   assert.ok(back < 1, `the panels come back after it (${back.toFixed(2)})`);
 });
+
+test('the keys are the desktop viewer\'s: E turns the view, N turns it north up', async () => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&track=examples/hike.gpx&heading=0`, ...WIDE);
+  await framesDrawn(page);
+  await page.focus('#canvas');
+  const heading = async () => Number(/heading=([-0-9.]+)/.exec(await page.evaluate(() => window.trailray.api.viewState()))[1]);
+  await page.keyboard.down('KeyE');
+  await new Promise((r) => setTimeout(r, 800));
+  await page.keyboard.up('KeyE');
+  const turned = await heading();
+  assert.ok(Math.abs(turned) > 5, `E held turns the view (heading ${turned})`);
+  await page.keyboard.press('KeyN');
+  await page.waitForFunction(() => /&heading=-?0\.00&/.test(`&${window.trailray.api.viewState()}&`), { timeout: 30000 });
+  await page.close();
+});

@@ -203,14 +203,11 @@ function installGestures(canvas) {
     const panels = page.api.key(e.keyCode, 1, modifiers(e)) === 1;
     if (e.key.length === 1 && !e.ctrlKey && !e.metaKey) page.api.char(e.key.codePointAt(0));
     if (panels) { if (e.key === 'Tab' || e.key === ' ') e.preventDefault(); return; }
-    const keys = {
-      ArrowUp: () => page.api.move(0, 0.1), ArrowDown: () => page.api.move(0, -0.1),
-      ArrowLeft: () => page.api.move(-0.1, 0), ArrowRight: () => page.api.move(0.1, 0),
-      PageUp: () => page.api.tilt(5), PageDown: () => page.api.tilt(-5),
-      '+': () => page.api.zoom(1, canvas.width / 2, canvas.height / 2),
-      '-': () => page.api.zoom(-1, canvas.width / 2, canvas.height / 2),
-    };
-    if (keys[e.key]) { keys[e.key](); e.preventDefault(); }
+    // The camera keys are the viewer's (as on the desktop: WASD or arrows move, Q/E turn, Page
+    // Up/Down tilt, +/- zoom, N north up, F fly to the track, space plays the replay); P saves
+    // the picture as the Screenshot button does.
+    if (e.key === 'p' || e.key === 'P') document.getElementById('screenshot').click();
+    if (e.key.startsWith('Arrow') || e.key.startsWith('Page') || e.key === ' ') e.preventDefault();
   });
 }
 
