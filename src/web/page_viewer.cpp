@@ -21,6 +21,7 @@
 #include "terrain/encoded_sources.hpp"
 #include "track/io/text_output.hpp"
 #include "ui/framing_room.hpp"
+#include "ui/replay_follow.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/track_picking.hpp"
 #include "ui/viewer_overlay.hpp"
@@ -289,6 +290,7 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   if (pressed || input_.moved()) ui_frames_ = std::max(ui_frames_, kUiFramesAfterInput);
   model_.settings.sun_time_unix = sun_time();  // what the shading panel starts from
   imgui_.begin_frame();
+  if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
   if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
   const ui::PanelActions actions = ui::draw_panels(model_, seconds);
   // An edit in the panels (a click, a key, the wheel over them) may have changed the scene.
@@ -319,7 +321,17 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
     const scene::LookAt& now = camera_->view();
     camera_->fly_to(ui::look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
   }
-  if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
+  // The replay's camera follow: the scene is drawn again each frame it moves the camera.
+  if (camera_) {
+    const scene::LookAt before = camera_->view();
+    if (ui::follow_replay(model_, *camera_)) {
+      const scene::LookAt& now = camera_->view();
+      if (now.target.lat_deg != before.target.lat_deg || now.target.lon_deg != before.target.lon_deg ||
+          now.target.height_m != before.target.height_m || now.heading_deg != before.heading_deg ||
+          now.distance_m != before.distance_m || now.pitch_deg != before.pitch_deg)
+        camera_moved_ = dirty_ = true;
+    }
+  }
   if (camera_) {
     // The hover follows the pointer over the picture (not over a panel), in device pixels.
     if (input_.moved() && !io.WantCaptureMouse) {

@@ -10,6 +10,7 @@
 #include "scene/legend_content.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/panel_layout.hpp"
+#include "ui/replay_follow.hpp"
 #include "ui/waypoint_view.hpp"
 
 namespace trailray::app::view {
@@ -56,26 +57,7 @@ void ViewerApp::fly_to_waypoint(int index) {
       look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(index)], now.heading_deg, now.pitch_deg));
 }
 
-void ViewerApp::follow_replay() {
-  const ReplayClock& clock = model_.clock;
-  if (clock.follow == FollowMode::off || clock.follow_track < 0 ||
-      clock.follow_track >= static_cast<int>(model_.tracks.size()))
-    return;
-  const scene::Track& t = model_.tracks[static_cast<std::size_t>(clock.follow_track)];
-  const TrackPosition p = position_at(t, clock.time());
-  if (!p.valid) return;
-  const geo::Geodetic g = geo::geodetic_from_ecef(p.ecef);
-  const scene::GeoPosition at{g.lat_deg, g.lon_deg, g.height_m};
-  std::optional<double> heading;
-  if (clock.follow == FollowMode::chase && p.point + 1 < t.point_count()) {
-    // Look along the way the track goes from here (the segment the marker is on).
-    const scene::EnuAxes enu = scene::enu_axes_at(at.lat_deg, at.lon_deg);
-    const glm::dvec3 d = t.ecef(p.point + 1) - t.ecef(p.point);
-    const double east = glm::dot(d, enu.east), north = glm::dot(d, enu.north);
-    if (std::hypot(east, north) > 0.1) heading = std::atan2(east, north) * 180.0 / 3.14159265358979323846;
-  }
-  controller_.follow(at, heading);
-}
+void ViewerApp::follow_replay() { ui::follow_replay(model_, controller_); }
 
 // The corner a framing keeps the tracks out of: the legend's, large enough for the legend window
 // (where it first appears, in the bottom-left corner) and for the legend of screenshots (drawn
