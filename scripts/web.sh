@@ -12,6 +12,7 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache); fi
 # The tests run under node; emcmake's default emulator passes a flag Node 20 rejects, and Node
 # 20's own fetch() stands in the way of emscripten's file loading (--no-experimental-fetch).
-emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_TESTS=ON -DTRAILRAY_WERROR=ON \
+# TRAILRAY_WEB_TESTS=OFF: the web app only (scripts/serve.sh), not the tests.
+emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release "-DTRAILRAY_TESTS=${TRAILRAY_WEB_TESTS:-ON}" -DTRAILRAY_WERROR=ON \
   "-DCMAKE_CROSSCOMPILING_EMULATOR=$(command -v node);--no-experimental-fetch" "${launcher[@]}" >/dev/null
 cmake --build build-web
