@@ -105,6 +105,9 @@ struct ViewerModel {
   // The ground where no terrain is known (the tracks' lowest point, as the tracks were built
   // with): where a curtain switched on in the panels goes down to.
   double neutral_ground_m = std::numeric_limits<double>::quiet_NaN();
+  // Whether the viewer draws a cheaper frame while the camera moves (the desktop's; the page
+  // draws the full frame): the shading panel offers the switch only then.
+  bool offers_moving_frame = true;
   ProfilerTable profile;
   std::vector<std::string> errors;  // files that could not be read etc., shown in a window
   track::AnalysisOptions analysis;  // how the tracks were cleaned and measured (range statistics)

@@ -313,7 +313,7 @@ void shading_window(ViewerModel& model) {
   ImGui::Checkbox("shadows", &shading.shadows);
   ImGui::Checkbox("ambient occlusion (SSAO)", &shading.ssao);
   ImGui::Checkbox("atmosphere", &shading.atmosphere);
-  ImGui::Checkbox("cheaper frame while moving", &s.moving_frame);
+  if (model.offers_moving_frame) ImGui::Checkbox("cheaper frame while moving", &s.moving_frame);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "half resolution, no ambient occlusion, shadows not redrawn; the full frame once the camera rests");

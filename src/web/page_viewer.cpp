@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // MovingWindow: a panel moved is no edit
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
@@ -69,7 +70,10 @@ std::string plain_file_name(const std::string& name) {
 
 }  // namespace
 
-PageViewer::PageViewer() { open_terrain(); }
+PageViewer::PageViewer() {
+  model_.offers_moving_frame = false;
+  open_terrain();
+}
 
 void PageViewer::open_terrain() {
   terrain_view_.reset();
@@ -293,8 +297,10 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
   if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
   const ui::PanelActions actions = ui::draw_panels(model_, seconds);
-  // An edit in the panels (a click, a key, the wheel over them) may have changed the scene.
-  const bool edited = pressed && (io.WantCaptureMouse || io.WantCaptureKeyboard);
+  // An edit in the panels (a click, a key, the wheel over them, or a slider dragged: an item held
+  // while the pointer moves, not a panel being moved) may have changed the scene.
+  const bool dragging = ImGui::IsAnyItemActive() && input_.moved() && !ImGui::GetCurrentContext()->MovingWindow;
+  const bool edited = (pressed && (io.WantCaptureMouse || io.WantCaptureKeyboard)) || dragging;
   if (edited) {
     // Into the address like the options they stand for, so a copied link keeps them.
     for (auto& change : style_option_changes(options_.style, model_.settings.style)) {

@@ -397,3 +397,29 @@ test('the keys are the desktop viewer\'s: E turns the view, N turns it north up'
   await page.waitForFunction(() => /&heading=-?0\.00&/.test(`&${window.trailray.api.viewState()}&`), { timeout: 30000 });
   await page.close();
 });
+
+test('the shading panel\'s time of day moves the sun, live while dragged, and goes into the address', async (t) => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&track=examples/hike.gpx&time=2024-07-13T10:00:00Z`, ...WIDE);
+  await framesDrawn(page);
+  await settle(page);
+  const before = pictureArea(await canvasPixels(page));
+  // Windows menu (top left) -> Shading (its fifth entry); the panel opens with the time slider
+  // in its first row (x 277..517 for 0..24 h at this size).
+  await page.mouse.click(40, 10);
+  await settle(page);
+  await page.mouse.click(37, 112);
+  await settle(page);
+  const drawn = (await status(page)).frames_drawn;
+  await page.mouse.move(377, 70);
+  await page.mouse.down();
+  await page.mouse.move(437, 70, { steps: 4 });
+  await settle(page);
+  assert.ok((await status(page)).frames_drawn > drawn, 'the scene is drawn again while the slider is dragged');
+  await page.mouse.up();
+  await page.waitForFunction(() => /[#&]time=2024-07-13T1[5-7]:\d\d:\d\dZ/.test(location.hash), { timeout: 20000 });
+  await settle(page);
+  const moved = changedPixels(before, pictureArea(await canvasPixels(page)));
+  t.diagnostic(`${/time=[^&]*/.exec(new URL(page.url()).hash)[0]}: ${moved} pixels changed (the shadows moved)`);
+  assert.ok(moved > 1000, `the sun moved the shadows (${moved} pixels changed)`);
+  await page.close();
+});
