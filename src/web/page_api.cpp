@@ -67,12 +67,6 @@ EMSCRIPTEN_KEEPALIVE void trailray_pan(double x0, double y0, double x1, double y
 EMSCRIPTEN_KEEPALIVE void trailray_zoom(double steps, double x, double y) {
   if (viewer) viewer->zoom(steps, x, y);
 }
-EMSCRIPTEN_KEEPALIVE void trailray_tilt(double degrees) {
-  if (viewer) viewer->tilt(degrees);
-}
-EMSCRIPTEN_KEEPALIVE void trailray_move(double right, double forward) {
-  if (viewer) viewer->move(right, forward);
-}
 
 // The pointer (CSS pixels of the canvas, x NaN: it left; the DOM's button mask), the wheel (lines)
 // and keys (the DOM's keyCode; modifier bits 1 ctrl, 2 shift, 4 alt, 8 meta) for the panels. Each

@@ -243,16 +243,6 @@ void PageViewer::zoom(double steps, double x, double y) {
   camera_->zoom(steps, x, y);
   camera_moved_ = dirty_ = true;
 }
-void PageViewer::tilt(double degrees) {
-  if (!camera_) return;
-  camera_->tilt(degrees);
-  camera_moved_ = dirty_ = true;
-}
-void PageViewer::move(double right, double forward) {
-  if (!camera_) return;
-  camera_->move(right, forward);
-  camera_moved_ = dirty_ = true;
-}
 
 bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds) {
   if (width_px == 0 || height_px == 0) return false;

@@ -42,8 +42,6 @@ class PageViewer {
   void orbit(double dx_px, double dy_px);
   void pan(double from_x, double from_y, double to_x, double to_y);
   void zoom(double steps, double x_px, double y_px);
-  void tilt(double degrees);
-  void move(double right, double forward);
 
   // The pointer, wheel and keys for the panels (and the hover); the gestures above move the camera
   // when the panels do not want them (wants_mouse, wants_keyboard: as of the last frame).

@@ -46,8 +46,6 @@ function bindApi() {
     orbit: c('trailray_orbit', null, ['number', 'number']),
     pan: c('trailray_pan', null, ['number', 'number', 'number', 'number']),
     zoom: c('trailray_zoom', null, ['number', 'number', 'number']),
-    tilt: c('trailray_tilt', null, ['number']),
-    move: c('trailray_move', null, ['number', 'number']),
     frame: c('trailray_frame', 'number', ['number', 'number', 'number', 'number']),
     error: c('trailray_error', 'string', []),
     viewState: c('trailray_view_state', 'string', []),
