@@ -7,13 +7,14 @@
 #    fuzz_terrain_text (config, URL templates, Cache-Control, disk cache entries)
 #    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges, points CSV)
 #    fuzz_film_text (video: --camera-path files, --duration/--speed/--from/--to/--trail)
+#    fuzz_serve_request (serve: request targets, path segments as numbers, the web root's answers)
 # 2. regressions: runs each fuzzer once over every file in tests/fuzz/regressions/<format>/
 # 3. fuzzes each target for SECONDS_PER_TARGET. The corpus lives in fuzz-corpus/<format>/
 #    (git-ignored, kept between runs); seeds are read in place from ../shared/data/<format>/
 #    (../shared/data/tiles/ for tile; never copied) and from the regression inputs.
 # A crash, hang (-timeout=10) or excess memory (-rss_limit_mb=2048) is copied into
 # tests/fuzz/regressions/<format>/ and makes the script exit 1 after all targets have run.
-# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text" picks targets; FUZZ_MAX_LEN (default 1048576) caps
+# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text serve_request" picks targets; FUZZ_MAX_LEN (default 1048576) caps
 # input size -- the real files make MB-sized inputs, which run at ~20-100 exec/s under
 # ASan, so FUZZ_MAX_LEN=16384 explores much faster. One process per target, one at a time.
 set -uo pipefail
@@ -21,7 +22,7 @@ cd "$(dirname "$0")/.." || exit 2
 ROOT=$(pwd)
 
 SECONDS_PER_TARGET=${1:-60}
-TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text}
+TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text serve_request}
 BUILD=build-fuzz
 DATA="$ROOT/../shared/data"
 REGRESSIONS="$ROOT/tests/fuzz/regressions"
@@ -39,8 +40,9 @@ if [ -f "$BUILD/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang' "$B
   echo "fuzz: $BUILD was configured with another compiler; reconfiguring from scratch"
   rm -rf "$BUILD"
 fi
+source scripts/compiler_cache.sh
 CC=clang CXX=clang++ cmake -S . -B "$BUILD" -G Ninja -DTRAILRAY_FUZZ=ON -DTRAILRAY_TESTS=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null || { echo "fuzz: configure failed" >&2; exit 2; }
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}" >/dev/null || { echo "fuzz: configure failed" >&2; exit 2; }
 build_targets=()
 for t in $TARGETS; do build_targets+=("fuzz_$t"); done
 ninja -C "$BUILD" "${build_targets[@]}" || { echo "fuzz: build failed" >&2; exit 2; }
@@ -116,7 +118,7 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
     seed_dir="$DATA/$fmt"
     [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
     [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records
-    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ]; then
+    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ]; then
       :  # seeded by its regression inputs (a config, a template, a header, a cache entry)
     elif [ -d "$seed_dir" ]; then
       seeds+=("$seed_dir")

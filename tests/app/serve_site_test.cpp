@@ -43,6 +43,14 @@ TEST(ServeRequestPath, RefusesEverySpellingOfAnotherPlace) {
   EXPECT_TRUE(parse_request_target("/a?../../%00").ok());
 }
 
+TEST(ServeRequestPath, NumbersHaveOneSpelling) {
+  EXPECT_EQ(parse_segment_number("0"), 0u);
+  EXPECT_EQ(parse_segment_number("17"), 17u);
+  EXPECT_EQ(parse_segment_number("4294967295"), 4294967295u);
+  for (const char* text : {"", "01", "00", "+1", "-1", " 1", "1 ", "1e3", "0x1", "4294967296", "99999999999", "1.0"})
+    EXPECT_FALSE(parse_segment_number(text)) << text;
+}
+
 TEST(ServeWebRoot, FindsFilesInsideAndNothingOutside) {
   trailray::test::TempDir dir;
   const fs::path web = dir.path() / "web";

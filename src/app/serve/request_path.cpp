@@ -66,4 +66,15 @@ ParsedTarget parse_request_target(std::string_view target) {
   return parsed;
 }
 
+std::optional<std::uint32_t> parse_segment_number(std::string_view segment) {
+  if (segment.empty() || segment.size() > 10 || (segment.size() > 1 && segment.front() == '0')) return std::nullopt;
+  std::uint64_t value = 0;
+  for (const char c : segment) {
+    if (c < '0' || c > '9') return std::nullopt;
+    value = value * 10 + static_cast<std::uint64_t>(c - '0');
+  }
+  if (value > 0xffffffffu) return std::nullopt;
+  return static_cast<std::uint32_t>(value);
+}
+
 }  // namespace trailray::app::serve

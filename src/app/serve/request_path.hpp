@@ -6,6 +6,8 @@
 // %2e%2e), empty segments (`//`), backslashes, encoded slashes, NUL and other control bytes, and
 // targets that are not a path from the root (`*`, `http://host/...`).
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,5 +27,10 @@ struct ParsedTarget {
 
 // The query (`?...`) and a fragment are ignored; the path before them must start with `/`.
 ParsedTarget parse_request_target(std::string_view target);
+
+// A path segment that names a number (a track's index, a tile's z, x or y): decimal digits in
+// their one spelling (no sign, no leading zero, no spaces) of at most 2^32 - 1; else nullopt, so
+// "01" or "+1" can never name what "1" names.
+std::optional<std::uint32_t> parse_segment_number(std::string_view segment);
 
 }  // namespace trailray::app::serve

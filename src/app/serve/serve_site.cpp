@@ -77,16 +77,6 @@ HttpResponse not_built_page(const ServeSite& site) {
   return r;
 }
 
-std::optional<std::size_t> parse_index(const std::string& text) {
-  if (text.empty() || text.size() > 9 || (text.size() > 1 && text.front() == '0')) return std::nullopt;
-  std::size_t value = 0;
-  for (char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-    value = value * 10 + static_cast<std::size_t>(c - '0');
-  }
-  return value;
-}
-
 HttpAnswer now(HttpResponse r) {
   HttpAnswer a;
   a.now = std::move(r);
@@ -159,7 +149,7 @@ HttpAnswer answer_request(const ServeSite& site, const HttpRequest& request) {
   }
   if (!s.empty() && s[0] == "tracks") {
     if (s.size() != 3 || path.trailing_slash) return not_found();
-    const auto index = parse_index(s[1]);
+    const auto index = parse_segment_number(s[1]);
     if (!index || *index >= site.tracks.size() || site.tracks[*index].name != s[2]) return not_found();
     return now(file_response(site.tracks[*index].path, "application/octet-stream"));
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "app/serve/request_path.hpp"
 #include "terrain/encoded_sources.hpp"
 #include "terrain/height_decode.hpp"
 #include "terrain/image_codec.hpp"
@@ -12,17 +13,6 @@ namespace {
 // The source's tiles do not change while it is served; an hour lets a browser keep them across
 // reloads without pinning a source the user replaces at the next start for long.
 constexpr const char* kTileCacheControl = "public, max-age=3600";
-
-std::optional<std::uint32_t> parse_number(const std::string& text) {
-  if (text.empty() || text.size() > 10 || (text.size() > 1 && text.front() == '0')) return std::nullopt;
-  std::uint64_t value = 0;
-  for (char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-    value = value * 10 + static_cast<std::uint64_t>(c - '0');
-  }
-  if (value > 0xffffffffu) return std::nullopt;
-  return static_cast<std::uint32_t>(value);
-}
 
 // Tiles are public data (a DEM, a map): any page may draw them, so they carry CORS.
 HttpResponse tile_bytes(std::vector<unsigned char> bytes, std::string content_type) {
@@ -68,8 +58,8 @@ std::optional<terrain::TileId> parse_tile_segments(const std::vector<std::string
   const std::string& last = segments[first + 2];
   if (last.size() <= suffix.size() || last.compare(last.size() - suffix.size(), suffix.size(), suffix) != 0)
     return std::nullopt;
-  const auto z = parse_number(segments[first]), x = parse_number(segments[first + 1]),
-             y = parse_number(last.substr(0, last.size() - suffix.size()));
+  const auto z = parse_segment_number(segments[first]), x = parse_segment_number(segments[first + 1]),
+             y = parse_segment_number(last.substr(0, last.size() - suffix.size()));
   if (!z || !x || !y || static_cast<int>(*z) > max_zoom) return std::nullopt;
   return geo::make_tile_id(static_cast<int>(*z), *x, *y);
 }
