@@ -10,6 +10,7 @@ packages=(
   cmake                  # the build (3.25)
   ninja-build            # fast incremental builds
   pkg-config             # locating libraries from CMake
+  ccache                 # compiler cache (scripts/compiler_cache.sh): test.sh's four builds rebuilt from it in a fresh clone
   # --- libraries used by src/ ---
   libfast-float-dev      # correctly rounded number parsing, several times faster than strtod/from_chars
   zlib1g-dev             # reading .gpx.gz / .igc.gz / .tcx.gz transparently

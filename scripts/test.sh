@@ -7,14 +7,15 @@ cd "$(dirname "$0")/.."
 jobs=$(nproc)
 
 scripts/setup.sh
+source scripts/compiler_cache.sh
 
 echo "== Release build, all tests"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_TESTS=ON -DTRAILRAY_BENCH=ON -DTRAILRAY_WERROR=ON >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_TESTS=ON -DTRAILRAY_BENCH=ON -DTRAILRAY_WERROR=ON "${launcher[@]}" >/dev/null
 cmake --build build
 ctest --test-dir build --no-tests=error --output-on-failure -j "$jobs"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build, all tests"
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTRAILRAY_SANITIZE=ON -DTRAILRAY_TESTS=ON -DTRAILRAY_WERROR=ON >/dev/null
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTRAILRAY_SANITIZE=ON -DTRAILRAY_TESTS=ON -DTRAILRAY_WERROR=ON "${launcher[@]}" >/dev/null
 cmake --build build-asan
 # LeakSanitizer runs at every test's exit (and every `trailray` the app tests start).
 # intercept_tls_get_addr=0: ASan's record of dynamically loaded modules' TLS blocks goes wrong

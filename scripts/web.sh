@@ -8,8 +8,7 @@ cd "$(dirname "$0")/.."
 
 # emcc 3.1.6 finds its JavaScript tools (acorn, terser) only through NODE_PATH.
 export NODE_PATH=/usr/share/nodejs
-launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache); fi
+source scripts/compiler_cache.sh
 # The tests run under node; emcmake's default emulator passes a flag Node 20 rejects, and Node
 # 20's own fetch() stands in the way of emscripten's file loading (--no-experimental-fetch).
 # TRAILRAY_WEB_TESTS=OFF: the web app only (scripts/serve.sh), not the tests.
