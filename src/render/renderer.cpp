@@ -11,6 +11,22 @@
 namespace trailray::render {
 namespace {
 
+// Sizes in pixels are the viewer's pixels: a target of `pixel_ratio` device pixels per pixel (a
+// high-DPI window, the page on a phone, `render --pixel-ratio`, the viewer's reduced frame while
+// moving) draws them that many device pixels wide, as it does the labels, so a track looks as wide
+// on every screen.
+scene::TrackStyle in_device_pixels(scene::TrackStyle style, double pixel_ratio) {
+  if (style.width.unit == scene::TrackWidth::Unit::pixels) style.width.value *= pixel_ratio;
+  // Never under a device pixel: thinner, a distant track breaks into dots (the reduced frame).
+  style.min_width_px = std::max(1.0, style.min_width_px * pixel_ratio);
+  return style;
+}
+scene::PinStyle in_device_pixels(scene::PinStyle style, double pixel_ratio) {
+  for (double* px : {&style.marker_px, &style.place_marker_px, &style.stem_px, &style.lift_px, &style.place_lift_px})
+    *px *= pixel_ratio;
+  return style;
+}
+
 // Runs a frame's passes, each in a debug group of its name, timed under that name (or another)
 // when there is a profiler.
 class FramePasses {
@@ -86,12 +102,15 @@ FrameReport Renderer::draw(const scene::Scene& scene, const scene::Camera& camer
   content.terrain = &tiles;
   content.shading = scene.style.shading;
   content.sun_direction_ecef = scene::sun_direction(scene);
-  content.track_settings = track_settings_for(scene.style.tracks, scene.color_range);
+  const double pixel_ratio = target.pixel_ratio > 0.0 ? target.pixel_ratio : 1.0;
+  const scene::TrackStyle track_style = in_device_pixels(scene.style.tracks, pixel_ratio);
+  content.track_settings = track_settings_for(track_style, scene.color_range);
   track_gpu_.begin_frame();
   if (scene.tracks != nullptr)
-    content.tracks = track_gpu_.draws(*scene.tracks, scene.color_range.has_value(), scene.style.tracks);
+    content.tracks = track_gpu_.draws(*scene.tracks, scene.color_range.has_value(), track_style);
   // Pins after the tracks: they are drawn by the same pass.
-  for (const TrackDraw& pin : pin_gpu_.draws(scene.waypoints, scene.style.pins)) content.tracks.push_back(pin);
+  for (const TrackDraw& pin : pin_gpu_.draws(scene.waypoints, in_device_pixels(scene.style.pins, pixel_ratio)))
+    content.tracks.push_back(pin);
   content.labels = layout_labels(scene, camera, target.pixel_ratio);
   content.volumes = volume_gpu_.draw(scene.volumes, tiles.report.neutral_ground_m);
   if (scene.volumes != nullptr)

@@ -241,10 +241,14 @@ TEST_F(LabelsTest, ThePixelRatioDrawsLargerText) {
   scene.terrain = &drawer.terrain();
   drawer.renderer().draw(scene, camera_, normal);
   drawer.renderer().draw(scene, camera_, doubled);
+  // The same without the label, at each ratio (the pin is drawn larger too).
   scene.style.labels.enabled = false;
-  ImageTarget plain;
+  ImageTarget plain, plain_doubled;
+  plain_doubled.pixel_ratio = 2.0;
   drawer.renderer().draw(scene, camera_, plain);
-  const scene::PixelRect one = changed_box(normal.image, plain.image), two = changed_box(doubled.image, plain.image);
+  drawer.renderer().draw(scene, camera_, plain_doubled);
+  const scene::PixelRect one = changed_box(normal.image, plain.image),
+                         two = changed_box(doubled.image, plain_doubled.image);
   ASSERT_FALSE(one.empty());
   ASSERT_FALSE(two.empty());
   EXPECT_NEAR(two.height, 2.0 * one.height, 0.2 * one.height);

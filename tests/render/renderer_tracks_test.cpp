@@ -83,6 +83,36 @@ TEST_F(RendererTracksTest, AHiddenTrackIsNotDrawn) {
   EXPECT_EQ(hidden.rgba, ground.rgba);
 }
 
+// A width in pixels is in the viewer's pixels: a target of two device pixels per pixel (a high-DPI
+// window, the page on a phone) draws the track twice as many pixels wide; a width in metres does
+// not change with it.
+TEST_F(RendererTracksTest, AWidthInPixelsFollowsThePixelRatioAndOneInMetresDoesNot) {
+  test::SceneDrawer drawer(nullptr, nullptr);
+  scene::TrackSet tracks = test::track_set({test::track_of(line(0))});
+  scene::Scene scene = test::plain_scene(kPlace, 0.0);
+  scene.style.shading.shadows = false;  // the track's own pixels, not its shadow's
+  scene.terrain = &drawer.terrain();
+  const auto covered = [&](double pixel_ratio) {
+    ImageTarget ground, drawn;
+    ground.pixel_ratio = drawn.pixel_ratio = pixel_ratio;
+    scene.tracks = nullptr;
+    drawer.renderer().draw(scene, camera_, ground);
+    scene.tracks = &tracks;
+    drawer.renderer().draw(scene, camera_, drawn);
+    std::size_t n = 0;
+    for (std::uint32_t y = 0; y < drawn.image.height; ++y)
+      for (std::uint32_t x = 0; x < drawn.image.width; ++x) n += drawn.image.pixel(x, y) != ground.image.pixel(x, y);
+    return static_cast<double>(n);
+  };
+  scene.style.tracks.width = {3.0, scene::TrackWidth::Unit::pixels};
+  const double one = covered(1.0), two = covered(2.0);
+  ASSERT_GT(one, 64.0);  // a line across the picture
+  EXPECT_NEAR(two / one, 2.0, 0.4) << one << " pixels at ratio 1, " << two << " at ratio 2";
+  scene.style.tracks.width = {12.0, scene::TrackWidth::Unit::metres};  // ~7 px: above the minimum width
+  const double metres_one = covered(1.0), metres_two = covered(2.0);
+  EXPECT_NEAR(metres_two / metres_one, 1.0, 0.1) << metres_one << " vs " << metres_two;
+}
+
 // Every pixel that `one` (of `all`) changes when drawn alone is the same, within 2/255, in the
 // picture of all of them; at least `min_pixels` such pixels.
 void expect_drawn_as_alone(test::SceneDrawer& drawer, const scene::Camera& camera, scene::Scene scene,
