@@ -4,7 +4,9 @@
 // tile not yet here starts its request and answers "cancelled" (the tile loader asks again on a
 // later frame, terrain/tile_loader.hpp); once the bytes arrive `on_arrival` is called (the viewer
 // draws again) and the next fetch() hands them over. 404 is "no data"; other failures carry
-// the status. Requests in flight are bounded (`max_in_flight`); the others wait their turn.
+// the status. Requests in flight are bounded (`max_in_flight`); the others wait their turn. The
+// bound is above the browser's six connections a host: requests wait in the browser's queue, not
+// for the next frame to start them (a frame takes a second in software GL).
 
 #include <cstdint>
 #include <functional>
@@ -21,7 +23,7 @@ namespace trailray::web {
 
 class FetchedTiles : public terrain::EncodedTileSource {
  public:
-  FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight = 6);
+  FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight = 16);
   ~FetchedTiles() override;
   FetchedTiles(const FetchedTiles&) = delete;
   FetchedTiles& operator=(const FetchedTiles&) = delete;

@@ -184,4 +184,25 @@ std::vector<std::pair<std::string, std::string>> style_option_changes(const scen
   return out;
 }
 
+std::string address_value(std::string_view value) {
+  static constexpr std::string_view kKept = "-_.~!$'()*,;:@/?{}#=[]";
+  std::string out;
+  out.reserve(value.size());
+  for (const char ch : value) {
+    const auto byte = static_cast<unsigned char>(ch);
+    const bool alnum = (byte >= '0' && byte <= '9') || (byte >= 'a' && byte <= 'z') || (byte >= 'A' && byte <= 'Z');
+    if (alnum || kKept.find(ch) != std::string_view::npos)
+      out += ch;
+    else
+      out += fmt::format("%{:02X}", byte);
+  }
+  return out;
+}
+
+std::vector<std::string_view> options_reset_by(std::string_view name) {
+  if (name == "terrain") return {"terrain-encoding", "terrain-max-zoom"};
+  if (name == "imagery") return {"imagery-max-zoom"};
+  return {};
+}
+
 }  // namespace trailray::web

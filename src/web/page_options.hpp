@@ -45,4 +45,14 @@ OptionOutcome apply_page_option(PageOptions& options, std::string_view name, std
 std::vector<std::pair<std::string, std::string>> style_option_changes(const scene::Style& before,
                                                                       const scene::Style& after);
 
+// `value` as it goes into the address's query or fragment, so URLSearchParams reads it back
+// unchanged: '%', '&', '+', space, quotes, angle brackets, controls and non-ASCII bytes are
+// percent-encoded ("+" would come back as a space, "&" would cut a URL template's own query in
+// two); what people read in a link ("/:,{}#=?@") stays as it is.
+std::string address_value(std::string_view value);
+
+// The options that setting `name` resets, so an earlier value of them must leave the address
+// (`terrain` sets the encoding guessed from its URL and the default zoom levels).
+std::vector<std::string_view> options_reset_by(std::string_view name);
+
 }  // namespace trailray::web

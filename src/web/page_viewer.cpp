@@ -20,6 +20,7 @@
 #include "scene/scene.hpp"
 #include "scene/track_building.hpp"
 #include "terrain/encoded_sources.hpp"
+#include "terrain/height_encoding.hpp"
 #include "track/io/text_output.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/replay_follow.hpp"
@@ -100,6 +101,10 @@ void PageViewer::open_terrain() {
   if (heights_ || imagery_) {
     terrain::TileLoaderOptions loading;
     loading.memory_budget_bytes = 256u << 20;
+    // Without threads the loader looks at this many queued tiles a frame: every one that arrived
+    // is taken and new requests start (FetchedTiles bounds those). Few would leave arrived tiles
+    // waiting behind the ones still on their way, a frame (a second, in software GL) each.
+    loading.tiles_per_request = 64;
     terrain_view_ = std::make_unique<scene::TerrainView>(heights_.get(), imagery_.get(), loading);
     scene::TileLoadPolicy policy;
     policy.wait = false;  // draw what is there; arrivals ask for another frame
@@ -163,7 +168,10 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
     rebuild_tracks();
     return std::string(name) + "=" + std::string(value) + ": " + e.what();
   }
-  std::erase_if(given_options_, [&](const auto& kv) { return kv.first == name; });
+  std::erase_if(given_options_, [&](const auto& kv) {
+    const auto reset = options_reset_by(name);
+    return kv.first == name || std::find(reset.begin(), reset.end(), kv.first) != reset.end();
+  });
   if (*outcome.effect != OptionEffect::camera) given_options_.emplace_back(name, value);
   if (*outcome.effect == OptionEffect::style) legend_dirty_ = true;
   // The panels show and edit what the options say.
@@ -463,7 +471,7 @@ std::string PageViewer::view_state() const {
                       v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
   }
   for (const auto& [name, value] : given_options_)
-    out += (out.empty() ? "" : "&") + name + (value.empty() ? "" : "=" + value);
+    out += (out.empty() ? "" : "&") + name + (value.empty() ? "" : "=" + address_value(value));
   return out;
 }
 
@@ -482,6 +490,16 @@ std::string PageViewer::status_json() const {
   const terrain::LoadProgress& p = terrain_report_.progress;
   j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};
   j["tile_failures"] = terrain_report_.failures;
+  // The sources in use and the page's defaults, for its "Terrain & imagery" form.
+  const auto sources = [](const PageOptions& o) {
+    const auto encoding = o.terrain.encoding.value_or(terrain::HeightEncoding::terrarium);
+    return nlohmann::json{{"terrain", o.terrain.source},
+                          {"terrain_encoding", std::string(terrain::to_string(encoding))},
+                          {"imagery", o.imagery.source}};
+  };
+  j["sources"] = sources(options_);
+  static const PageOptions defaults;
+  j["default_sources"] = sources(defaults);
   j["frames_drawn"] = frames_drawn_;
   // What the pointer is over: a track point (its tooltip's lines) or a panel.
   nlohmann::json hover = {{"track", model_.hover.track}};

@@ -49,10 +49,11 @@ export async function launchBrowser() {
   });
 }
 
-// A page of the given CSS size at device pixel ratio 1, opened at `url`, once the viewer runs.
-export async function openPage(browser, url, width = 640, height = 400) {
+// A page of the given CSS size at device pixel ratio 1, opened at `url`, once the viewer runs;
+// `viewport` overrides puppeteer's viewport fields (deviceScaleFactor, hasTouch).
+export async function openPage(browser, url, width = 640, height = 400, viewport = {}) {
   const page = await browser.newPage();
-  await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  await page.setViewport({ width, height, deviceScaleFactor: 1, ...viewport });
   const logs = [];
   page.on('console', (m) => logs.push(m.text()));
   page.on('pageerror', (e) => logs.push(String(e)));

@@ -3,8 +3,10 @@
 // with the command line's options draws what `trailray render` draws with the same options.
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
+import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
+import zlib from 'node:zlib';
 import { after, before, test } from 'node:test';
 
 import {
@@ -422,4 +424,181 @@ test('the shading panel\'s time of day moves the sun, live while dragged, and go
   t.diagnostic(`${/time=[^&]*/.exec(new URL(page.url()).hash)[0]}: ${moved} pixels changed (the shadows moved)`);
   assert.ok(moved > 1000, `the sun moved the shadows (${moved} pixels changed)`);
   await page.close();
+});
+
+// A Terrarium height tile (PNG, 256 x 256, RGB) of z/x/y: rolling hills of +-300 m about 800 m,
+// waves 3 and 4 km long in Web Mercator metres, so neighbouring tiles of any zoom meet and the
+// ground is relief, lit and shadowed, not the flat neutral plane.
+function hillTile(z, x, y) {
+  const size = 256;
+  const world = 40075016.686;
+  const rows = Buffer.alloc(size * (1 + size * 3));
+  for (let j = 0; j < size; ++j) {
+    rows[j * (1 + size * 3)] = 0;  // filter: none
+    const my = world / 2 - ((y * size + j + 0.5) / (size * 2 ** z)) * world;
+    for (let i = 0; i < size; ++i) {
+      const mx = ((x * size + i + 0.5) / (size * 2 ** z)) * world - world / 2;
+      const height = 800 + 300 * Math.sin((2 * Math.PI * mx) / 3000) * Math.cos((2 * Math.PI * my) / 4000);
+      const v = Math.round((height + 32768) * 256);
+      rows.set([(v >> 16) & 255, (v >> 8) & 255, v & 255], j * (1 + size * 3) + 1 + i * 3);
+    }
+  }
+  const crcTable = Array.from({ length: 256 }, (_, n) => {
+    let c = n;
+    for (let k = 0; k < 8; ++k) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+    return c >>> 0;
+  });
+  const crc = (bytes) => {
+    let c = 0xffffffff;
+    for (const b of bytes) c = crcTable[(c ^ b) & 255] ^ (c >>> 8);
+    return (c ^ 0xffffffff) >>> 0;
+  };
+  const chunk = (type, data) => {
+    const length = Buffer.alloc(4);
+    length.writeUInt32BE(data.length);
+    const body = Buffer.concat([Buffer.from(type, 'ascii'), data]);
+    const sum = Buffer.alloc(4);
+    sum.writeUInt32BE(crc(body));
+    return Buffer.concat([length, body, sum]);
+  };
+  const header = Buffer.alloc(13);
+  header.writeUInt32BE(size, 0);
+  header.writeUInt32BE(size, 4);
+  header.set([8, 2, 0, 0, 0], 8);  // 8 bits, RGB
+  return Buffer.concat([Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]), chunk('IHDR', header),
+    chunk('IDAT', zlib.deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]);
+}
+
+// A tile server of another origin (so it sends CORS headers, as the page's note says it must)
+// that answers /NAME/z/x/y.png with the hills and records what was asked.
+async function hillTileServer() {
+  const asked = [];
+  const server = http.createServer((request, response) => {
+    asked.push(request.url);
+    const zxy = /\/(\d+)\/(\d+)\/(\d+)\.png/.exec(request.url);
+    if (!zxy) { response.writeHead(404, { 'Access-Control-Allow-Origin': '*' }).end(); return; }
+    response.writeHead(200, { 'Content-Type': 'image/png', 'Access-Control-Allow-Origin': '*' })
+      .end(hillTile(...zxy.slice(1).map(Number)));
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  return { server, asked, url: `http://127.0.0.1:${server.address().port}/` };
+}
+
+// Every tile the view wants has come (none left on its way).
+const allTilesIn = (page) => page.waitForFunction(() => {
+  const s = JSON.parse(window.trailray.api.status());
+  return s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
+}, { timeout: 120000, polling: 250 });
+
+test('a terrain template typed into "Terrain & imagery" draws its tiles, and the address keeps it', async (t) => {
+  const tiles = await hillTileServer();
+  try {
+    const page = await openPage(browser, `${base}?${OFFLINE}&no-panels&color=%23ff00ff&track=examples/hike.gpx`);
+    await framesDrawn(page);
+    const flat = await canvasPixels(page);
+    await page.click('#sources-button');
+    assert.equal(await page.$eval('#sources', (f) => f.hidden), false, 'the form opens');
+    assert.equal(await page.$eval('#sources [name=terrain]', (i) => i.value), 'none', 'it shows the source in use');
+
+    // A wrong template is refused with its reason; the form stays open, the source unchanged.
+    await page.$eval('#sources [name=terrain]', (i) => { i.value = ''; });
+    await page.type('#sources [name=terrain]', 'ftp://tiles.example/{z}/{x}/{y}.png');
+    await page.click('#sources button[type=submit]');
+    assert.match((await page.evaluate(() => window.trailray.messages)).join('\n'), /^terrain=ftp:.*expected none or a URL template/m);
+    assert.equal(await page.$eval('#sources', (f) => f.hidden), false);
+    assert.equal((await status(page)).sources.terrain, 'none');
+
+    // A template whose own query has two parameters: '&' must survive the address.
+    const template = `${tiles.url}hills/{z}/{x}/{y}.png?a=1&b=2`;
+    await page.$eval('#sources [name=terrain]', (i) => { i.value = ''; });
+    await page.type('#sources [name=terrain]', template);
+    await page.click('#sources button[type=submit]');
+    assert.equal(await page.$eval('#sources', (f) => f.hidden), true, 'applied, the form closes');
+    const s = await status(page);
+    assert.equal(s.sources.terrain, template);
+    assert.equal(s.sources.terrain_encoding, 'terrarium');
+    await allTilesIn(page);
+    await settle(page);
+    assert.deepEqual((await status(page)).tile_failures, []);
+    assert.ok(tiles.asked.length > 0 && tiles.asked.every((u) => /^\/hills\/\d+\/\d+\/\d+\.png\?a=1&b=2$/.test(u)),
+      tiles.asked.slice(0, 3).join(' '));
+    const hills = await canvasPixels(page);
+    const changed = meanDifference(flat, hills);
+    t.diagnostic(`${tiles.asked.length} tiles asked; hills vs no terrain: mean difference ${changed.toFixed(1)} of 255`);
+    assert.ok(changed > 8, `the terrain is drawn (mean difference ${changed.toFixed(1)})`);
+    assert.match(new URL(page.url()).hash, /[#&]terrain=http:\/\/127\.0\.0\.1:\d+\/hills\/\{z\}\/\{x\}\/\{y\}\.png\?a=1%26b=2(&|$)/);
+
+    // The copied address opens the same source and the same picture.
+    const again = await openPage(browser, page.url());
+    assert.equal((await status(again)).sources.terrain, template);
+    await allTilesIn(again);
+    await settle(again);
+    const reopened = meanDifference(hills, await canvasPixels(again));
+    t.diagnostic(`reopened from the address: mean difference ${reopened.toFixed(2)}`);
+    assert.ok(reopened < 1, `reopened: mean difference ${reopened.toFixed(2)}`);
+    await again.close();
+    await page.close();
+  } finally {
+    tiles.server.close();
+  }
+});
+
+// The view's numbers as the fragment has them.
+async function viewOf(page) {
+  const state = new URLSearchParams(await page.evaluate(() => window.trailray.api.viewState()));
+  return { target: state.get('look-at'), distance: Number(state.get('distance')), heading: Number(state.get('heading')) };
+}
+
+test('touch: one finger orbits, two fingers pan, a pinch zooms', async () => {
+  const page = await openPage(browser, `${base}?${OFFLINE}&no-panels&track=examples/hike.gpx&heading=0`, 640, 400,
+    { hasTouch: true });
+  await framesDrawn(page);
+  const cdp = await page.createCDPSession();
+  // Touch points in CSS pixels; each move is one event with every finger's place.
+  const gesture = async (from, to, steps = 6) => {
+    const at = (k) => from.map(([x, y], i) => ({ id: i, x: x + ((to[i][0] - x) * k) / steps, y: y + ((to[i][1] - y) * k) / steps }));
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0) });
+    for (let k = 1; k <= steps; ++k) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(k) });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await settle(page);
+  };
+  const start = await viewOf(page);
+
+  await gesture([[320, 200]], [[420, 200]]);
+  const orbited = await viewOf(page);
+  assert.ok(Math.abs(orbited.heading - start.heading) > 5, `one finger turns the view (heading ${orbited.heading})`);
+  assert.equal(orbited.target, start.target, 'about the same point');
+
+  await gesture([[300, 200], [340, 200]], [[220, 200], [420, 200]]);
+  const pinched = await viewOf(page);
+  assert.ok(pinched.distance < orbited.distance * 0.6,
+    `spreading two fingers zooms in (distance ${orbited.distance} -> ${pinched.distance})`);
+  assert.ok(Math.abs(pinched.heading - orbited.heading) < 1, 'and does not turn the view');
+
+  await gesture([[280, 150], [360, 150]], [[280, 300], [360, 300]]);
+  const panned = await viewOf(page);
+  assert.notEqual(panned.target, pinched.target, 'two fingers moved together pan the view');
+  assert.ok(Math.abs(panned.distance / pinched.distance - 1) < 0.1,
+    `without zooming (distance ${pinched.distance} -> ${panned.distance})`);
+  await page.close();
+});
+
+test('at device pixel ratio 2 the canvas has twice the pixels and the same picture', async (t) => {
+  const url = `${base}?${OFFLINE}&no-panels&color=%23ff00ff&track=examples/hike.gpx`;
+  const one = await openPage(browser, url);
+  await framesDrawn(one);
+  const sharp = await openPage(browser, url, 640, 400, { deviceScaleFactor: 2 });
+  await framesDrawn(sharp);
+  const [a, b] = [await canvasPixels(one), await canvasPixels(sharp)];
+  await one.close();
+  await sharp.close();
+  assert.deepEqual([b.width, b.height], [1280, 800]);
+  const [ta, tb] = [pixelsOfColor(a, MAGENTA, 60), pixelsOfColor(b, MAGENTA, 60)];
+  t.diagnostic(`track pixels ${ta.count} at ratio 1, ${tb.count} at ratio 2 (${(tb.count / ta.count).toFixed(2)}x)`);
+  // The same view: the track where it was, relative to the picture.
+  assert.ok(Math.abs(ta.x / a.width - tb.x / b.width) < 0.02 && Math.abs(ta.y / a.height - tb.y / b.height) < 0.02,
+    `the track in the same place (${ta.x / a.width}, ${ta.y / a.height} vs ${tb.x / b.width}, ${tb.y / b.height})`);
+  // The track's width is in CSS pixels: twice as long and twice as wide, about four times the
+  // pixels (a width left in device pixels would give about two).
+  assert.ok(tb.count > 3 * ta.count && tb.count < 5 * ta.count, `${tb.count} vs ${ta.count}`);
 });

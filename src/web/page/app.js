@@ -257,6 +257,50 @@ function installButtons() {
   });
 }
 
+// "Terrain & imagery": the sources in use, as URL templates, changed in the page (the `terrain`,
+// `terrain-encoding` and `imagery` options, so the address keeps them like any other).
+function installSourcesForm() {
+  const form = document.getElementById('sources');
+  const button = document.getElementById('sources-button');
+  const encoding = form.elements['terrain-encoding'];
+  let encodingChosen = false;  // else the terrain option's guess from its URL stands
+  const fill = (sources) => {
+    form.elements.terrain.value = sources.terrain;
+    encoding.value = sources.terrain_encoding;
+    form.elements.imagery.value = sources.imagery;
+  };
+  const show = (open) => {
+    form.hidden = !open;
+    button.setAttribute('aria-expanded', String(open));
+    if (!open) { document.getElementById('canvas').focus(); return; }
+    fill(JSON.parse(page.api.status()).sources);
+    encodingChosen = false;
+    form.elements.terrain.focus();
+  };
+  button.addEventListener('click', () => show(form.hidden));
+  form.elements.cancel.addEventListener('click', () => show(false));
+  form.elements.defaults.addEventListener('click', () => {
+    fill(JSON.parse(page.api.status()).default_sources);
+    encodingChosen = true;
+  });
+  encoding.addEventListener('change', () => { encodingChosen = true; });
+  form.addEventListener('keydown', (e) => { if (e.key === 'Escape') show(false); });
+  form.addEventListener('submit', (e) => {
+    e.preventDefault();
+    const now = JSON.parse(page.api.status()).sources;
+    const terrain = form.elements.terrain.value.trim() || 'none';
+    const imagery = form.elements.imagery.value.trim() || 'none';
+    let failed = false;
+    // Only what changed: setting a source again would drop what serve gave with it (max zoom).
+    if (terrain !== now.terrain) failed ||= Boolean(setOption('terrain', terrain));
+    if (!failed && terrain !== 'none' && encodingChosen && encoding.value !== now.terrain_encoding)
+      failed ||= Boolean(setOption('terrain-encoding', encoding.value));
+    if (!failed && imagery !== now.imagery) failed ||= Boolean(setOption('imagery', imagery));
+    tileFailureShown = false;  // the new sources' first failure is news
+    if (!failed) show(false);
+  });
+}
+
 // "terrain: 12 of 25 tiles" while tiles are on their way; the first failure once, as a note.
 let tileFailureShown = false;
 function showTileProgress(status) {
@@ -325,6 +369,7 @@ async function start() {
   installGestures(canvas);
   installFileOpening();
   installButtons();
+  installSourcesForm();
   await window.trailrayTileCache?.ready;  // what follows is fetched through the tile cache
 
   // Served options first, then the query's, then the fragment's (the view last seen).
