@@ -3,9 +3,9 @@
 // must either throw TileDecodeError with a message or return a tile that keeps the documented
 // contract (height_decode.hpp, tile.hpp); anything else aborts.
 //
-// In the fuzz build FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION makes libpng ignore CRCs and
-// Adler-32 checksums (image_codec.cpp), so mutated PNGs reach the pixel code; replayed in an
-// ordinary build (tests/fuzz/regressions/tile/) such inputs may stop at the checksum instead.
+// The target turns on ignore_png_checksums_for_fuzzing (image_codec.hpp): libpng ignores CRCs and
+// Adler-32 checksums, so mutated PNGs reach the pixel code. The switch is the target's own, so
+// its regression inputs (tests/fuzz/regressions/tile/) replay in every build exactly as found.
 
 #include <cmath>
 #include <cstddef>
@@ -15,6 +15,7 @@
 #include <span>
 
 #include "terrain/height_decode.hpp"
+#include "terrain/image_codec.hpp"
 
 namespace {
 
@@ -69,6 +70,8 @@ bool is_costly_png(std::span<const unsigned char> bytes) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const bool checksums_ignored = (ignore_png_checksums_for_fuzzing(true), true);
+  (void)checksums_ignored;
   const std::span<const unsigned char> bytes(data, size);
   if (is_costly_png(bytes)) return 0;
   const TileId id{5, 17, 11};

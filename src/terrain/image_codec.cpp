@@ -5,6 +5,7 @@
 #include <webp/decode.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cctype>
 #include <csetjmp>
@@ -17,6 +18,8 @@
 namespace trailray::terrain {
 
 namespace {
+
+std::atomic<bool> png_checksums_ignored{false};  // ignore_png_checksums_for_fuzzing
 
 constexpr unsigned char kPngMagic[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
@@ -122,11 +125,11 @@ class PngReader {
   bool read(DecodedImage& image) {
     if (setjmp(png_jmpbuf(png_))) return false;
     png_set_read_fn(png_, &state_, png_read_from_memory);
-#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
-    // Let the fuzzer past the checksums, which random mutations would almost never satisfy.
-    png_set_crc_action(png_, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
-    png_set_option(png_, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
-#endif
+    if (png_checksums_ignored.load(std::memory_order_relaxed)) {
+      // Let the fuzzer past the checksums, which random mutations would almost never satisfy.
+      png_set_crc_action(png_, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+      png_set_option(png_, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
+    }
     png_read_info(png_, info_);
     const png_uint_32 width = png_get_image_width(png_, info_);
     const png_uint_32 height = png_get_image_height(png_, info_);
@@ -354,6 +357,8 @@ class PngWriter {
 std::uint8_t scale_16_to_8(std::uint32_t v) { return static_cast<std::uint8_t>((v * 255u + 32767u) / 65535u); }
 
 }  // namespace
+
+void ignore_png_checksums_for_fuzzing(bool ignore) { png_checksums_ignored.store(ignore, std::memory_order_relaxed); }
 
 std::string_view to_string(ImageFormat format) {
   switch (format) {

@@ -72,4 +72,11 @@ std::vector<unsigned char> encode_png(const DecodedImage& image, int zlib_level 
 // and benchmarks. Same errors as encode_png.
 std::vector<unsigned char> encode_jpeg(const DecodedImage& image, int quality = 85);
 
+// For the tile fuzz target only (fuzz/fuzz_tile_decode.cpp): decode PNGs whose CRC and Adler-32
+// checksums are wrong, so that mutated inputs reach the pixel code (random mutations almost
+// never keep a checksum right). Off unless a fuzz target turns it on. A switch at run time rather
+// than a compile definition, so the sanitizer tree builds the fuzzers and the test suite from the
+// same library, and the suite still sees checksums enforced.
+void ignore_png_checksums_for_fuzzing(bool ignore);
+
 }  // namespace trailray::terrain
