@@ -3,46 +3,43 @@
 #
 #   scripts/fuzz.sh [SECONDS_PER_TARGET]      (default 60; 0 = regression inputs only)
 #
-# 1. configures and builds build-fuzz (clang, -DTRAILRAY_FUZZ=ON) -> fuzz_gpx, fuzz_igc, fuzz_tcx, fuzz_fit, fuzz_kml (KML and KMZ), fuzz_geojson, fuzz_task (XCTrack tasks, IGC C records), fuzz_tile,
+# 1. configures build-sanitize if needed (scripts/sanitizer_tree.sh: the clang tree that also
+#    runs the test suite under the sanitizers) and builds the fuzz targets in it -> fuzz_gpx,
+#    fuzz_igc, fuzz_tcx, fuzz_fit, fuzz_kml (KML and KMZ), fuzz_geojson, fuzz_airspace,
+#    fuzz_task (XCTrack tasks, IGC C records), fuzz_tile,
 #    fuzz_terrain_text (config, URL templates, Cache-Control, disk cache entries)
 #    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges, points CSV)
 #    fuzz_film_text (video: --camera-path files, --duration/--speed/--from/--to/--trail)
 #    fuzz_serve_request (serve: request targets, path segments as numbers, the web root's answers)
 # 2. regressions: runs each fuzzer once over every file in tests/fuzz/regressions/<format>/
-# 3. fuzzes each target for SECONDS_PER_TARGET. The corpus lives in fuzz-corpus/<format>/
+# 3. fuzzes each target for SECONDS_PER_TARGET, FUZZ_JOBS targets at a time (default: one per
+#    core; each libFuzzer process uses one). The corpus lives in fuzz-corpus/<format>/
 #    (git-ignored, kept between runs); seeds are read in place from ../shared/data/<format>/
 #    (../shared/data/tiles/ for tile; never copied) and from the regression inputs.
 # A crash, hang (-timeout=10) or excess memory (-rss_limit_mb=2048) is copied into
 # tests/fuzz/regressions/<format>/ and makes the script exit 1 after all targets have run.
 # Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text serve_request" picks targets; FUZZ_MAX_LEN (default 1048576) caps
 # input size -- the real files make MB-sized inputs, which run at ~20-100 exec/s under
-# ASan, so FUZZ_MAX_LEN=16384 explores much faster. One process per target, one at a time.
+# ASan, so FUZZ_MAX_LEN=16384 explores much faster.
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
 ROOT=$(pwd)
 
 SECONDS_PER_TARGET=${1:-60}
 TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task tile terrain_text track_text film_text serve_request}
-BUILD=build-fuzz
+FUZZ_JOBS=${FUZZ_JOBS:-$(nproc)}
 DATA="$ROOT/../shared/data"
 REGRESSIONS="$ROOT/tests/fuzz/regressions"
 CORPUS="$ROOT/fuzz-corpus"
+
+source scripts/compiler_cache.sh
+source scripts/sanitizer_tree.sh
+BUILD=$sanitizer_tree
 ARTIFACTS="$ROOT/$BUILD/artifacts"
 LOGS="$ROOT/$BUILD/logs"
 
-if ! command -v clang++ >/dev/null 2>&1; then
-  echo "fuzz: clang++ not found (scripts/setup.sh installs clang and libclang-rt-14-dev)" >&2
-  exit 2
-fi
-
-echo "== configure + build ($BUILD)"
-if [ -f "$BUILD/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang' "$BUILD/CMakeCache.txt"; then
-  echo "fuzz: $BUILD was configured with another compiler; reconfiguring from scratch"
-  rm -rf "$BUILD"
-fi
-source scripts/compiler_cache.sh
-CC=clang CXX=clang++ cmake -S . -B "$BUILD" -G Ninja -DTRAILRAY_FUZZ=ON -DTRAILRAY_TESTS=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}" >/dev/null || { echo "fuzz: configure failed" >&2; exit 2; }
+echo "== configure + build the fuzz targets ($BUILD)"
+configure_sanitizer_tree || { echo "fuzz: configure failed" >&2; exit 2; }
 build_targets=()
 for t in $TARGETS; do build_targets+=("fuzz_$t"); done
 ninja -C "$BUILD" "${build_targets[@]}" || { echo "fuzz: build failed" >&2; exit 2; }
@@ -104,20 +101,16 @@ for fmt in $TARGETS; do
   fi
 done
 
-if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
-  echo
-  echo "== fuzzing, ${SECONDS_PER_TARGET}s per target"
-  for fmt in $TARGETS; do
-    bin="$BUILD/fuzz/fuzz_$fmt"
-    if [[ $regressed == *" $fmt "* ]]; then
-      echo "$fmt: not fuzzed: its regression inputs fail (it would only find those again)"
-      continue
-    fi
-    mkdir -p "$CORPUS/$fmt" "$ARTIFACTS/$fmt" "$REGRESSIONS/$fmt"
-    seeds=()
-    seed_dir="$DATA/$fmt"
-    [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
-    [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records
+# fuzz_one FORMAT: fuzzes one target; its report goes to $LOGS/summary-FORMAT.txt and it
+# leaves $LOGS/failed-FORMAT when it found something (the targets run side by side).
+fuzz_one() {
+  local fmt=$1 bin="$BUILD/fuzz/fuzz_$1" out="$LOGS/summary-$1.txt"
+  local seeds=() dict=() seed_dir="$DATA/$fmt" log="$LOGS/fuzz-$fmt.log" rc execs cov before
+  rm -f "$LOGS/failed-$fmt"
+  mkdir -p "$CORPUS/$fmt" "$ARTIFACTS/$fmt" "$REGRESSIONS/$fmt"
+  [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
+  [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records
+  {
     if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ]; then
       :  # seeded by its regression inputs (a config, a template, a header, a cache entry)
     elif [ -d "$seed_dir" ]; then
@@ -126,9 +119,7 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
       echo "$fmt: $seed_dir absent; not seeding from shared data"
     fi
     seeds+=("$REGRESSIONS/$fmt")
-    dict=()
     [ -f "$ROOT/fuzz/$fmt.dict" ] && dict=(-dict="$ROOT/fuzz/$fmt.dict")
-    log="$LOGS/fuzz-$fmt.log"
     echo "$fmt: $bin, corpus $CORPUS/$fmt, log $log"
     "$bin" "${dict[@]}" -max_total_time="$SECONDS_PER_TARGET" -max_len="${FUZZ_MAX_LEN:-1048576}" -rss_limit_mb=2048 \
       -timeout=10 -print_final_stats=1 \
@@ -155,8 +146,29 @@ if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
     else
       echo "$fmt: FAILED (libFuzzer exit $rc) after $execs executions; $cov"
       report "$log"
-      failed+=("$fmt")
+      touch "$LOGS/failed-$fmt"
     fi
+  } >"$out" 2>&1
+}
+
+if [ "$SECONDS_PER_TARGET" -gt 0 ] 2>/dev/null; then
+  echo
+  echo "== fuzzing, ${SECONDS_PER_TARGET}s per target, $FUZZ_JOBS at a time"
+  fuzzed=()
+  for fmt in $TARGETS; do
+    if [[ $regressed == *" $fmt "* ]]; then
+      echo "$fmt: not fuzzed: its regression inputs fail (it would only find those again)"
+      continue
+    fi
+    # At most FUZZ_JOBS targets at once: wait for one to end before starting the next.
+    while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n; done
+    fuzz_one "$fmt" &
+    fuzzed+=("$fmt")
+  done
+  wait
+  for fmt in "${fuzzed[@]}"; do
+    cat "$LOGS/summary-$fmt.txt"
+    [ -f "$LOGS/failed-$fmt" ] && failed+=("$fmt")
   done
 fi
 
