@@ -4,36 +4,21 @@
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <string>
 #include <vector>
 
-#include "app/airspace_options.hpp"
-#include "app/camera_options.hpp"
-#include "app/style_options.hpp"
-#include "app/terrain_options.hpp"
-#include "app/waypoint_options.hpp"
-#include "track/io/load.hpp"
-#include "track/summary.hpp"
+#include "app/picture_options.hpp"
 
 namespace trailray::app {
 
-struct RenderArgs {
+// `trailray render`: the picture's options shared with `video` (PictureArgs), and its own.
+struct RenderArgs : PictureArgs {
+  RenderArgs() : PictureArgs("1920x1080") {}
+
   std::vector<std::string> tracks;
   std::string output;
-  std::string size = "1920x1080";
-  double pixel_ratio = 1.0;  // device pixels per label pixel (high-DPI output)
-  CameraArgs camera;
-  StyleArgs style;
-  double timeout_s = 120.0;
-  bool verbose = false;
   bool profile = false;
   int frames = 1;
-  track::ReadOptions read;
-  track::AnalysisOptions analysis;
-  TerrainOptions terrain;
-  WaypointArgs waypoints;
-  AirspaceArgs airspace;
 };
 
 void add_render_options(CLI::App& command, RenderArgs& args);
@@ -41,7 +26,5 @@ void add_render_options(CLI::App& command, RenderArgs& args);
 // The checks CLI11 cannot make (--frames with --profile, a positive --timeout). Throws
 // CLI::ValidationError naming the option.
 void check_render_args(const RenderArgs& args);
-
-std::chrono::milliseconds timeout_of(const RenderArgs& args);
 
 }  // namespace trailray::app

@@ -2,10 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
-#include "app/track_options.hpp"
-
 namespace trailray::app {
 
 void add_video_options(CLI::App& cmd, VideoArgs& args) {
@@ -55,22 +51,11 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
                "the relief then reads from the shading of the slopes alone");
   cmd.add_option("--crf", args.crf, "Quality: lower is better and larger (H.264 0..51, VP9 0..63; default 20)")
       ->type_name("N");
-  cmd.add_option("--size", args.size, "Frame size in pixels, even numbers (default 1280x720)")->type_name("WxH");
-  cmd.add_option("--pixel-ratio", args.pixel_ratio, "Device pixels per pixel of the labels (default 1)")
-      ->type_name("R");
-  add_camera_options(cmd, args.camera);
-  cmd.add_option("--timeout", args.timeout_s, "Seconds to wait for the terrain tiles of a frame (default 120)")
-      ->type_name("S");
-  cmd.add_flag("--verbose", args.verbose, "Log the GL context, the cameras and the tiles");
-  add_shading_options(cmd, args.style);
-  add_terrain_options(cmd, args.terrain);
-  add_imagery_option(cmd, args.terrain);
-  add_track_style_options(cmd, args.style);
-  add_waypoint_options(cmd, args.waypoints);
-  add_airspace_options(cmd, args.airspace);
-  add_label_options(cmd, args.style);
-  add_read_options(cmd, args.read);
-  add_cleaning_options(cmd, args.analysis);
+  add_picture_options(cmd, args,
+                      {"Frame size in pixels, even numbers (default 1280x720)",
+                       "Device pixels per pixel of the labels (default 1)",
+                       "Seconds to wait for the terrain tiles of a frame (default 120)",
+                       "Log the GL context, the cameras and the tiles"});
 }
 
 FilmCameraMode check_video_args(const VideoArgs& a) {
@@ -79,10 +64,7 @@ FilmCameraMode check_video_args(const VideoArgs& a) {
   if (!a.duration.empty() && !a.speed.empty())
     throw CLI::ValidationError("--duration", "and --speed exclude each other");
   if (a.crf < 0 || a.crf > 63) throw CLI::ValidationError("--crf", fmt::format("'{}' is not in 0..63", a.crf));
-  if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
-    throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
-  if (!(a.pixel_ratio >= 0.25 && a.pixel_ratio <= 8.0))
-    throw CLI::ValidationError("--pixel-ratio", fmt::format("'{}' is not a ratio in 0.25..8", a.pixel_ratio));
+  check_picture_args(a);
   if (a.align != "clock" && a.align != "start")
     throw CLI::ValidationError("--align", fmt::format("'{}' is not clock or start", a.align));
   if (a.follow < 1 || static_cast<std::size_t>(a.follow) > a.tracks.size())

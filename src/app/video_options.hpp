@@ -5,27 +5,20 @@
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <string>
 #include <vector>
 
-#include "app/airspace_options.hpp"
-#include "app/camera_options.hpp"
-#include "app/style_options.hpp"
-#include "app/terrain_options.hpp"
-#include "app/waypoint_options.hpp"
-#include "track/io/load.hpp"
-#include "track/summary.hpp"
+#include "app/picture_options.hpp"
 
 namespace trailray::app {
 
-struct VideoArgs {
+// `trailray video`: the picture's options shared with `render` (PictureArgs), and the film's own.
+struct VideoArgs : PictureArgs {
+  VideoArgs() : PictureArgs("1280x720") {}
+
   std::vector<std::string> tracks;
   std::string output, frames_dir;
   bool force = false;
-  std::string size = "1280x720";
-  double pixel_ratio = 1.0;
-  CameraArgs camera;
   std::string mode;         // --camera-mode follow|orbit|fixed|path; empty: from the other options, else follow
   std::string camera_path;  // --camera-path FILE
   int follow = 1;           // --follow N: the track the camera follows (1-based)
@@ -36,14 +29,6 @@ struct VideoArgs {
   std::string overlay = "full";
   int crf = 20;
   bool fast = false;  // --fast: no shadows, no SSAO
-  StyleArgs style;
-  double timeout_s = 120.0;
-  bool verbose = false;
-  track::ReadOptions read;
-  track::AnalysisOptions analysis;
-  TerrainOptions terrain;
-  WaypointArgs waypoints;
-  AirspaceArgs airspace;
 };
 
 void add_video_options(CLI::App& command, VideoArgs& args);
