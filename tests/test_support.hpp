@@ -3,10 +3,11 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "unique_temp_dir.hpp"
 
 namespace trailray::test {
 
@@ -22,9 +23,7 @@ inline std::filesystem::path shared_data() { return std::filesystem::path(TRAILR
 class TempFile {
  public:
   explicit TempFile(const std::string& name, const std::string& content = {}) {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("trailray-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
-    std::filesystem::create_directories(dir_);
+    dir_ = make_unique_temp_dir("trailray-test-");
     path_ = dir_ / name;
     std::ofstream(path_, std::ios::binary) << content;
   }
@@ -38,10 +37,6 @@ class TempFile {
   std::string str() const { return path_.string(); }
 
  private:
-  static int& counter() {
-    static int c = 0;
-    return c;
-  }
   std::filesystem::path dir_, path_;
 };
 

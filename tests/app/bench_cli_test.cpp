@@ -28,9 +28,7 @@ bool positive_finite(const json& v) { return v.is_number() && std::isfinite(v.ge
 class ScratchDir {
  public:
   ScratchDir() {
-    path_ = std::filesystem::temp_directory_path() /
-            ("trailray-bench-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
-    std::filesystem::create_directories(path_);
+    path_ = trailray::test::make_unique_temp_dir("trailray-bench-test-");
   }
   ~ScratchDir() {
     std::error_code ec;
@@ -45,10 +43,6 @@ class ScratchDir {
   }
 
  private:
-  static int& counter() {
-    static int c = 0;
-    return c;
-  }
   std::filesystem::path path_;
 };
 

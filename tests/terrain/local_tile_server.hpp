@@ -48,6 +48,8 @@
 #include <utility>
 #include <vector>
 
+#include "unique_temp_dir.hpp"
+
 namespace trailray::test::http {
 
 // --- PNG bytes -------------------------------------------------------------------------------
@@ -119,11 +121,7 @@ inline std::optional<PngSize> png_size(std::span<const unsigned char> bytes) {
 class TempFolder {
  public:
   TempFolder() {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("trailray-http-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
+    path_ = make_unique_temp_dir("trailray-http-test-");
   }
   ~TempFolder() {
     std::error_code ec;
