@@ -30,8 +30,12 @@ void add_picture_options(CLI::App& cmd, PictureArgs& args, const PictureHelp& he
 void check_picture_args(const PictureArgs& a) {
   if (!(a.pixel_ratio >= 0.25 && a.pixel_ratio <= 8.0))
     throw CLI::ValidationError("--pixel-ratio", fmt::format("'{}' is not a ratio in 0.25..8", a.pixel_ratio));
-  if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
-    throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
+  check_timeout_option(a.timeout_s);
+}
+
+void check_timeout_option(double seconds) {
+  if (!(seconds > 0.0) || !std::isfinite(seconds))
+    throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", seconds));
 }
 
 std::chrono::milliseconds timeout_of(const PictureArgs& a) {

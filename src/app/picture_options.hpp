@@ -54,8 +54,12 @@ void add_picture_options(CLI::App& command, PictureArgs& args, const PictureHelp
                          const std::function<void()>& extra = {});
 
 // Throws CLI::ValidationError naming the option: --pixel-ratio outside 0.25..8, a --timeout that
-// is not a positive number of seconds.
+// is not a positive number of seconds (check_timeout_option).
 void check_picture_args(const PictureArgs& args);
+
+// --timeout of every command that waits for terrain tiles (render, video, view): throws
+// CLI::ValidationError unless it is a positive, finite number of seconds.
+void check_timeout_option(double seconds);
 
 std::chrono::milliseconds timeout_of(const PictureArgs& args);
 

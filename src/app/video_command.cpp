@@ -87,7 +87,7 @@ int run_video(const VideoArgs& a) {
   setup.volumes = &volumes;
   setup.terrain = &terrain;
   // Every frame waits for its tiles: a film never shows missing terrain.
-  setup.tiles = {true, std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000.0)),
+  setup.tiles = {true, timeout_of(a),
                  [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }};
   setup.style = style;
   setup.color_range = scene::color_range(loaded.tracks, style);

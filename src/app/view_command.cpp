@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <memory>
 
 #include "app/airspace_options.hpp"
 #include "app/camera_options.hpp"
+#include "app/picture_options.hpp"
 #include "app/style_options.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
@@ -41,8 +41,7 @@ int run_view(const ViewArgs& a) {
   o.camera = parse_camera_request(a.camera, !a.tracks.empty());
   if (a.frames < 0 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 0..{}", a.frames, kMaxFrames));
-  if (!(a.timeout_s > 0.0) || !std::isfinite(a.timeout_s))
-    throw CLI::ValidationError("--timeout", fmt::format("'{}' is not a positive number of seconds", a.timeout_s));
+  check_timeout_option(a.timeout_s);
   o.sun_time_unix = parse_sun_time(a.style.time);  // a bad --time is a usage error, before any window
   o.tracks = a.tracks;
   o.style = parse_style(a.style);
