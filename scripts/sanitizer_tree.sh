@@ -14,6 +14,6 @@ configure_sanitizer_tree() {
     echo "$sanitizer_tree was configured with another compiler; reconfiguring from scratch"
     rm -rf "$sanitizer_tree"
   fi
-  CC=clang CXX=clang++ cmake -S . -B "$sanitizer_tree" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTRAILRAY_SANITIZE=ON \
+  CC=clang CXX=clang++ cmake -S . -B "$sanitizer_tree" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTRAILRAY_SANITIZE=ON -DTRAILRAY_PYTHON=OFF \
     -DTRAILRAY_FUZZ=ON -DTRAILRAY_TESTS=ON -DTRAILRAY_WERROR=ON "${launcher[@]}" >/dev/null
 }

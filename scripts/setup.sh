@@ -41,6 +41,12 @@ packages=(
   libavutil-dev          # `trailray video`: frames, options, errors of the libraries above
   libmicrohttpd-dev      # `trailray serve`: HTTP with epoll, connection limits and timeouts, so slow clients stall nothing
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
+  # --- the Python module (src/python/: `import trailray` for /usr/bin/python3) ---
+  pybind11-dev           # C++ bindings with NumPy arrays over the track model's memory
+  python3-dev            # Python.h and the extension suffix of Debian's python3
+  python3-numpy          # the module's arrays
+  python3-pytest         # the module's tests (ctest runs them)
+  python3-pandas         # Track.to_pandas() and examples/python (optional for users)
   # --- the browser build (scripts/web.sh; sources of its C/C++ libraries: scripts/web-sources.sh) ---
   emscripten             # C++ to WebAssembly + WebGL2 (3.1.6, with its prebuilt libc/libc++ and node tests)
   dpkg-dev               # dpkg-source: apt-get source unpacks the Debian source packages with their patches

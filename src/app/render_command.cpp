@@ -4,69 +4,20 @@
 
 #include <memory>
 
-#include "app/camera_options.hpp"
 #include "app/render_options.hpp"
-#include "app/render_report.hpp"
-#include "app/scene_setup.hpp"
+#include "app/render_picture.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/track_arguments.hpp"
-#include "render/platform/gl_context.hpp"
-#include "render/renderer.hpp"
-#include "scene/legend_content.hpp"
-#include "scene/terrain_view.hpp"
 
 namespace trailray::app {
 namespace {
 
-// parse -> scene -> draw -> output.
+// parse -> scene -> draw (render_picture) -> output.
 int run_render(const RenderArgs& a) {
-  const scene::Lens lens = parse_lens(a.size, a.camera.fov_deg);
-  const CameraRequest camera_request = parse_camera_request(a.camera, !a.tracks.empty());
-  check_render_args(a);
-  const scene::Style style = parse_style(a.style);
-  const std::optional<double> time = parse_sun_time(a.style.time);
   TerminalDiagnostics diagnostics(a.verbose);
-
-  const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
-  scene::TerrainView terrain(sources.heights.get(), sources.imagery.get());
-  terrain.set_policy(
-      {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
-  const SceneTracks tracks = load_scene_tracks(a.tracks, a.read, style.tracks, {sources.heights.get(), 0.0, a.analysis},
-                                               diagnostics, a.waypoints);
-  // The task's cylinders (--task) and the airspaces of --airspace, on the terrain.
-  scene::VolumeSet volumes = tracks.volumes;
-  add_airspace_volumes(volumes, a.airspace.files, airspace_region(tracks.tracks, tracks.waypoints, camera_request),
-                       sources.heights.get(), diagnostics);
-  scene::Scene scene;
-  scene.terrain = &terrain;
-  scene.tracks = &tracks.tracks;
-  scene.waypoints = &tracks.waypoints;
-  if (!volumes.volumes.empty()) scene.volumes = &volumes;
-  scene.style = style;
-  scene.color_range = scene::color_range(tracks.tracks, style);
-  scene.sun_time_unix_s = sun_time(time, tracks.recorded);
-  // Where no source has terrain: the tracks' lowest point (DESIGN.md), else the lowest terrain in view.
-  scene.neutral_ground_m = tracks.recorded.lowest_m;
-  // The camera: framed with the tracks out of the legend's way.
-  const scene::KeptClearCorner legend =
-      scene::legend_clearance(scene::scene_legend_panel(lens.width_px, lens.height_px, scene), lens.height_px);
-  const scene::Camera camera =
-      initial_camera(camera_request, lens, tracks.tracks, tracks.recorded.lowest_or_sea_level(), sources.heights.get(),
-                     legend, std::nullopt, &tracks.waypoints, &diagnostics);
-
-  render::GlContext gl = render::GlContext::create_headless();
-  for (const std::string& line : gl.describe()) diagnostics.note(line);
-  render::Renderer renderer;
-  render::ImageTarget picture;
-  picture.pixel_ratio = a.pixel_ratio;
-  const render::FrameReport report = renderer.draw(scene, camera, picture);
-  diagnostics.progress_done();
-  if (a.profile) profile_frames(renderer, scene, camera, a.frames, picture);
-
-  report_render(report, camera, scene, sources.heights.get(), a, diagnostics);
-  scene::draw_scene_legend(picture.image, scene);
-  scene::write_srgb_png(a.output, picture.image);
-  diagnostics.note(fmt::format("wrote {} ({}x{})", a.output, picture.image.width, picture.image.height));
+  const scene::RgbaImage image = render_picture(a, diagnostics);
+  scene::write_srgb_png(a.output, image);
+  diagnostics.note(fmt::format("wrote {} ({}x{})", a.output, image.width, image.height));
   return 0;
 }
 

@@ -32,7 +32,14 @@ bool is_igc_path(const std::string& path) {
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints) {
-  const std::vector<scene::LoadedTrackFile> files = read_track_files_parallel(paths, read, diagnostics);
+  return build_scene_tracks(read_track_files_parallel(paths, read, diagnostics), paths, read, style, options,
+                            diagnostics, waypoints);
+}
+
+SceneTracks build_scene_tracks(const std::vector<scene::LoadedTrackFile>& files, const std::vector<std::string>& paths,
+                               const track::ReadOptions& read, const scene::TrackStyle& style,
+                               const scene::TrackBuildOptions& options, scene::Diagnostics& diagnostics,
+                               const WaypointArgs& waypoints) {
   SceneTracks out;
   out.recorded = scene::recorded_points(files);
   scene::TrackBuildOptions build = options;

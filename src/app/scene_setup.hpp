@@ -48,6 +48,12 @@ struct SceneTracks {
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints = {});
+// The same from files already read (the Python module's): `paths` are those of them that are
+// files on disk, for --score (it reads the first IGC file of them again, as the scorer reads IGC).
+SceneTracks build_scene_tracks(const std::vector<scene::LoadedTrackFile>& files, const std::vector<std::string>& paths,
+                               const track::ReadOptions& read, const scene::TrackStyle& style,
+                               const scene::TrackBuildOptions& options, scene::Diagnostics& diagnostics,
+                               const WaypointArgs& waypoints = {});
 
 // --score: the first IGC file of `paths` scored under the rule set `rules_name` and its best route
 // built for the scene (nothing, after a warning, when no route scores). Throws std::runtime_error

@@ -1,0 +1,68 @@
+#pragma once
+// What `trailray.read` gives Python: the File as read, its Tracks (routes too, as one-segment
+// tracks) and their Segments. They share one immutable FileData, so the arrays a Track hands out
+// stay valid while any of them lives, and nothing is copied to take a track out of its file.
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "python/point_arrays.hpp"
+#include "track/model.hpp"
+
+namespace trailray::python {
+
+struct FileData {
+  std::string path;  // as given; "<bytes>" for bytes
+  track::TrackFile file;
+  std::vector<track::Track> routes;  // the file's routes as tracks of one segment (moved, not copied)
+  std::vector<std::string> warnings;  // "file:line:column: message"
+};
+
+// Moves the file's routes into FileData::routes.
+std::shared_ptr<const FileData> make_file_data(std::string path, track::TrackFile file,
+                                               std::vector<std::string> warnings);
+
+class Segment {
+ public:
+  Segment(std::shared_ptr<const FileData> owner, const track::Segment& segment);
+  const PointArrays& points() const { return arrays_; }
+
+ private:
+  PointArrays arrays_;
+};
+
+class Track {
+ public:
+  // `track` lies in `owner` (a track or a route of it).
+  Track(std::shared_ptr<const FileData> owner, const track::Track& track, bool is_route);
+
+  const track::Track& model() const { return *track_; }
+  const std::shared_ptr<const FileData>& owner() const { return owner_; }
+  bool is_route() const { return is_route_; }
+  const PointArrays& points() const { return arrays_; }
+  std::vector<Segment> segments() const;
+
+ private:
+  std::shared_ptr<const FileData> owner_;
+  const track::Track* track_;
+  bool is_route_;
+  PointArrays arrays_;
+};
+
+class File {
+ public:
+  explicit File(std::shared_ptr<const FileData> data) : data_(std::move(data)) {}
+  const FileData& data() const { return *data_; }
+  std::vector<Track> tracks() const;
+  std::vector<Track> routes() const;
+
+ private:
+  std::shared_ptr<const FileData> data_;
+};
+
+void bind_track_objects(py::module_& m);
+
+}  // namespace trailray::python
