@@ -69,16 +69,17 @@ void add_words(CLI::App& app, const std::string& key, const py::handle& value, s
     throw py::type_error(fmt::format("render() got an unexpected keyword argument '{}'", key));
   if (py::isinstance<py::bool_>(value)) {
     const bool on = value.cast<bool>();
-    if (option != nullptr && option->get_expected_max() == 0) {  // a flag
+    if (!on && negative != nullptr) {  // shadows=False, labels=False: --no-shadows, --no-labels
+      argv.push_back("--no-" + name);
+      return;
+    }
+    if (option != nullptr && option->get_expected_max() == 0) {  // a flag: snow=True
       if (on) argv.push_back("--" + name);
-      else if (negative != nullptr) argv.push_back("--no-" + name);
       return;
     }
-    if (option == nullptr) {  // only --no-NAME exists: NAME=True is the default
-      if (!on) argv.push_back("--no-" + name);
-      return;
-    }
-    argv.push_back("--" + name);
+    // Only --no-NAME exists, or NAME takes values beside its --no- twin (labels=True): the default.
+    if (option == nullptr || negative != nullptr) return;
+    argv.push_back("--" + name);  // an on|off option: legend=False
     argv.push_back(on ? "on" : "off");
     return;
   }

@@ -13,9 +13,11 @@ the GIL is released while they work, so threads read and render in parallel.
 
 from __future__ import annotations
 
-import os
+import os as _os
 import warnings as _warnings
-from typing import NamedTuple, Optional, Union
+from typing import NamedTuple as _NamedTuple
+from typing import Optional as _Optional
+from typing import Union as _Union
 
 import numpy as _np
 
@@ -52,22 +54,22 @@ class TrailrayWarning(UserWarning):
     position are in the message). ``strict=True`` makes the first one a ReadError."""
 
 
-class Waypoint(NamedTuple):
+class Waypoint(_NamedTuple):
     """A waypoint of a file: ``ele`` None without an elevation, ``time`` a numpy.datetime64 or None."""
 
     name: str
     lat: float
     lon: float
-    ele: Optional[float]
-    time: Optional[_np.datetime64]
+    ele: _Optional[float]
+    time: _Optional[_np.datetime64]
     description: str
     symbol: str
 
 
-Source = Union[str, "os.PathLike[str]", bytes, bytearray, memoryview]
+_Source = _Union[str, "_os.PathLike[str]", bytes, bytearray, memoryview]
 
 
-def read(source: Source, format: Optional[str] = None, igc_altitude: str = "auto", strict: bool = False) -> File:
+def read(source: _Source, format: _Optional[str] = None, igc_altitude: str = "auto", strict: bool = False) -> File:
     """Read a track file: a path (str or pathlib.Path; gzip-compressed or not) or its bytes.
 
     format: None detects it from the content (as the command line does); else one of gpx, igc,
@@ -77,15 +79,16 @@ def read(source: Source, format: Optional[str] = None, igc_altitude: str = "auto
     strict: the reader's first warning is a ReadError instead of a warning.
 
     Raises ReadError (a ValueError) naming the file and the position when it cannot be read,
-    FileNotFoundError-like ReadError when it cannot be opened. Each reader warning is issued as a
+    and naming the file and the reason ("cannot open: No such file or directory") when it cannot
+    be opened. Each reader warning is issued as a
     TrailrayWarning through the warnings module and kept in ``File.warnings``.
     """
     if isinstance(source, (bytearray, memoryview)):
         source = bytes(source)
     elif not isinstance(source, bytes):
-        source = os.fspath(source)
+        source = _os.fspath(source)
         if isinstance(source, bytes):
-            source = os.fsdecode(source)
+            source = _os.fsdecode(source)
         if not isinstance(source, str):
             raise TypeError(f"read() takes a path or bytes, not {type(source).__name__}")
     if format is not None:
@@ -107,7 +110,7 @@ def _track_to_pandas(self: Track):
         import pandas as pd
     except ImportError as e:  # pragma: no cover - depends on the machine
         raise ImportError("Track.to_pandas() needs pandas (Debian: apt install python3-pandas)") from e
-    columns = {"lat": self.lat, "lon": self.lon, "ele": self.ele, "time": self.time}
+    columns = {"lat": self.lat, "lon": self.lon, "ele": self.ele, "time": pd.to_datetime(self.time, utc=True)}
     for name in self.channels:
         columns[name] = self.channel(name)
     columns["segment"] = _np.repeat(_np.arange(len(self.segments)), [len(s) for s in self.segments])
@@ -126,10 +129,10 @@ def _words(value) -> str:
 
 def render(
     tracks=(),
-    terrain: Optional[str] = None,
-    imagery: Optional[str] = None,
+    terrain: _Optional[str] = None,
+    imagery: _Optional[str] = None,
     size=(1920, 1080),
-    color_by: Optional[str] = None,
+    color_by: _Optional[str] = None,
     color=None,
     camera=None,
     **style,
@@ -162,31 +165,37 @@ def render(
     for item in items:
         if isinstance(item, (File, Track)):
             objects.append(item)
+        elif isinstance(item, (str, _os.PathLike)):
+            paths.append(_os.fspath(item))
         else:
-            paths.append(os.fspath(item))
+            raise TypeError(f"render() draws Files, Tracks and paths, not {type(item).__name__}")
     options = dict(style)
     options["size"] = f"{int(size[0])}x{int(size[1])}" if isinstance(size, (tuple, list)) else str(size)
-    options["terrain"] = "none" if terrain is None else os.fspath(terrain)
-    options["imagery"] = "none" if imagery is None else os.fspath(imagery)
+    options["terrain"] = "none" if terrain is None else _os.fspath(terrain)
+    options["imagery"] = "none" if imagery is None else _os.fspath(imagery)
     if color_by is not None:
         options["color_by"] = color_by
     if color is not None:
         options["color"] = [color] if isinstance(color, str) else list(color)
     if isinstance(camera, dict):
-        for key, value in camera.items():
-            options[key] = _words(value)
+        options.update(camera)
     elif camera is not None:
-        options["camera"] = _words(camera)
-    for key in ("look_at", "camera", "occlusion_fade", "range"):
+        options["camera"] = camera
+    # Values the command line writes as one word: a place "lat,lon,alt", a span "near:far".
+    for key, separator in (("look_at", ","), ("camera", ","), ("occlusion_fade", ":"), ("range", ":")):
         if isinstance(options.get(key), (tuple, list)):
-            options[key] = _words(options[key]) if key != "occlusion_fade" and key != "range" else ":".join(map(str, options[key]))
+            options[key] = separator.join(str(v) for v in options[key])
+    # Options that take several files (each a repeated option); labels=False is --no-labels.
     for key in ("airspace", "labels"):
-        if isinstance(options.get(key), (str, os.PathLike)):
-            options[key] = [os.fspath(options[key])]
-        elif options.get(key) is not None:
-            options[key] = [os.fspath(v) for v in options[key]]
+        value = options.get(key)
+        if isinstance(value, (str, _os.PathLike)):
+            options[key] = [_os.fspath(value)]
+        elif value is not None and not isinstance(value, bool):
+            options[key] = [_os.fspath(v) for v in value]
     picture, warnings = _core.render(paths, objects, options)
     for text in warnings:
+        if terrain is None and text.startswith("no terrain source covers the view"):
+            continue  # asked for: terrain=None is the neutral ground
         _warnings.warn(text, TrailrayWarning, stacklevel=2)
     return picture
 
@@ -201,10 +210,10 @@ def _repr_png_(self) -> bytes:
     is fetched), coloured by speed."""
     with _warnings.catch_warnings():
         _warnings.simplefilter("ignore", TrailrayWarning)
-        return png(render(self, size=(800, 500), color_by="speed" if self_has_times(self) else None))
+        return png(render(self, size=(800, 500), color_by="speed" if _has_times(self) else None))
 
 
-def self_has_times(item) -> bool:
+def _has_times(item) -> bool:
     tracks = item.tracks + item.routes if isinstance(item, File) else [item]
     return any(len(t) and not _np.isnat(t.time).all() for t in tracks)
 
