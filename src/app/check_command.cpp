@@ -8,21 +8,17 @@
 #include <iostream>
 #include <memory>
 
+#include "app/airspace_check.hpp"
 #include "app/check_report.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/terrain_options.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
-#include "terrain/height_sampler.hpp"
-#include "terrain/source_factory.hpp"
 #include "track/airspace/openair_reader.hpp"
 #include "track/io/load.hpp"
 
 namespace trailray::app {
 namespace {
-
-using track::airspace::CheckPoint;
-using IgcAltitude = track::ReadOptions::IgcAltitude;
 
 struct CheckArgs {
   std::string airspace;
@@ -31,57 +27,6 @@ struct CheckArgs {
   track::ReadOptions read;
   TerrainOptions terrain;
 };
-
-using Segments = std::vector<std::vector<CheckPoint>>;
-
-// The points as checked: their elevation against MSL (and AGL) limits; with `pressure`, an IGC's
-// pressure altitude (kept beside the elevation whichever --igc-altitude picked) against FL/STD.
-Segments segments_of(const track::TrackFile& f, bool pressure) {
-  Segments out;
-  for (const auto& t : f.tracks)
-    for (const auto& s : t.segments) {
-      std::vector<CheckPoint> points;
-      points.reserve(s.points.size());
-      for (const auto& p : s.points) {
-        const double std_m = pressure && p.has_pressure_altitude() ? p.pressure_altitude : track::kMissing;
-        points.push_back({p.lat, p.lon, p.time, p.ele, std_m, track::kMissing});
-      }
-      out.push_back(std::move(points));
-    }
-  return out;
-}
-
-bool any_pressure_altitude(const Segments& segments) {
-  for (const auto& s : segments)
-    for (const auto& p : s)
-      if (!std::isnan(p.std_m)) return true;
-  return false;
-}
-
-void add_ground(const terrain::TerrainConfig& config, TerminalDiagnostics& diagnostics, bool quiet,
-                std::vector<Segments>& tracks) {
-  terrain::SourceContext context{config.network, config.cache,
-                                 [&diagnostics](std::string w) { diagnostics.warning("terrain: " + w); }};
-  std::unique_ptr<terrain::HeightSource> source = terrain::open_height_source(config.terrain, context);
-  if (!source) return;
-  std::vector<geo::LatLon> where;
-  for (const auto& t : tracks)
-    for (const auto& s : t)
-      for (const auto& p : s) where.push_back({p.lat, p.lon});
-  terrain::HeightSampler sampler(*source, {});
-  const std::vector<double> heights =
-      sampler.sample(where, [&](const terrain::LoadProgress& p, std::size_t, std::size_t) {
-        if (!quiet) diagnostics.progress(fmt::format("terrain tiles: {}/{} loaded", p.loaded + p.no_data, p.wanted));
-      });
-  diagnostics.progress_done();
-  std::size_t k = 0;
-  for (auto& t : tracks)
-    for (auto& s : t)
-      for (auto& p : s) p.ground_m = heights[k++];
-  if (sampler.report().with_height < where.size())
-    diagnostics.warning(fmt::format("terrain: no data at {} of {} points (AGL limits there taken conservatively)",
-                                    where.size() - sampler.report().with_height, where.size()));
-}
 
 int run_check(const CheckArgs& a) {
   TerminalDiagnostics diagnostics(false, !a.quiet && isatty(STDERR_FILENO) != 0);
@@ -96,7 +41,7 @@ int run_check(const CheckArgs& a) {
   const track::airspace::AirspaceIndex index(air.file);
 
   CheckReport report{a.airspace == "-" ? "<stdin>" : a.airspace, &air.file, !a.terrain.terrain.empty(), {}};
-  std::vector<Segments> tracks;
+  std::vector<CheckSegments> tracks;
   int status = 0;
   for (const auto& path : a.tracks) {
     track::ReadResult read = track::load_track_file(path, a.read);
@@ -106,35 +51,14 @@ int run_check(const CheckArgs& a) {
       status = 2;
       continue;
     }
-    const bool igc = read.file.format == track::Format::Igc;
-    // GNSS mode: the GNSS altitude for every limit, as asked; otherwise FL/STD limits take the
-    // pressure altitude where the file has one (in pressure mode it is the elevation too).
-    Segments segments = segments_of(read.file, igc && a.read.igc_altitude != IgcAltitude::Gnss);
-    CheckedTrack checked{path == "-" ? "<stdin>" : path, 0, "", {}};
-    std::size_t without_altitude = 0;
-    for (const auto& s : segments) {
-      checked.points += s.size();
-      for (const auto& p : s) without_altitude += std::isnan(p.msl_m);
-    }
-    if (without_altitude > 0)
+    CheckedPoints checked = checked_points(path == "-" ? "<stdin>" : path, read.file, a.read.igc_altitude);
+    if (checked.without_altitude > 0)
       diagnostics.warning(fmt::format("{}: {} of {} points have no altitude: they are never found inside an airspace",
-                                      checked.path, without_altitude, checked.points));
-    if (!igc)
-      checked.altitudes =
-          "one elevation per point: compared with every limit (FL too, as if it were pressure altitude)";
-    else if (a.read.igc_altitude == IgcAltitude::Gnss)
-      checked.altitudes = "IGC GNSS altitude for every limit (FL too)";
-    else if (a.read.igc_altitude == IgcAltitude::Pressure)
-      checked.altitudes = "IGC pressure altitude (--igc-altitude pressure) for every limit";
-    else if (!any_pressure_altitude(segments))
-      checked.altitudes = "IGC without pressure altitude: FL limits compared with the GNSS altitude";
-    else
-      checked.altitudes =
-          "IGC: FL/STD limits with the pressure altitude (against 1013.25 hPa), MSL/AGL limits with the GNSS altitude";
-    report.tracks.push_back(std::move(checked));
-    tracks.push_back(std::move(segments));
+                                      checked.track.path, checked.without_altitude, checked.track.points));
+    report.tracks.push_back(std::move(checked.track));
+    tracks.push_back(std::move(checked.segments));
   }
-  if (!a.terrain.terrain.empty()) add_ground(resolve_terrain_config(a.terrain), diagnostics, a.quiet, tracks);
+  add_ground_heights(a.terrain, diagnostics, a.quiet, tracks);
   const auto check_start = std::chrono::steady_clock::now();
   for (std::size_t t = 0; t < tracks.size(); ++t)
     report.tracks[t].infringements = track::airspace::find_infringements(index, tracks[t]);

@@ -12,10 +12,9 @@
 #include <memory>
 
 #include "app/elevation_report.hpp"
+#include "app/terrain_heights.hpp"
 #include "app/terrain_options.hpp"
 #include "app/track_options.hpp"
-#include "terrain/height_sampler.hpp"
-#include "terrain/source_factory.hpp"
 #include "track/io/gpx_writer.hpp"
 #include "track/io/load.hpp"
 
@@ -96,41 +95,13 @@ int run_elevation(const ElevationArgs& a) {
   }
   track::TrackFile& file = read.file;
 
-  const terrain::TerrainConfig config = resolve_terrain_config(a.terrain);
-  terrain::SourceContext context{config.network, config.cache,
-                                 [&diagnostics](std::string w) { diagnostics.warning("terrain: " + w); }};
-  std::unique_ptr<terrain::HeightSource> source = terrain::open_height_source(config.terrain, context);
-  const std::string source_name = source ? source->info().name : std::string("none");
-
   const std::vector<track::TrackPoint*> points = points_of(file, a.replace);
   std::vector<geo::LatLon> where;
   where.reserve(points.size());
   for (const auto* p : points) where.push_back({p->lat, p->lon});
-
-  std::vector<double> heights(points.size(), std::numeric_limits<double>::quiet_NaN());
-  if (source) {
-    terrain::HeightSamplerOptions options;
-    if (a.terrain.terrain_zoom) options.zoom = *a.terrain.terrain_zoom;
-    // Network sources wait on round trips, not on the CPU.
-    if (source->info().name.starts_with("http"))
-      options.threads = static_cast<unsigned>(config.network.max_parallel) + 2;
-    terrain::HeightSampler sampler(*source, options);
-    heights = sampler.sample(where, [&](const terrain::LoadProgress& p, std::size_t batch, std::size_t batches) {
-      diagnostics.progress(fmt::format("terrain tiles: {}/{} loaded{}{}", p.loaded + p.no_data, p.wanted,
-                                       p.failed ? fmt::format(", {} failed", p.failed) : "",
-                                       batches > 1 ? fmt::format(" (part {}/{})", batch + 1, batches) : ""));
-    });
-    diagnostics.progress_done();
-    const terrain::SamplingReport& r = sampler.report();
-    if (r.tiles_failed > 0)
-      diagnostics.warning(fmt::format("terrain: {} tile{} failed; first: {}", r.tiles_failed,
-                                      r.tiles_failed == 1 ? "" : "s", r.errors.empty() ? "?" : r.errors.front()));
-    if (!points.empty() && r.with_height == 0)
-      diagnostics.warning(fmt::format("terrain: {} has no data at any point of {}", source_name, a.file));
-    else if (r.with_height < points.size())
-      diagnostics.warning(
-          fmt::format("terrain: no data at {} of {} points", points.size() - r.with_height, points.size()));
-  }
+  const TerrainHeights sampled = terrain_heights(where, a.terrain, diagnostics, a.file);
+  const std::vector<double>& heights = sampled.heights;
+  const std::string& source_name = sampled.source_name;
 
   if (a.replace) {
     for (std::size_t i = 0; i < points.size(); ++i)

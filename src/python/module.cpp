@@ -8,4 +8,5 @@ PYBIND11_MODULE(_core, m) {
   trailray::python::bind_track_objects(m);
   trailray::python::bind_reading(m);
   trailray::python::bind_rendering(m);
+  trailray::python::bind_analysis(m);
 }

@@ -103,7 +103,7 @@ py::tuple read_file(const py::object& source, const std::optional<std::string>& 
     texts.push_back(w.to_string());
   }
   if (result.error) return py::make_tuple(py::none(), diagnostic_tuple(*result.error), warnings);
-  File file(make_file_data(path, std::move(result.file), std::move(texts)));
+  File file(make_file_data(path, std::move(result.file), std::move(texts), options.igc_altitude));
   return py::make_tuple(py::cast(std::move(file)), py::none(), warnings);
 }
 

@@ -15,8 +15,10 @@
 namespace trailray::python {
 
 std::shared_ptr<const FileData> make_file_data(std::string path, track::TrackFile file,
-                                               std::vector<std::string> warnings) {
+                                               std::vector<std::string> warnings,
+                                               track::ReadOptions::IgcAltitude igc_altitude) {
   auto data = std::make_shared<FileData>();
+  data->igc_altitude = igc_altitude;
   data->path = std::move(path);
   data->warnings = std::move(warnings);
   for (track::Route& r : file.routes) {
@@ -39,10 +41,12 @@ std::vector<std::span<const track::TrackPoint>> parts_of(const track::Track& t) 
 }
 
 // A track alone in a file of its own (a cleaned copy).
-std::shared_ptr<const FileData> alone(track::Track t, const std::string& path) {
+std::shared_ptr<const FileData> alone(track::Track t, const std::string& path,
+                                      track::ReadOptions::IgcAltitude igc_altitude) {
   auto data = std::make_shared<FileData>();
   data->path = path;
   data->file.tracks.push_back(std::move(t));
+  data->igc_altitude = igc_altitude;
   return data;
 }
 
@@ -58,6 +62,21 @@ std::vector<Segment> Track::segments() const {
   std::vector<Segment> out;
   for (const track::Segment& s : track_->segments) out.emplace_back(owner_, s);
   return out;
+}
+
+std::size_t Track::index() const {
+  const auto& list = is_route_ ? owner_->routes : owner_->file.tracks;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    if (&list[i] == track_) return i;
+  return 0;
+}
+
+track::TrackFile Track::as_file() const {
+  track::TrackFile f;
+  f.format = owner_->file.format;
+  f.metadata = owner_->file.metadata;
+  f.tracks.push_back(*track_);
+  return f;
 }
 
 std::vector<Track> File::tracks() const {
@@ -226,7 +245,7 @@ void bind_track_objects(py::module_& m) {
               track::CleanReport report;
               cleaned = track::clean_track(t.model(), o, report);
             }
-            auto data = alone(std::move(cleaned), t.owner()->path);
+            auto data = alone(std::move(cleaned), t.owner()->path, t.owner()->igc_altitude);
             return Track(data, data->file.tracks.front(), t.is_route());
           },
           py::arg("min_distance") = 3.0, py::arg("smooth") = true, py::arg("smooth_width") = 5,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "python/point_arrays.hpp"
+#include "track/diagnostics.hpp"
 #include "track/model.hpp"
 
 namespace trailray::python {
@@ -19,11 +20,14 @@ struct FileData {
   track::TrackFile file;
   std::vector<track::Track> routes;  // the file's routes as tracks of one segment (moved, not copied)
   std::vector<std::string> warnings;  // "file:line:column: message"
+  // Which IGC altitude became the elevation (airspace checks compare FL limits accordingly).
+  track::ReadOptions::IgcAltitude igc_altitude = track::ReadOptions::IgcAltitude::Auto;
 };
 
 // Moves the file's routes into FileData::routes.
 std::shared_ptr<const FileData> make_file_data(std::string path, track::TrackFile file,
-                                               std::vector<std::string> warnings);
+                                               std::vector<std::string> warnings,
+                                               track::ReadOptions::IgcAltitude igc_altitude);
 
 class Segment {
  public:
@@ -44,6 +48,10 @@ class Track {
   bool is_route() const { return is_route_; }
   const PointArrays& points() const { return arrays_; }
   std::vector<Segment> segments() const;
+  // Its position among the file's tracks (or routes).
+  std::size_t index() const;
+  // A file holding this track alone (a copy), as the reports that take a file want it.
+  track::TrackFile as_file() const;
 
  private:
   std::shared_ptr<const FileData> owner_;

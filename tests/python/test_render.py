@@ -55,7 +55,8 @@ def test_terrain_from_a_dem_is_drawn():
 
 def test_a_camera_and_no_tracks():
     picture = trailray.render(terrain=shared("dem/interlaken_dhm25_wgs84.tif"), size=(160, 100),
-                              camera=dict(look_at=(46.68, 7.86, 600), distance=8000, heading=90, pitch=-30))
+                              camera=dict(look_at=(46.68, 7.86, 600), distance=8000, heading=90, pitch=-30),
+                              time="2024-07-14T12:00:00Z")
     assert picture.shape == (100, 160, 4)
 
 

@@ -22,12 +22,17 @@ from typing import Union as _Union
 import numpy as _np
 
 from . import _core
-from ._core import File, Segment, Track
+from ._core import Airspaces, File, Segment, Task, Track
 
 __all__ = [
     "read",
     "render",
     "png",
+    "score",
+    "flight",
+    "elevation",
+    "Task",
+    "Airspaces",
     "File",
     "Track",
     "Segment",
@@ -220,3 +225,39 @@ def _has_times(item) -> bool:
 
 File._repr_png_ = _repr_png_
 Track._repr_png_ = _repr_png_
+
+
+def score(flight, rules: str = "xcontest", distance: str = "fcc", trim: bool = True, all_types: bool = False) -> dict:
+    """The cross-country score of a flight, as ``trailray score --json`` gives it.
+
+    flight: a path to an IGC file (its B records as the command reads them: the same score to the
+        last digit) or a Track (its timed points, one fix per second).
+    rules: xcontest, ffvl, fai, fai-oar, fai-cylinders, xcleague.
+    distance: "fcc" (the FCC ellipsoidal formula, as igc-xc-score) or "geodesic" (exact WGS84).
+    trim: score only the detected flight (launch to landing), not the whole log.
+    all_types: optimise every flight type to its own optimum (by_type's "exact" true everywhere).
+
+    Returns a dict: score, distance_km, type, turnpoints, legs, ... and by_type. Raises ValueError for
+    unknown rules or fewer than 5 fixes, ReadError for a file that cannot be read.
+    """
+    if not isinstance(flight, Track):
+        flight = _os.fspath(flight)
+    return _core.score(flight, rules, distance, bool(trim), bool(all_types))
+
+
+def flight(track: Track) -> dict:
+    """The flight analysis of a track, as a track of ``trailray flight --json``: its flights (take-off
+    and landing, circling and gliding phases, thermals with climb rates, glides with glide ratios,
+    wind per altitude band), or ``note`` saying why there is none."""
+    return _core.flight(track)
+
+
+def elevation(track: Track, terrain: str, terrain_zoom: _Optional[int] = None) -> dict:
+    """The terrain under every point of a track, as ``trailray elevation --json`` measures it.
+
+    terrain: an elevation source as ``--terrain`` takes it (a raster file, a tile folder, an
+        .mbtiles file, an http(s) URL template).
+    Returns {"terrain": heights (float64, NaN without data), "agl": ele - terrain, "source": the
+    source's name, "summary": mean/median offset, rmse, points below ground, ...}.
+    """
+    return _core.elevation(track, _os.fspath(terrain), terrain_zoom)

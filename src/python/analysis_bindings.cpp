@@ -1,0 +1,281 @@
+// trailray._core's analysis: score, flight, Task, Airspaces and elevation, each through the report
+// of its command (app/*_report), so Python gets the numbers of the command's --json.
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/airspace_check.hpp"
+#include "app/check_report.hpp"
+#include "app/elevation_report.hpp"
+#include "app/flight_report.hpp"
+#include "app/score_report.hpp"
+#include "app/task_report.hpp"
+#include "app/terrain_heights.hpp"
+#include "python/bindings.hpp"
+#include "python/json_objects.hpp"
+#include "python/track_objects.hpp"
+#include "track/airspace/airspace_index.hpp"
+#include "track/airspace/openair_reader.hpp"
+#include "track/scoring/fixes.hpp"
+#include "track/scoring/rules.hpp"
+#include "track/scoring/score.hpp"
+#include "track/task/task_distance.hpp"
+#include "track/task/task_reader.hpp"
+
+namespace trailray::python {
+namespace {
+
+namespace sc = track::scoring;
+namespace tt = track::task;
+namespace as = track::airspace;
+
+// trailray.ReadError(text, path, line, column), raised.
+[[noreturn]] void raise_read_error(const std::string& text, const std::string& path, std::int64_t line = 0,
+                                   std::int64_t column = 0) {
+  py::object error = py::module_::import("trailray").attr("ReadError")(text, path, line, column);
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+  throw py::error_already_set();
+}
+
+[[noreturn]] void raise_read_error(const track::Diagnostic& d) {
+  raise_read_error(d.to_string(), d.file, d.position.line, d.position.column);
+}
+
+// Warnings (reader's, terrain's) through Python's warnings module as TrailrayWarning.
+void warn_all(const std::vector<std::string>& texts) {
+  if (texts.empty()) return;
+  py::object category = py::module_::import("trailray").attr("TrailrayWarning");
+  for (const std::string& t : texts)
+    if (PyErr_WarnEx(category.ptr(), t.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+// The fixes `score` optimises over: of an IGC file's B records as the command reads them, or of a
+// track's timed points (an IGC track's GNSS and pressure altitudes; one fix per second, as the
+// scorer keeps them).
+sc::FixList fixes_of(const py::object& flight) {
+  if (py::isinstance<Track>(flight)) {
+    const Track& t = flight.cast<const Track&>();
+    sc::FixList list;
+    for (const track::Segment& s : t.model().segments)
+      for (const track::TrackPoint& p : s.points) {
+        if (!p.has_time()) continue;
+        ++list.b_records;
+        if (!list.fixes.empty() && list.fixes.back().time >= p.time) continue;
+        auto metres = [](float v) { return std::isnan(v) ? 0 : static_cast<int>(std::lround(v)); };
+        list.fixes.push_back(sc::Fix{p.lat, p.lon, p.time, metres(p.gnss_altitude), metres(p.pressure_altitude)});
+      }
+    return list;
+  }
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(flight));
+  py::gil_scoped_release unlocked;
+  return sc::read_scoring_fixes(path);
+}
+
+py::dict score(const py::object& flight, const std::string& rules, const std::string& distance, bool trim,
+               bool all_types) {
+  const auto rule_set = sc::rule_set(rules);
+  if (!rule_set)
+    throw py::value_error(fmt::format("unknown rule set '{}' (one of: {})", rules, fmt::join(sc::rule_set_names(), ", ")));
+  if (distance != "fcc" && distance != "geodesic")
+    throw py::value_error(fmt::format("distance '{}' is not fcc or geodesic", distance));
+  const sc::FixList list = fixes_of(flight);
+  if (list.error) raise_read_error(*list.error, py::str(flight).cast<std::string>());
+  if (list.fixes.size() < 5)
+    throw py::value_error(fmt::format("{} valid fixes (of {} B records); scoring needs at least 5", list.fixes.size(),
+                                      list.b_records));
+  sc::ScoreOptions options;
+  options.model = distance == "geodesic" ? sc::DistanceModel::Geodesic : sc::DistanceModel::Fcc;
+  options.trim = trim;
+  options.all_types = all_types;
+  nlohmann::json j;
+  {
+    py::gil_scoped_release unlocked;
+    j = app::score_json(sc::score_flight(list.fixes, *rule_set, options), list.fixes);
+  }
+  return to_python(j).cast<py::dict>();
+}
+
+py::dict flight(const Track& t) {
+  app::FileFlights f;
+  f.path = t.owner()->path;
+  f.format = t.owner()->file.format;
+  {
+    py::gil_scoped_release unlocked;
+    f.tracks.push_back({t.model().name, t.index(), track::flight::analyse_flights(t.model(), {}),
+                        app::median_fix_interval(t.model())});
+  }
+  return to_python(app::flight_file_json(f)["tracks"][0]).cast<py::dict>();
+}
+
+class Task {
+ public:
+  static Task read(const py::object& path_like) {
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
+    tt::TaskReadResult r;
+    {
+      py::gil_scoped_release unlocked;
+      r = tt::read_task_file(path);
+    }
+    std::vector<std::string> warnings;
+    for (const auto& w : r.warnings) warnings.push_back(w.to_string());
+    warn_all(warnings);
+    if (r.error) raise_read_error(*r.error);
+    Task t;
+    t.path_ = path;
+    t.task_ = std::make_shared<tt::Task>(std::move(*r.task));
+    t.distances_ = tt::measure_task(*t.task_);
+    return t;
+  }
+
+  py::dict info() const { return to_python(app::task_json(path_, *task_, distances_, {})).cast<py::dict>(); }
+  const std::string& path() const { return path_; }
+
+  py::dict check(const Track& t, double tolerance_percent) const {
+    if (!(tolerance_percent >= 0.0 && tolerance_percent <= 100.0))
+      throw py::value_error(fmt::format("tolerance {} is not a percentage in 0..100", tolerance_percent));
+    app::TaskFlightReport report;
+    {
+      py::gil_scoped_release unlocked;
+      report = app::task_flight_report(t.owner()->path, t.as_file(), *task_, distances_, tolerance_percent / 100.0);
+    }
+    if (report.error) throw py::value_error(*report.error);
+    return to_python(app::task_flight_json(*task_, report)).cast<py::dict>();
+  }
+
+ private:
+  std::string path_;
+  std::shared_ptr<const tt::Task> task_;
+  tt::TaskDistances distances_;
+};
+
+// Collects the terrain's warnings to hand to Python after the work (no GIL meanwhile).
+class QuietDiagnostics : public scene::CollectedDiagnostics {};
+
+class Airspaces {
+ public:
+  static Airspaces read(const py::object& path_like, bool strict) {
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
+    track::ReadOptions options;
+    options.strict = strict;
+    auto r = std::make_shared<as::AirspaceReadResult>();
+    {
+      py::gil_scoped_release unlocked;
+      *r = as::load_openair_file(path, options);
+    }
+    std::vector<std::string> warnings;
+    for (const auto& w : r->warnings) warnings.push_back(w.to_string());
+    warn_all(warnings);
+    if (r->error) raise_read_error(*r->error);
+    Airspaces a;
+    a.path_ = path;
+    a.read_ = r;
+    a.index_ = std::make_shared<as::AirspaceIndex>(r->file);
+    return a;
+  }
+
+  std::size_t size() const { return read_->file.airspaces.size(); }
+  const std::string& path() const { return path_; }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& a : read_->file.airspaces) out.push_back(a.name);
+    return out;
+  }
+
+  // The track's entry of `check --json`: points, how altitudes were taken, infringements.
+  py::dict check(const Track& t, const std::optional<std::string>& terrain) const {
+    QuietDiagnostics diagnostics;
+    app::CheckReport report{path_, &read_->file, terrain.has_value(), {}};
+    {
+      py::gil_scoped_release unlocked;
+      app::CheckedPoints checked = app::checked_points(t.owner()->path, t.as_file(), t.owner()->igc_altitude);
+      std::vector<app::CheckSegments> tracks{std::move(checked.segments)};
+      app::TerrainOptions options;
+      if (terrain) options.terrain = *terrain;
+      app::add_ground_heights(options, diagnostics, true, tracks);
+      checked.track.infringements = as::find_infringements(*index_, tracks.front());
+      report.tracks.push_back(std::move(checked.track));
+    }
+    warn_all(diagnostics.warnings);
+    return to_python(app::check_json(report)["tracks"][0]).cast<py::dict>();
+  }
+
+ private:
+  std::string path_;
+  std::shared_ptr<const as::AirspaceReadResult> read_;
+  std::shared_ptr<const as::AirspaceIndex> index_;
+};
+
+py::dict elevation(const Track& t, const std::string& terrain, std::optional<int> zoom) {
+  app::TerrainOptions options;
+  options.terrain = terrain;
+  if (zoom) options.terrain_zoom = *zoom;
+  QuietDiagnostics diagnostics;
+  app::ElevationReport report;
+  {
+    py::gil_scoped_release unlocked;
+    std::vector<geo::LatLon> where;
+    where.reserve(t.points().size());
+    for (const track::Segment& s : t.model().segments)
+      for (const track::TrackPoint& p : s.points) where.push_back({p.lat, p.lon});
+    const app::TerrainHeights sampled = app::terrain_heights(where, options, diagnostics, t.owner()->path);
+    report.path = t.owner()->path;
+    report.terrain = sampled.source_name;
+    std::size_t k = 0;
+    for (std::size_t s = 0; s < t.model().segments.size(); ++s)
+      for (const track::TrackPoint& p : t.model().segments[s].points)
+        report.points.push_back({t.index(), s, p.lat, p.lon, p.ele, sampled.heights[k++]});
+    report.summary = app::summarize(report.points);
+  }
+  warn_all(diagnostics.warnings);
+  py::array_t<double> ground(static_cast<py::ssize_t>(report.points.size()));
+  py::array_t<double> agl(static_cast<py::ssize_t>(report.points.size()));
+  for (std::size_t i = 0; i < report.points.size(); ++i) {
+    ground.mutable_data()[i] = report.points[i].terrain_m;
+    agl.mutable_data()[i] = report.points[i].agl_m();
+  }
+  const nlohmann::ordered_json j = app::elevation_json(report);
+  py::dict out;
+  out["terrain"] = ground;
+  out["agl"] = agl;
+  out["source"] = report.terrain;
+  out["summary"] = to_python(j["summary"]);
+  return out;
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  m.def("score", &score, py::arg("flight"), py::arg("rules"), py::arg("distance"), py::arg("trim"),
+        py::arg("all_types"));
+  m.def("flight", &flight, py::arg("track"));
+  m.def("elevation", &elevation, py::arg("track"), py::arg("terrain"), py::arg("terrain_zoom"));
+  py::class_<Task>(m, "Task", "A competition task (XCTrack .xctsk, its XCTSK: QR text, or an IGC C-record declaration).")
+      .def_static("read", &Task::read, py::arg("path"), "Reads a task file; ReadError naming the file and the place.")
+      .def_property_readonly("path", &Task::path)
+      .def("info", &Task::info,
+           "The task as `trailray task --json` gives it: turnpoints, radii, roles, distances through the centres "
+           "and optimised")
+      .def("check", &Task::check, py::arg("track"), py::arg("tolerance") = 0.0,
+           "The turnpoints the track reached and when, as a flight of `trailray task --json` (tolerance: percent of "
+           "a radius)")
+      .def("__repr__", [](const Task& t) { return fmt::format("<trailray.Task '{}'>", t.path()); });
+  py::class_<Airspaces>(m, "Airspaces", "Airspaces of an OpenAir file, indexed for checking tracks.")
+      .def_static("read", &Airspaces::read, py::arg("path"), py::arg("strict") = false,
+                  "Reads an OpenAir file; ReadError naming the file and the line.")
+      .def_property_readonly("path", &Airspaces::path)
+      .def_property_readonly("names", &Airspaces::names)
+      .def("__len__", &Airspaces::size)
+      .def("check", &Airspaces::check, py::arg("track"), py::arg("terrain") = py::none(),
+           "The track's infringements as `trailray check --json` gives them (terrain: a source for AGL limits)")
+      .def("__repr__",
+           [](const Airspaces& a) { return fmt::format("<trailray.Airspaces '{}': {} airspaces>", a.path(), a.size()); });
+}
+
+}  // namespace trailray::python
