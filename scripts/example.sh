@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 scripts/setup.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAILRAY_TESTS=OFF >/dev/null
-cmake --build build --target trailray
+cmake --build build --target trailray trailray_python
 
 mkdir -p out
 build/src/app/trailray stats examples/paraglider_flight.igc examples/hike.gpx | tee out/example-stats.txt
@@ -26,7 +26,15 @@ if [ -f "$dem" ]; then
 else
   echo "($dem absent: skipping the elevation example)"
 fi
+# The same from Python (src/python/): `import trailray` with build/python on the path.
+echo
+PYTHONPATH=build/python /usr/bin/python3 - <<'PY'
+import trailray
+track = trailray.read("examples/paraglider_flight.igc").tracks[0]
+km = track.stats()["clean"]["distance_2d_m"] / 1000
+print(f"python: {track.name}: {len(track)} points, {km:.3f} km, xcontest score {trailray.score(track)['score']}")
+PY
 echo
 echo "Output: out/example-stats.txt (table), out/example-stats.json (JSON), out/example-elevation.txt and .csv,"
 echo "out/example-render.png (picture);"
-echo "binary: build/src/app/trailray"
+echo "binary: build/src/app/trailray; Python: export PYTHONPATH=$PWD/build/python, then /usr/bin/python3 -c 'import trailray'"
