@@ -20,6 +20,7 @@
 #include "app/terrain_heights.hpp"
 #include "python/bindings.hpp"
 #include "python/json_objects.hpp"
+#include "python/text.hpp"
 #include "python/track_objects.hpp"
 #include "track/airspace/airspace_index.hpp"
 #include "track/airspace/openair_reader.hpp"
@@ -37,9 +38,9 @@ namespace tt = track::task;
 namespace as = track::airspace;
 
 // trailray.ReadError(text, path, line, column), raised.
-[[noreturn]] void raise_read_error(const std::string& text, const std::string& path, std::int64_t line = 0,
+[[noreturn]] void raise_read_error(const std::string& message, const std::string& path, std::int64_t line = 0,
                                    std::int64_t column = 0) {
-  py::object error = py::module_::import("trailray").attr("ReadError")(text, path, line, column);
+  py::object error = py::module_::import("trailray").attr("ReadError")(text(message), text(path), line, column);
   PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
   throw py::error_already_set();
 }
@@ -49,11 +50,11 @@ namespace as = track::airspace;
 }
 
 // Warnings (reader's, terrain's) through Python's warnings module as TrailrayWarning.
-void warn_all(const std::vector<std::string>& texts) {
-  if (texts.empty()) return;
+void warn_all(const std::vector<std::string>& lines) {
+  if (lines.empty()) return;
   py::object category = py::module_::import("trailray").attr("TrailrayWarning");
-  for (const std::string& t : texts)
-    if (PyErr_WarnEx(category.ptr(), t.c_str(), 2) != 0) throw py::error_already_set();
+  py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& line : lines) warn(text(line), category, 2);
 }
 
 // The fixes `score` optimises over: of an IGC file's B records as the command reads them, or of a
@@ -244,7 +245,7 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
   py::dict out;
   out["terrain"] = ground;
   out["agl"] = agl;
-  out["source"] = report.terrain;
+  out["source"] = text(report.terrain);
   out["summary"] = to_python(j["summary"]);
   return out;
 }
@@ -258,24 +259,24 @@ void bind_analysis(py::module_& m) {
   m.def("elevation", &elevation, py::arg("track"), py::arg("terrain"), py::arg("terrain_zoom"));
   py::class_<Task>(m, "Task", "A competition task (XCTrack .xctsk, its XCTSK: QR text, or an IGC C-record declaration).")
       .def_static("read", &Task::read, py::arg("path"), "Reads a task file; ReadError naming the file and the place.")
-      .def_property_readonly("path", &Task::path)
+      .def_property_readonly("path", [](const Task& t) { return text(t.path()); })
       .def("info", &Task::info,
            "The task as `trailray task --json` gives it: turnpoints, radii, roles, distances through the centres "
            "and optimised")
       .def("check", &Task::check, py::arg("track"), py::arg("tolerance") = 0.0,
            "The turnpoints the track reached and when, as a flight of `trailray task --json` (tolerance: percent of "
            "a radius)")
-      .def("__repr__", [](const Task& t) { return fmt::format("<trailray.Task '{}'>", t.path()); });
+      .def("__repr__", [](const Task& t) { return text(fmt::format("<trailray.Task '{}'>", t.path())); });
   py::class_<Airspaces>(m, "Airspaces", "Airspaces of an OpenAir file, indexed for checking tracks.")
       .def_static("read", &Airspaces::read, py::arg("path"), py::arg("strict") = false,
                   "Reads an OpenAir file; ReadError naming the file and the line.")
-      .def_property_readonly("path", &Airspaces::path)
-      .def_property_readonly("names", &Airspaces::names)
+      .def_property_readonly("path", [](const Airspaces& a) { return text(a.path()); })
+      .def_property_readonly("names", [](const Airspaces& a) { return texts(a.names()); })
       .def("__len__", &Airspaces::size)
       .def("check", &Airspaces::check, py::arg("track"), py::arg("terrain") = py::none(),
            "The track's infringements as `trailray check --json` gives them (terrain: a source for AGL limits)")
       .def("__repr__",
-           [](const Airspaces& a) { return fmt::format("<trailray.Airspaces '{}': {} airspaces>", a.path(), a.size()); });
+           [](const Airspaces& a) { return text(fmt::format("<trailray.Airspaces '{}': {} airspaces>", a.path(), a.size())); });
 }
 
 }  // namespace trailray::python

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "python/text.hpp"
+
 namespace trailray::python {
 
 namespace py = pybind11;
@@ -25,7 +27,7 @@ py::object to_python(const Json& j) {
     case nlohmann::json::value_t::number_float:
       return py::float_(j.template get<double>());
     case nlohmann::json::value_t::string:
-      return py::str(j.template get_ref<const std::string&>());
+      return text(j.template get_ref<const std::string&>());
     case nlohmann::json::value_t::array: {
       py::list out;
       for (const auto& v : j) out.append(to_python(v));
@@ -33,7 +35,7 @@ py::object to_python(const Json& j) {
     }
     case nlohmann::json::value_t::object: {
       py::dict out;
-      for (auto it = j.begin(); it != j.end(); ++it) out[py::str(it.key())] = to_python(it.value());
+      for (auto it = j.begin(); it != j.end(); ++it) out[text(it.key())] = to_python(it.value());
       return out;
     }
     case nlohmann::json::value_t::binary:

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "python/bindings.hpp"
+#include "python/text.hpp"
 #include "python/track_objects.hpp"
 #include "track/io/byte_source.hpp"
 #include "track/io/format_detect.hpp"
@@ -57,7 +58,7 @@ track::ReadResult read_source(track::ByteSource& source, const std::optional<tra
 }
 
 py::tuple diagnostic_tuple(const track::Diagnostic& d) {
-  return py::make_tuple(d.to_string(), d.file, d.position.line, d.position.column, d.message);
+  return py::make_tuple(text(d.to_string()), text(d.file), d.position.line, d.position.column, text(d.message));
 }
 
 // (File or None, error or None, warnings); a diagnostic is (text, file, line, column, message).

@@ -16,6 +16,7 @@
 #include "app/render_picture.hpp"
 #include "app/track_arguments.hpp"
 #include "python/bindings.hpp"
+#include "python/text.hpp"
 #include "python/track_objects.hpp"
 
 namespace trailray::python {
@@ -131,7 +132,7 @@ py::tuple render(const py::list& paths, const py::list& objects, const py::dict&
   py::array_t<std::uint8_t> picture({h, w, py::ssize_t{4}}, {w * 4, py::ssize_t{4}, py::ssize_t{1}}, pixels, owner);
   std::vector<std::string> warnings = diagnostics.warnings;
   for (const std::string& e : diagnostics.errors) warnings.push_back(e);
-  return py::make_tuple(picture, warnings);
+  return py::make_tuple(picture, texts(warnings));
 }
 
 py::bytes png_of(const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& picture) {

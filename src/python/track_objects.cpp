@@ -7,6 +7,7 @@
 
 #include "app/stats_report.hpp"
 #include "python/json_objects.hpp"
+#include "python/text.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
@@ -207,9 +208,9 @@ void bind_track_objects(py::module_& m) {
       .def("__repr__", [](const Segment& s) { return fmt::format("<trailray.Segment of {} points>", s.points().size()); });
 
   py::class_<Track> track(m, "Track", track_doc);
-  track.def_property_readonly("name", [](const Track& t) { return t.model().name; })
-      .def_property_readonly("description", [](const Track& t) { return t.model().description; })
-      .def_property_readonly("type", [](const Track& t) { return t.model().type; },
+  track.def_property_readonly("name", [](const Track& t) { return text(t.model().name); })
+      .def_property_readonly("description", [](const Track& t) { return text(t.model().description); })
+      .def_property_readonly("type", [](const Track& t) { return text(t.model().type); },
                              "The activity type as the device wrote it ('running', '9', ...)")
       .def_property_readonly("is_route", &Track::is_route, "A planned route (GPX rte), not a recording")
       .def_property_readonly("segments", &Track::segments)
@@ -231,9 +232,9 @@ void bind_track_objects(py::module_& m) {
   track.def("__len__", [](const Track& t) { return t.points().size(); })
       .def("__repr__",
            [](const Track& t) {
-             return fmt::format("<trailray.{} '{}': {} points, {} segment{}>", t.is_route() ? "Track (route)" : "Track",
+             return text(fmt::format("<trailray.{} '{}': {} points, {} segment{}>", t.is_route() ? "Track (route)" : "Track",
                                 t.model().name, t.points().size(), t.model().segments.size(),
-                                t.model().segments.size() == 1 ? "" : "s");
+                                t.model().segments.size() == 1 ? "" : "s"));
            })
       .def(
           "cleaned",
@@ -276,7 +277,7 @@ distance_3d_m, duration_s, moving_time_s, elevation_gain_m, ... (None where unkn
 per segment under ``"segments"``.)");
 
   py::class_<File>(m, "File", "A track file as read: its tracks, routes, waypoints, metadata and the reader's warnings.")
-      .def_property_readonly("path", [](const File& f) { return f.data().path; })
+      .def_property_readonly("path", [](const File& f) { return text(f.data().path); })
       .def_property_readonly("format", [](const File& f) { return std::string(track::format_name(f.data().file.format)); },
                              "gpx, igc, tcx, fit, kml, kmz or geojson")
       .def_property_readonly("tracks", &File::tracks)
@@ -287,34 +288,34 @@ per segment under ``"segments"``.)");
             py::list out;
             py::object waypoint = py::module_::import("trailray").attr("Waypoint");
             for (const track::Waypoint& w : f.data().file.waypoints)
-              out.append(waypoint(w.name, w.point.lat, w.point.lon, number_or_none(w.point.ele),
-                                  time_or_none(w.point.time), w.description, w.symbol));
+              out.append(waypoint(text(w.name), w.point.lat, w.point.lon, number_or_none(w.point.ele),
+                                  time_or_none(w.point.time), text(w.description), text(w.symbol)));
             return out;
           },
           "Waypoints (name, lat, lon, ele, time, description, symbol)")
-      .def_property_readonly("warnings", [](const File& f) { return f.data().warnings; },
+      .def_property_readonly("warnings", [](const File& f) { return texts(f.data().warnings); },
                              "The reader's warnings, 'file:line:column: message'")
       .def_property_readonly(
           "metadata",
           [](const File& f) {
             const track::Metadata& md = f.data().file.metadata;
             py::dict out;
-            out["name"] = md.name;
-            out["description"] = md.description;
-            out["creator"] = md.creator;
-            out["activity_type"] = md.activity_type;
+            out["name"] = text(md.name);
+            out["description"] = text(md.description);
+            out["creator"] = text(md.creator);
+            out["activity_type"] = text(md.activity_type);
             out["time"] = time_or_none(md.time);
             py::dict fields;
-            for (const auto& [k, v] : md.fields) fields[py::str(k)] = v;
+            for (const auto& [k, v] : md.fields) fields[text(k)] = text(v);
             out["fields"] = fields;
             return out;
           },
           "name, description, creator, activity_type, time and the format's header fields (an IGC "
           "file's pilot, glider, ...)")
       .def("__repr__", [](const File& f) {
-        return fmt::format("<trailray.File '{}' ({}): {} tracks, {} routes, {} waypoints>", f.data().path,
+        return text(fmt::format("<trailray.File '{}' ({}): {} tracks, {} routes, {} waypoints>", f.data().path,
                            track::format_name(f.data().file.format), f.data().file.tracks.size(),
-                           f.data().routes.size(), f.data().file.waypoints.size());
+                           f.data().routes.size(), f.data().file.waypoints.size()));
       });
 }
 

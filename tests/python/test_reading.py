@@ -125,3 +125,41 @@ def test_to_pandas_has_one_row_per_point():
     assert {"lat", "lon", "ele", "time", "hr", "segment"} <= set(df.columns)
     assert str(df["time"].dtype).startswith("datetime64")
     np.testing.assert_array_equal(df["hr"].to_numpy(), t.hr)
+
+
+def test_hostile_bytes_give_a_file_or_a_read_error():
+    """Cut and corrupted files of every format: a File or a ReadError, never a crash."""
+    from conftest import shared_track_files
+
+    shared("gpx")
+    rng = np.random.default_rng(7)
+    for path in shared_track_files()[::3]:
+        data = path.read_bytes()[:200_000]
+        for _ in range(6):
+            cut = data[: int(rng.integers(0, len(data) + 1))]
+            noisy = bytearray(cut)
+            for i in rng.integers(0, max(len(noisy), 1), size=min(len(noisy), 20)):
+                noisy[i] = int(rng.integers(0, 256))
+            for blob in (cut, bytes(noisy)):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore", trailray.TrailrayWarning)
+                    try:
+                        f = trailray.read(blob)
+                    except trailray.ReadError as e:
+                        assert str(e).startswith("<bytes>")
+                        continue
+                for t in f.tracks + f.routes:
+                    assert len(t.lat) == len(t) and len(t.time) == len(t)
+                    t.stats()
+
+
+def test_bytes_that_are_not_utf8_become_replacement_characters():
+    # A GPX that says UTF-8 and is not (the reader keeps the bytes), and an IGC header in Latin-1
+    # (the IGC reader decodes it).
+    gpx = trailray.read(GPX.replace(b"<name>Walk</name>", b"<name>W\xffalk \xe9t\xe9</name>"))
+    assert gpx.tracks[0].name == "W\ufffdalk \ufffdt\ufffd"
+    assert "\ufffd" in repr(gpx.tracks[0])
+    assert gpx.tracks[0].stats()["name"] == gpx.tracks[0].name
+    igc = (b"AXXXtest\r\nHFDTE010624\r\nHFPLTPILOT:J\xfcrg M\xfcller\r\n"
+           + b"".join(b"B10%02d004700000N01100000EA0100001000\r\n" % s for s in range(10)))
+    assert trailray.read(igc).metadata["fields"]["pilot"] == "J\u00fcrg M\u00fcller"
