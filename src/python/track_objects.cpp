@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <functional>
 
 #include "app/stats_report.hpp"
 #include "python/json_objects.hpp"
@@ -78,6 +79,26 @@ track::TrackFile Track::as_file() const {
   f.metadata = owner_->file.metadata;
   f.tracks.push_back(*track_);
   return f;
+}
+
+namespace {
+
+template <typename T>
+py::list cached_list(py::object& cache, const std::function<std::vector<T>()>& make) {
+  if (!cache) cache = py::tuple(py::cast(make()));
+  return py::list(cache);
+}
+
+}  // namespace
+
+py::list File::track_list() const {
+  return cached_list<Track>(tracks_, [this] { return tracks(); });
+}
+py::list File::route_list() const {
+  return cached_list<Track>(routes_, [this] { return routes(); });
+}
+py::list Track::segment_list() const {
+  return cached_list<Segment>(segments_, [this] { return segments(); });
 }
 
 std::vector<Track> File::tracks() const {
@@ -213,7 +234,7 @@ void bind_track_objects(py::module_& m) {
       .def_property_readonly("type", [](const Track& t) { return text(t.model().type); },
                              "The activity type as the device wrote it ('running', '9', ...)")
       .def_property_readonly("is_route", &Track::is_route, "A planned route (GPX rte), not a recording")
-      .def_property_readonly("segments", &Track::segments)
+      .def_property_readonly("segments", &Track::segment_list)
       .def_property_readonly("lat", [](const Track& t) { return t.points().lat(); }, "Latitudes, degrees (WGS84)")
       .def_property_readonly("lon", [](const Track& t) { return t.points().lon(); }, "Longitudes, degrees (WGS84)")
       .def_property_readonly("ele", [](const Track& t) { return t.points().ele(); }, "Elevations, metres (NaN: none)")
@@ -280,8 +301,8 @@ per segment under ``"segments"``.)");
       .def_property_readonly("path", [](const File& f) { return text(f.data().path); })
       .def_property_readonly("format", [](const File& f) { return std::string(track::format_name(f.data().file.format)); },
                              "gpx, igc, tcx, fit, kml, kmz or geojson")
-      .def_property_readonly("tracks", &File::tracks)
-      .def_property_readonly("routes", &File::routes, "Routes (GPX rte) as tracks of one segment, is_route True")
+      .def_property_readonly("tracks", &File::track_list)
+      .def_property_readonly("routes", &File::route_list, "Routes (GPX rte) as tracks of one segment, is_route True")
       .def_property_readonly(
           "waypoints",
           [](const File& f) {

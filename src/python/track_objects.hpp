@@ -48,6 +48,7 @@ class Track {
   bool is_route() const { return is_route_; }
   const PointArrays& points() const { return arrays_; }
   std::vector<Segment> segments() const;
+  py::list segment_list() const;  // made once, as File::track_list
   // Its position among the file's tracks (or routes).
   std::size_t index() const;
   // A file holding this track alone (a copy), as the reports that take a file want it.
@@ -58,6 +59,7 @@ class Track {
   const track::Track* track_;
   bool is_route_;
   PointArrays arrays_;
+  mutable py::object segments_;
 };
 
 class File {
@@ -66,9 +68,14 @@ class File {
   const FileData& data() const { return *data_; }
   std::vector<Track> tracks() const;
   std::vector<Track> routes() const;
+  // The Track objects Python sees, made once: a track's arrays are joined once per Track object,
+  // so f.tracks[0].lat twice must reach the same object. A fresh list of them each time.
+  py::list track_list() const;
+  py::list route_list() const;
 
  private:
   std::shared_ptr<const FileData> data_;
+  mutable py::object tracks_, routes_;  // tuples, once made
 };
 
 void bind_track_objects(py::module_& m);

@@ -64,6 +64,13 @@ def test_several_segments_are_joined_once():
     many = next(x for x in t if len([s for s in x.segments if len(s)]) > 1)
     np.testing.assert_array_equal(many.lat, np.concatenate([s.lat for s in many.segments]))
     assert many.lat is many.lat
+    # Reached again through the file, it is the same Track with the same joined arrays.
+    f = trailray.read(shared("gpx/gpxstudio_with_tracks_and_segments.gpx"))
+    i = next(i for i, x in enumerate(f.tracks) if len([s for s in x.segments if len(s)]) > 1)
+    assert f.tracks[i] is f.tracks[i] and f.tracks[i].lat is f.tracks[i].lat
+    assert f.tracks[i].segments[0] is f.tracks[i].segments[0]
+    f.tracks.clear()  # a list of its own: the file's tracks stay
+    assert len(f.tracks) == len(t)
     for s in many.segments:
         assert s.lat.strides == (64,) or len(s) == 0
 
