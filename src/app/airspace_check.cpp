@@ -1,12 +1,6 @@
 #include "app/airspace_check.hpp"
 
-#include <fmt/format.h>
-
 #include <cmath>
-#include <memory>
-
-#include "terrain/height_sampler.hpp"
-#include "terrain/source_factory.hpp"
 
 namespace trailray::app {
 namespace {
@@ -64,33 +58,6 @@ CheckedPoints checked_points(const std::string& display_path, const track::Track
     out.track.altitudes =
         "IGC: FL/STD limits with the pressure altitude (against 1013.25 hPa), MSL/AGL limits with the GNSS altitude";
   return out;
-}
-
-void add_ground_heights(const TerrainOptions& terrain, scene::Diagnostics& diagnostics, bool quiet,
-                        std::vector<CheckSegments>& tracks) {
-  if (terrain.terrain.empty()) return;
-  const terrain::TerrainConfig config = resolve_terrain_config(terrain);
-  terrain::SourceContext context{config.network, config.cache,
-                                 [&diagnostics](std::string w) { diagnostics.warning("terrain: " + w); }};
-  std::unique_ptr<terrain::HeightSource> source = terrain::open_height_source(config.terrain, context);
-  if (!source) return;
-  std::vector<geo::LatLon> where;
-  for (const auto& t : tracks)
-    for (const auto& s : t)
-      for (const auto& p : s) where.push_back({p.lat, p.lon});
-  terrain::HeightSampler sampler(*source, {});
-  const std::vector<double> heights =
-      sampler.sample(where, [&](const terrain::LoadProgress& p, std::size_t, std::size_t) {
-        if (!quiet) diagnostics.progress(fmt::format("terrain tiles: {}/{} loaded", p.loaded + p.no_data, p.wanted));
-      });
-  diagnostics.progress_done();
-  std::size_t k = 0;
-  for (auto& t : tracks)
-    for (auto& s : t)
-      for (auto& p : s) p.ground_m = heights[k++];
-  if (sampler.report().with_height < where.size())
-    diagnostics.warning(fmt::format("terrain: no data at {} of {} points (AGL limits there taken conservatively)",
-                                    where.size() - sampler.report().with_height, where.size()));
 }
 
 }  // namespace trailray::app

@@ -28,7 +28,7 @@ CheckedPoints checked_points(const std::string& display_path, const track::Track
                              track::ReadOptions::IgcAltitude igc_altitude);
 
 // The terrain of `terrain` under every point (CheckPoint::ground_m), for AGL limits; progress on
-// the diagnostics' line unless `quiet`. Nothing without a source.
+// the diagnostics' line unless `quiet`. Nothing without a source. (airspace_ground.cpp)
 void add_ground_heights(const TerrainOptions& terrain, scene::Diagnostics& diagnostics, bool quiet,
                         std::vector<CheckSegments>& tracks);
 

@@ -28,7 +28,7 @@ struct CheckArgs {
   TerrainOptions terrain;
 };
 
-int run_check(const CheckArgs& a) {
+int run_check(const CheckArgs& a, const CheckTerrain& terrain) {
   TerminalDiagnostics diagnostics(false, !a.quiet && isatty(STDERR_FILENO) != 0);
   const auto start = std::chrono::steady_clock::now();
   const track::airspace::AirspaceReadResult air = track::airspace::load_openair_file(a.airspace, a.read);
@@ -58,7 +58,7 @@ int run_check(const CheckArgs& a) {
     report.tracks.push_back(std::move(checked.track));
     tracks.push_back(std::move(checked.segments));
   }
-  add_ground_heights(a.terrain, diagnostics, a.quiet, tracks);
+  if (terrain.add_ground != nullptr) terrain.add_ground(a.terrain, diagnostics, a.quiet, tracks);
   const auto check_start = std::chrono::steady_clock::now();
   for (std::size_t t = 0; t < tracks.size(); ++t)
     report.tracks[t].infringements = track::airspace::find_infringements(index, tracks[t]);
@@ -79,7 +79,7 @@ int run_check(const CheckArgs& a) {
 
 }  // namespace
 
-void add_check_command(CLI::App& app, int& exit_code) {
+void add_check_command(CLI::App& app, int& exit_code, const CheckTerrain& terrain) {
   auto args = std::make_shared<CheckArgs>();
   CLI::App* cmd = app.add_subcommand("check", "Airspace infringements of tracks (OpenAir airspace file)");
   cmd->footer(
@@ -101,9 +101,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--json", args->json, "Print one JSON document");
   cmd->add_flag("--timing", args->timing, "Print the time the airspace read and the check took (stderr)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress display");
-  add_terrain_options(*cmd, args->terrain);
+  if (terrain.add_options != nullptr) terrain.add_options(*cmd, args->terrain);
   add_read_options(*cmd, args->read);
-  cmd->callback([args, &exit_code] {
+  cmd->callback([args, &exit_code, terrain] {
     try {
       args->tracks = expand_track_arguments(args->tracks);
     } catch (const TrackArgumentError& e) {  // as a file that cannot be read: status 2 here
@@ -111,7 +111,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
       exit_code = 2;
       return;
     }
-    exit_code = run_check(*args);
+    exit_code = run_check(*args, terrain);
   });
 }
 

@@ -1,0 +1,33 @@
+// trailray-full's commands: all of them, in the order `trailray --help` lists them.
+#include "app/bench_command.hpp"
+#include "app/check_command.hpp"
+#include "app/cli.hpp"
+#include "app/convert_command.hpp"
+#include "app/elevation_command.hpp"
+#include "app/flight_command.hpp"
+#include "app/render_command.hpp"
+#include "app/score_command.hpp"
+#include "app/serve_command.hpp"
+#include "app/stats_command.hpp"
+#include "app/task_command.hpp"
+#include "app/video_command.hpp"
+#include "app/view_command.hpp"
+
+namespace trailray::app {
+
+void add_all_commands(CLI::App& app, int& exit_code) {
+  add_stats_command(app, exit_code);
+  add_elevation_command(app, exit_code);
+  add_convert_command(app, exit_code);
+  add_check_command(app, exit_code, check_terrain());
+  add_render_command(app, exit_code);
+  add_view_command(app, exit_code);
+  add_video_command(app, exit_code);
+  add_score_command(app, exit_code);
+  add_flight_command(app, exit_code);
+  add_task_command(app, exit_code);
+  add_serve_command(app, exit_code);
+  add_bench_command(app, exit_code);
+}
+
+}  // namespace trailray::app
