@@ -14,5 +14,6 @@ int run_cli(int argc, char** argv, CommandTable commands);
 void add_track_commands(CLI::App& app, int& exit_code);    // command_set_tracks.cpp: trailray itself
 void add_picture_commands(CLI::App& app, int& exit_code);  // command_set_pictures.cpp: trailray-render
 void add_all_commands(CLI::App& app, int& exit_code);      // command_set_all.cpp: trailray-full
+void add_gpu_commands(CLI::App& app, int& exit_code);      // command_set_gpu.cpp: trailray-gpu (the GPU bundle)
 
 }  // namespace trailray::app

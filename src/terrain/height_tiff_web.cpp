@@ -1,4 +1,5 @@
-// The browser's build of height_tiff.hpp: it has no GDAL to read TIFF with.
+// height_tiff.hpp where there is no GDAL to read TIFF with: the browser's build, and the GPU
+// bundle's program (trailray-gpu compiles this file into itself).
 #include "terrain/height_decode.hpp"
 #include "terrain/height_tiff.hpp"
 
@@ -6,8 +7,9 @@ namespace trailray::terrain::detail {
 namespace {
 [[noreturn]] void no_tiff() {
   throw TileDecodeError(
-      "float (TIFF) height tiles are not readable in the browser; use a Terrarium, Terrain-RGB "
-      "or AlpineMaps PNG source, or `trailray serve --terrain`, which serves them as Terrarium");
+      "float (TIFF) height tiles need GDAL, which the browser and the GPU bundle do not have; use a "
+      "Terrarium, Terrain-RGB or AlpineMaps PNG source, or `trailray serve --terrain`, which serves them "
+      "as Terrarium");
 }
 }  // namespace
 
