@@ -5,7 +5,8 @@
 #   scripts/quick-test.sh            the tests of what changed against QUICK_TEST_BASE (default
 #                                    HEAD: uncommitted and new files): a changed test file runs its
 #                                    suites; a changed file of src/<layer>/ runs every test of
-#                                    tests/<layer>/; fuzz/ the regression inputs; anything else
+#                                    tests/<layer>/; fuzz/ the regression inputs; src/python/
+#                                    the module's pytest suites; anything else
 #                                    (CMake, scripts, tests/test_support.hpp) every test
 #   scripts/quick-test.sh REGEX      the tests whose names match REGEX (ctest -R)
 #   scripts/quick-test.sh --all      every test of the tree
@@ -22,7 +23,7 @@ cmake --build build
 run() { exec ctest --test-dir build --no-tests=error --output-on-failure -j "$(nproc)" "$@"; }
 case "${1:-}" in
   --all) run ;;
-  -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   "") ;;
   *) run -R "$1" ;;
 esac
@@ -36,9 +37,12 @@ fi
 
 test_files=()
 fuzz=0
+python=0
 for f in "${changed[@]}"; do
   case $f in
     tests/fuzz/*|fuzz/*) fuzz=1 ;;
+    tests/python/*|src/python/*) python=1 ;;  # the module's pytest suites
+    tests/packaging/*|scripts/gpu-bundle.sh) packaging=1 ;;
     tests/web/*|src/web/*|docs/*|*.md|examples/*|bench/*) ;;  # nothing of this tree's ctest
     tests/*_test.cpp) [ -f "$f" ] && test_files+=("$f") ;;
     src/*/*)
@@ -58,9 +62,11 @@ fi
 patterns=()
 [ ${#suites[@]} -gt 0 ] && patterns+=("(^|/)($(IFS='|'; echo "${suites[*]}"))\\.")
 [ $fuzz -eq 1 ] && patterns+=("^fuzz_regression_")
+[ $python -eq 1 ] && patterns+=("^python\\.")
+[ "${packaging:-0}" -eq 1 ] && patterns+=("^packaging\\.")
 if [ ${#patterns[@]} -eq 0 ]; then
   echo "quick-test: no test of this tree covers what changed (${changed[*]})"
   exit 0
 fi
-echo "quick-test: ${#suites[@]} suites from ${#test_files[@]} test files$([ $fuzz -eq 1 ] && echo ', the fuzzers'\'' regression inputs')"
+echo "quick-test: ${#suites[@]} suites from ${#test_files[@]} test files$([ $fuzz -eq 1 ] && echo ', the fuzzers'\'' regression inputs')$([ $python -eq 1 ] && echo ', the Python module'\''s suites')"
 run -R "$(IFS='|'; echo "${patterns[*]}")"
