@@ -7,6 +7,7 @@
 #include "app/convert_command.hpp"
 #include "app/elevation_command.hpp"
 #include "app/flight_command.hpp"
+#include "app/heatmap_command.hpp"
 #include "app/render_command.hpp"
 #include "app/score_command.hpp"
 #include "app/stats_command.hpp"
@@ -17,6 +18,7 @@ namespace trailray::app {
 void add_picture_commands(CLI::App& app, int& exit_code) {
   add_stats_command(app, exit_code);
   add_elevation_command(app, exit_code);
+  add_heatmap_command(app, exit_code);
   add_convert_command(app, exit_code);
   add_check_command(app, exit_code, check_terrain());
   add_render_command(app, exit_code);

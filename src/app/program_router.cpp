@@ -31,7 +31,7 @@ Program program_for(int argc, const char* const* argv) {
   if (argc < 2) return Program::Full;  // the usage, with every command
   const std::string_view command = argv[1];
   if (command == "--version") return Program::Tracks;
-  if (any_of(command, {"render", "elevation", "bench"})) return Program::Pictures;
+  if (any_of(command, {"render", "elevation", "heatmap", "bench"})) return Program::Pictures;
   if (!any_of(command, {"stats", "convert", "score", "flight", "task", "check"})) return Program::Full;
   for (int i = 2; i < argc; ++i) {
     const std::string_view a = argv[i];

@@ -4,7 +4,7 @@
 //   trailray         the track commands in its own process (stats, convert, score, flight, task,
 //                    check without --terrain): the readers and the analysis, no terrain, GL,
 //                    encoders, window or server;
-//   trailray-render  render, elevation, bench and check --terrain: the terrain layer and headless
+//   trailray-render  render, elevation, heatmap, bench and check --terrain: the terrain layer and headless
 //                    GL, no films' encoders, window or HTTP server;
 //   trailray-full    view, video, serve, the help of the whole program and anything else.
 // The user types `trailray COMMAND` for all of them: trailray hands the command line over to the

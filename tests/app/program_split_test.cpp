@@ -41,7 +41,7 @@ TEST(ProgramRouter, TrackCommandsRunInTrailrayItself) {
 }
 
 TEST(ProgramRouter, TerrainAndPicturesGoToTrailrayRender) {
-  for (const char* c : {"render", "elevation", "bench"}) EXPECT_EQ(route({c, "x.gpx"}), Program::Pictures) << c;
+  for (const char* c : {"render", "elevation", "heatmap", "bench"}) EXPECT_EQ(route({c, "x.gpx"}), Program::Pictures) << c;
   EXPECT_EQ(route({"check", "--airspace", "a.txt", "--terrain", "dem.tif", "x.igc"}), Program::Pictures);
   EXPECT_EQ(route({"check", "--terrain=dem.tif", "x.igc"}), Program::Pictures);
   EXPECT_EQ(route({"check", "--offline", "x.igc"}), Program::Pictures);
@@ -72,7 +72,7 @@ TEST(ProgramSplit, EveryCommandIsStillThere) {
   const auto help = run_command(shell_quote(TRAILRAY_BINARY) + " --help");
   EXPECT_EQ(help.status, 0);
   for (const char* c : {"stats", "elevation", "convert", "check", "render", "view", "video", "score", "flight",
-                        "task", "serve", "bench"})
+                        "task", "serve", "bench", "heatmap"})
     EXPECT_NE(help.out.find(std::string("  ") + c), std::string::npos) << c;
   const auto check = run_command(shell_quote(TRAILRAY_BINARY) + " check --help");
   EXPECT_NE(check.out.find("--terrain"), std::string::npos);
