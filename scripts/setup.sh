@@ -47,6 +47,8 @@ packages=(
   python3-numpy          # the module's arrays
   python3-pytest         # the module's tests (ctest runs them)
   python3-pandas         # Track.to_pandas() and examples/python (optional for users)
+  python3-dask           # trailray.dask: heatmaps and per-file work over a cluster (optional for users)
+  python3-distributed    # trailray.dask's Client and the tests' LocalCluster
   # --- the browser build (scripts/web.sh; sources of its C/C++ libraries: scripts/web-sources.sh) ---
   emscripten             # C++ to WebAssembly + WebGL2 (3.1.6, with its prebuilt libc/libc++ and node tests)
   dpkg-dev               # dpkg-source: apt-get source unpacks the Debian source packages with their patches

@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   trailray::python::bind_reading(m);
   trailray::python::bind_rendering(m);
   trailray::python::bind_analysis(m);
+  trailray::python::bind_heatmap(m);
 }

@@ -39,4 +39,4 @@ def test_every_public_name_is_documented_and_in_the_stubs():
 
 def test_nothing_but_the_api_is_exported():
     leaked = {n for n in dir(trailray) if not n.startswith("_")} - set(trailray.__all__)
-    assert leaked <= {"annotations"}, sorted(leaked)
+    assert leaked <= {"annotations", "dask"}, sorted(leaked)  # trailray.dask: a submodule, once imported

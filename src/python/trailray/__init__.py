@@ -23,6 +23,7 @@ import numpy as _np
 
 from . import _core
 from ._core import Airspaces, File, Segment, Task, Track
+from ._heatmap import FileError, Heatmap, heatmap
 
 __all__ = [
     "read",
@@ -33,6 +34,9 @@ __all__ = [
     "elevation",
     "Task",
     "Airspaces",
+    "heatmap",
+    "Heatmap",
+    "FileError",
     "File",
     "Track",
     "Segment",

@@ -136,3 +136,20 @@ def score(flight: Union[Track, _Path], rules: str = "xcontest", distance: str = 
           all_types: bool = False) -> Dict[str, Any]: ...
 def flight(track: Track) -> Dict[str, Any]: ...
 def elevation(track: Track, terrain: _Path, terrain_zoom: Optional[int] = None) -> Dict[str, Any]: ...
+
+class FileError(NamedTuple):
+    path: str
+    error: str
+
+class Heatmap:
+    counts: npt.NDArray[np.uint32]
+    geotransform: Tuple[float, float, float, float, float, float]
+    window: Tuple[int, int, int, int]
+    cell: float
+    tracks: int
+    errors: List[FileError]
+    def write(self, path: _Path) -> None: ...
+
+def heatmap(files: Union[_Path, Sequence[_Path]], cell: float = 50.0, of: str = "tracks",
+            bbox: Optional[Tuple[float, float, float, float]] = None, strict: bool = False,
+            threads: Optional[int] = None) -> Heatmap: ...

@@ -1,0 +1,143 @@
+"""trailray.heatmap: how many tracks passed through each cell of a Web Mercator grid, as
+`trailray heatmap` counts them, for a list of files on this machine (trailray.dask.heatmap: on a
+cluster)."""
+
+from __future__ import annotations
+
+import concurrent.futures as _futures
+import glob as _glob
+import os as _os
+import tempfile as _tempfile
+from typing import List, NamedTuple, Optional, Sequence, Tuple
+
+import numpy as _np
+
+from . import _core
+
+# The extensions the command line takes from a folder (each also gzip-compressed).
+_TRACK_SUFFIXES = (".gpx", ".igc", ".tcx", ".fit", ".kml", ".kmz", ".geojson", ".json")
+
+
+def _is_track_file(name: str) -> bool:
+    lower = name.lower()
+    if lower.endswith(".gz"):
+        lower = lower[:-3]
+    return lower.endswith(_TRACK_SUFFIXES)
+
+
+def expand_files(files) -> List[str]:
+    """Paths as the command line takes them: a file, a folder (its track files, sorted, not its
+    subfolders), a pattern ('flights/*.igc'), or a list of those."""
+    items = [files] if isinstance(files, (str, bytes, _os.PathLike)) else list(files)
+    out: List[str] = []
+    for item in items:
+        path = _os.fspath(item)
+        if _os.path.isdir(path):
+            out += sorted(_os.path.join(path, n) for n in _os.listdir(path)
+                          if not n.startswith(".") and _is_track_file(n) and _os.path.isfile(_os.path.join(path, n)))
+        elif not _os.path.exists(path) and any(c in path for c in "*?["):
+            matches = sorted(_glob.glob(path))
+            if not matches:
+                raise FileNotFoundError(f"{path}: matches no file")
+            out += expand_files(matches)
+        else:
+            out.append(path)
+    return out
+
+
+class FileError(NamedTuple):
+    """A file that could not be read: counted nowhere."""
+
+    path: str
+    error: str
+
+
+def _check(cell: float, of: str) -> None:
+    if of != "tracks":
+        raise ValueError(f"of={of!r}: heatmaps count tracks (of='tracks'); thermals and time are not there yet")
+    if not (1 <= cell <= 100000):
+        raise ValueError(f"cell {cell} is not in 1..100000 metres")
+
+
+def count_files(paths: Sequence[str], cell: float = 50.0, strict: bool = False) -> Tuple[_core.HeatmapCounts, List[FileError]]:
+    """The counts of some files, read one after the other (the GIL released), and their errors."""
+    counts = _core.HeatmapCounts(float(cell))
+    errors = []
+    for p in paths:
+        error = counts.add_file(p, strict)
+        if error is not None:
+            errors.append(FileError(p, error))
+    return counts, errors
+
+
+class Heatmap:
+    """Counts of tracks per cell of a Web Mercator grid (EPSG:3857).
+
+    counts: (rows, columns) uint32 array, the northern row first.
+    geotransform: GDAL's six numbers (x0, cell, 0, y0, 0, -cell) in EPSG:3857 metres.
+    cell: the cell size in Mercator metres; tracks: how many were counted; errors: the files that
+    could not be read (FileError: path, error), counted nowhere.
+    """
+
+    def __init__(self, counts: _core.HeatmapCounts, bbox=None, errors: Sequence[FileError] = ()):
+        self.cell = counts.cell
+        self.tracks = counts.tracks
+        self.errors = list(errors)
+        self.window = counts.window_of(*bbox) if bbox is not None else counts.extent()
+        col0, row0, col1, row1 = self.window
+        if col1 > col0 and row1 > row0:
+            self.counts = counts.raster(self.window)
+        else:
+            self.counts = _np.zeros((0, 0), dtype=_np.uint32)
+        self.geotransform = tuple(counts.geotransform(self.window))
+
+    def __repr__(self) -> str:
+        rows, cols = self.counts.shape
+        most = int(self.counts.max()) if self.counts.size else 0
+        return f"<trailray.Heatmap {self.tracks} tracks, {self.cell:g} m cells, {cols}x{rows}, at most {most}>"
+
+    def write(self, path) -> None:
+        """The counts as a GeoTIFF (one band, UInt32, EPSG:3857), written atomically."""
+        if self.counts.size == 0:
+            raise ValueError("an empty heatmap (no track point counted) has no picture to write")
+        data = _core.encode_count_geotiff(self.counts, list(self.geotransform))
+        path = _os.fspath(path)
+        folder = _os.path.dirname(_os.path.abspath(path))
+        fd, temporary = _tempfile.mkstemp(prefix="." + _os.path.basename(path) + ".", dir=folder)
+        try:
+            with _os.fdopen(fd, "wb") as f:
+                f.write(data)
+                f.flush()
+                _os.fsync(f.fileno())
+            _os.replace(temporary, path)
+        except BaseException:
+            if _os.path.exists(temporary):
+                _os.unlink(temporary)
+            raise
+
+
+def heatmap(files, cell: float = 50.0, of: str = "tracks", bbox: Optional[Tuple[float, float, float, float]] = None,
+            strict: bool = False, threads: Optional[int] = None) -> Heatmap:
+    """How many tracks passed through each cell, as ``trailray heatmap`` counts them.
+
+    files: a path, a folder, a pattern or a list of them (as the command line takes them).
+    cell: Mercator metres (50 m on the equator; times cos(latitude) on the ground).
+    of: "tracks" (the only one so far).
+    bbox: (min_lat, min_lon, max_lat, max_lon) for the window, else the tracks' extent.
+    threads: files are read on this many threads (default: every core), each file freed once counted.
+    A file that cannot be read is counted nowhere and listed in ``Heatmap.errors``.
+    """
+    _check(cell, of)
+    paths = expand_files(files)
+    threads = max(1, min(threads or _os.cpu_count() or 1, len(paths) or 1))
+    chunks = [paths[i::threads] for i in range(threads)]
+    with _futures.ThreadPoolExecutor(max_workers=threads) as pool:
+        parts = list(pool.map(lambda chunk: count_files(chunk, cell, strict), chunks))
+    total = _core.HeatmapCounts(float(cell))
+    errors = []
+    for counts, errs in parts:
+        total.merge(counts)
+        errors += errs
+    order = {p: i for i, p in enumerate(paths)}
+    errors.sort(key=lambda e: order.get(e.path, 0))
+    return Heatmap(total, bbox, errors)
