@@ -22,7 +22,7 @@ import distributed  # noqa: E402 (setup.sh installs python3-distributed)
 @pytest.fixture(scope="module")
 def client():
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                       dashboard_address=None, silence_logs=logging.ERROR, death_timeout=60)
+                                       dashboard_address=":0", silence_logs=logging.ERROR, death_timeout=60)
     c = distributed.Client(cluster, timeout=60)
     try:
         yield c
