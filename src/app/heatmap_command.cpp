@@ -94,10 +94,11 @@ int run_heatmap(const HeatmapArgs& a) {
     diagnostics.error("no track point to count: nothing written");
     return 1;
   }
-  constexpr std::int64_t kMaxCells = std::int64_t{1} << 31;
+  // The raster is made whole in memory (4 bytes a cell): at most 1 GiB of it.
+  constexpr std::int64_t kMaxCells = std::int64_t{1} << 28;
   if (window.width() * window.height() > kMaxCells)
-    throw std::runtime_error(fmt::format("{}x{} cells is more than a GeoTIFF of this heatmap should hold ({}): a "
-                                         "larger --cell or a --bbox",
+    throw std::runtime_error(fmt::format("{}x{} cells is more than one GeoTIFF of a heatmap holds here ({} cells): a "
+                                         "larger --cell, or a --bbox around the tracks you want",
                                          window.width(), window.height(), kMaxCells));
   const std::vector<std::uint32_t> raster = counts.raster(window);
   const std::vector<unsigned char> tiff =

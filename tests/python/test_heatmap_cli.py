@@ -101,3 +101,13 @@ def test_a_bbox_a_bad_file_and_bad_options(tmp_path):
     assert run_cli("heatmap", good, "-o", tmp_path / "x.png", check=False)[0] == 2
     assert run_cli("heatmap", good, "-o", tmp_path / "y.tif", "--bbox", "47,8,46,9", check=False)[0] == 2
     assert run_cli("heatmap", good, "-o", tmp_path / "z.tif", "--cell", 0, check=False)[0] == 2
+
+
+def test_a_heatmap_too_large_for_memory_is_refused_with_a_way_out(tmp_path):
+    # Flights from Brazil to New Zealand at 200 m cells: 144054x59103 cells, far over 1 GiB.
+    folder = shared("igc")
+    code, printed, err = run_cli("heatmap", folder, "-o", tmp_path / "world.tif", "--cell", 200, check=False)
+    assert code == 1 and "--bbox" in err and not (tmp_path / "world.tif").exists()
+    with pytest.raises(ValueError, match="bbox"):
+        trailray.heatmap(folder, cell=200)
+    assert trailray.heatmap(folder, cell=200, bbox=(46.0, 7.0, 48.0, 13.0)).tracks == 18

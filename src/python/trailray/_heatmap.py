@@ -45,6 +45,10 @@ def expand_files(files) -> List[str]:
     return out
 
 
+# The counts are made whole in memory (4 bytes a cell), as the command's GeoTIFF: at most 1 GiB.
+_MAX_CELLS = 1 << 28
+
+
 class FileError(NamedTuple):
     """A file that could not be read: counted nowhere."""
 
@@ -85,6 +89,9 @@ class Heatmap:
         self.errors = list(errors)
         self.window = counts.window_of(*bbox) if bbox is not None else counts.extent()
         col0, row0, col1, row1 = self.window
+        if (col1 - col0) * (row1 - row0) > _MAX_CELLS:
+            raise ValueError(f"{col1 - col0}x{row1 - row0} cells is more than one heatmap holds here ({_MAX_CELLS} "
+                             "cells, 1 GiB): a larger cell, or a bbox around the tracks you want")
         if col1 > col0 and row1 > row0:
             self.counts = counts.raster(self.window)
         else:
