@@ -29,6 +29,7 @@
 // steps are kept as recorded (cleaning deals with them). Without a readable HFDTE record the
 // times are kept as time of day on 1970-01-01, with the warning "no HFDTE date record".
 
+#include <cctype>
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -115,6 +116,19 @@ using detail::IgcParser;
 
 namespace {
 
+// A site header that names no site: loggers write placeholders ("HFSITSite: None", "HOSITSite:?",
+// "NIL") where the pilot entered none. The metadata keeps it as written; the name leaves it out.
+bool placeholder_site(std::string_view site) {
+  while (!site.empty() && (site.front() == ' ' || site.front() == '\t')) site.remove_prefix(1);
+  while (!site.empty() && (site.back() == ' ' || site.back() == '\t')) site.remove_suffix(1);
+  if (site.find_first_not_of("?-_.*/ ") == std::string_view::npos) return true;  // also empty
+  std::string lower(site);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* p : {"none", "nil", "null", "n/a", "na", "unknown", "not set", "undefined"})
+    if (lower == p) return true;
+  return false;
+}
+
 // "Flight 2024-07-14 from Amisbühl": the date and take-off site, never the pilot (IGC headers
 // carry personal data), so tables and legends can tell flights apart.
 void name_flight(TrackFile& file) {
@@ -126,7 +140,7 @@ void name_flight(TrackFile& file) {
   }
   std::string name = "Flight";
   if (!date.empty()) name += " " + date;
-  if (!site.empty()) name += " from " + site;
+  if (!placeholder_site(site)) name += " from " + site;
   file.tracks.front().name = name;
 }
 

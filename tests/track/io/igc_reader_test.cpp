@@ -871,3 +871,21 @@ TEST(IgcReader, FlightIsNamedByDateAndSiteNotPilot) {
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.file.tracks.at(0).name, "Flight 2024-07-14 from Amisb\xC3\xBChl");
 }
+
+TEST(IgcReader, APlaceholderSiteIsLeftOutOfTheNameAndKeptInTheHeader) {
+  for (const char* site : {"None", "?", " NIL ", "n/a", "---", "Unknown"}) {
+    auto src = ByteSource::from_memory(std::string("AXCT123\r\nHFDTEDATE:140724,01\r\nHFSITSite:") + site +
+                                           "\r\nB1200004642850N00749446EA0159401594\r\n",
+                                       "placeholder.igc");
+    ReadResult r = read_igc(*src, {});
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.file.tracks.at(0).name, "Flight 2024-07-14") << site;
+    bool kept = false;
+    for (const auto& [key, value] : r.file.metadata.fields) kept = kept || key == "site";
+    EXPECT_TRUE(kept) << site;
+  }
+  // A site that only looks short is a site.
+  auto src = ByteSource::from_memory(
+      "AXCT123\r\nHFDTEDATE:140724,01\r\nHFSITSite:Na Kopci\r\nB1200004642850N00749446EA0159401594\r\n", "k.igc");
+  EXPECT_EQ(read_igc(*src, {}).file.tracks.at(0).name, "Flight 2024-07-14 from Na Kopci");
+}
