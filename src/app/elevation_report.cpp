@@ -63,20 +63,22 @@ nlohmann::ordered_json elevation_json(const ElevationReport& r) {
                       {"track", p.track},
                       {"segment", p.segment}});
   }
-  const ElevationSummary& s = r.summary;
   return {{"path", r.path},
           {"terrain", r.terrain},
           {"points", std::move(points)},
-          {"summary",
-           {{"points", s.points},
-            {"points_with_elevation", s.with_elevation},
-            {"points_with_terrain", s.with_terrain},
-            {"mean_offset_m", metres(s.mean_offset_m)},
-            {"median_offset_m", metres(s.median_offset_m)},
-            {"rmse_m", metres(s.rmse_m)},
-            {"min_offset_m", metres(s.min_offset_m)},
-            {"max_offset_m", metres(s.max_offset_m)},
-            {"points_below_ground", s.points_below_ground}}}};
+          {"summary", elevation_summary_json(r.summary)}};
+}
+
+nlohmann::ordered_json elevation_summary_json(const ElevationSummary& s) {
+  return {{"points", s.points},
+          {"points_with_elevation", s.with_elevation},
+          {"points_with_terrain", s.with_terrain},
+          {"mean_offset_m", metres(s.mean_offset_m)},
+          {"median_offset_m", metres(s.median_offset_m)},
+          {"rmse_m", metres(s.rmse_m)},
+          {"min_offset_m", metres(s.min_offset_m)},
+          {"max_offset_m", metres(s.max_offset_m)},
+          {"points_below_ground", s.points_below_ground}};
 }
 
 std::string elevation_csv(const ElevationReport& r) {

@@ -34,6 +34,8 @@ struct ElevationReport {
 };
 
 nlohmann::ordered_json elevation_json(const ElevationReport& report);
+// The document's "summary" alone (the Python module's trailray.elevation: without every point).
+nlohmann::ordered_json elevation_summary_json(const ElevationSummary& summary);
 std::string elevation_csv(const ElevationReport& report);
 std::string elevation_table(const ElevationReport& report);
 

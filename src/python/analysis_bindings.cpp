@@ -156,9 +156,6 @@ class Task {
   tt::TaskDistances distances_;
 };
 
-// Collects the terrain's warnings to hand to Python after the work (no GIL meanwhile).
-class QuietDiagnostics : public scene::CollectedDiagnostics {};
-
 class Airspaces {
  public:
   static Airspaces read(const py::object& path_like, bool strict) {
@@ -191,7 +188,7 @@ class Airspaces {
 
   // The track's entry of `check --json`: points, how altitudes were taken, infringements.
   py::dict check(const Track& t, const std::optional<std::string>& terrain) const {
-    QuietDiagnostics diagnostics;
+    scene::CollectedDiagnostics diagnostics;  // handed to Python after the work (no GIL meanwhile)
     app::CheckReport report{path_, &read_->file, terrain.has_value(), {}};
     {
       py::gil_scoped_release unlocked;
@@ -217,7 +214,7 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
   app::TerrainOptions options;
   options.terrain = terrain;
   if (zoom) options.terrain_zoom = *zoom;
-  QuietDiagnostics diagnostics;
+  scene::CollectedDiagnostics diagnostics;  // handed to Python after the work (no GIL meanwhile)
   app::ElevationReport report;
   {
     py::gil_scoped_release unlocked;
@@ -241,12 +238,11 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
     ground.mutable_data()[i] = report.points[i].terrain_m;
     agl.mutable_data()[i] = report.points[i].agl_m();
   }
-  const nlohmann::ordered_json j = app::elevation_json(report);
   py::dict out;
   out["terrain"] = ground;
   out["agl"] = agl;
   out["source"] = text(report.terrain);
-  out["summary"] = to_python(j["summary"]);
+  out["summary"] = to_python(app::elevation_summary_json(report.summary));
   return out;
 }
 

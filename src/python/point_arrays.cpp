@@ -65,16 +65,9 @@ py::array PointArrays::field(const char* key, T track::TrackPoint::*member) cons
   return out;
 }
 
-py::array PointArrays::double_field(const char* key, double track::TrackPoint::*member) const {
-  return field<double>(key, member);
-}
-py::array PointArrays::float_field(const char* key, float track::TrackPoint::*member) const {
-  return field<float>(key, member);
-}
-
-py::array PointArrays::lat() const { return double_field("lat", &track::TrackPoint::lat); }
-py::array PointArrays::lon() const { return double_field("lon", &track::TrackPoint::lon); }
-py::array PointArrays::ele() const { return double_field("ele", &track::TrackPoint::ele); }
+py::array PointArrays::lat() const { return field("lat", &track::TrackPoint::lat); }
+py::array PointArrays::lon() const { return field("lon", &track::TrackPoint::lon); }
+py::array PointArrays::ele() const { return field("ele", &track::TrackPoint::ele); }
 
 py::array PointArrays::time() const {
   auto found = cache_.find("time");
@@ -117,7 +110,7 @@ py::object PointArrays::channel(const std::string& name) const {
     if (name != f.name) continue;
     const std::vector<std::string> present = channels();
     if (std::find(present.begin(), present.end(), name) == present.end()) return py::none();
-    return float_field(f.name, f.member);
+    return field(f.name, f.member);
   }
   throw py::key_error("no channel '" + name + "'");
 }

@@ -46,8 +46,6 @@ class PointArrays {
   std::vector<std::string> channels() const;
 
  private:
-  py::array double_field(const char* key, double track::TrackPoint::*member) const;
-  py::array float_field(const char* key, float track::TrackPoint::*member) const;
   template <typename T>
   py::array field(const char* key, T track::TrackPoint::*member) const;
   py::object base() const;

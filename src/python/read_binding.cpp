@@ -6,12 +6,12 @@
 #include <optional>
 #include <string>
 
+#include "app/track_arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/text.hpp"
 #include "python/track_objects.hpp"
 #include "track/io/byte_source.hpp"
-#include "track/io/format_detect.hpp"
-#include "track/io/readers.hpp"
+#include "track/io/load.hpp"
 
 namespace trailray::python {
 namespace {
@@ -21,40 +21,6 @@ std::optional<track::Format> format_named(const std::string& name) {
                           track::Format::Kml, track::Format::Kmz, track::Format::GeoJson})
     if (name == track::format_name(f)) return f;
   return std::nullopt;
-}
-
-track::ReadResult read_source(track::ByteSource& source, const std::optional<track::Format>& forced,
-                              const std::string& path, const track::ReadOptions& options) {
-  track::ReadResult result;
-  const std::string name = source.display_name();
-  std::string_view head = source.peek(4096);
-  if (head.empty()) {
-    result.error = track::Diagnostic{
-        name, {}, source.error().empty() ? "file is empty" : "cannot read: " + source.error()};
-    return result;
-  }
-  std::optional<track::Format> format = forced ? forced : track::detect_format(head, path);
-  if (!format) {
-    result.error = track::Diagnostic{name, {1, 1, 0}, "not a GPX, IGC, TCX, FIT, KML, KMZ or GeoJSON file (unrecognised content)"};
-    return result;
-  }
-  switch (*format) {
-    case track::Format::Gpx:
-      return track::read_gpx(source, options);
-    case track::Format::Igc:
-      return track::read_igc(source, options);
-    case track::Format::Tcx:
-      return track::read_tcx(source, options);
-    case track::Format::Fit:
-      return track::read_fit(source, options);
-    case track::Format::Kml:
-      return track::read_kml(source, options);
-    case track::Format::Kmz:
-      return track::read_kmz(source, options);
-    case track::Format::GeoJson:
-      return track::read_geojson(source, options);
-  }
-  return result;
 }
 
 py::tuple diagnostic_tuple(const track::Diagnostic& d) {
@@ -95,7 +61,7 @@ py::tuple read_file(const py::object& source, const std::optional<std::string>& 
     if (!byte_source)
       result.error = track::Diagnostic{path, {}, "cannot open: " + open_error};
     else
-      result = read_source(*byte_source, forced, is_bytes ? std::string() : path, options);
+      result = track::read_track_source(*byte_source, is_bytes ? std::string() : path, options, forced);
   }
   py::list warnings;
   std::vector<std::string> texts;
@@ -113,6 +79,15 @@ py::tuple read_file(const py::object& source, const std::optional<std::string>& 
 void bind_reading(py::module_& m) {
   m.def("read_file", &read_file, py::arg("source"), py::arg("format"), py::arg("igc_altitude"), py::arg("strict"),
         "The reader behind trailray.read: (File or None, error or None, warnings).");
+  // The command line's TRACK arguments (folders, patterns) for the functions that take many files.
+  m.def("expand_track_arguments", &app::expand_track_arguments, py::arg("arguments"));
+  py::register_local_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const app::TrackArgumentError& e) {
+      PyErr_SetString(PyExc_FileNotFoundError, e.what());  // a pattern or a folder that names no track file
+    }
+  });
 }
 
 }  // namespace trailray::python

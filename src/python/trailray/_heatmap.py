@@ -5,7 +5,6 @@ cluster)."""
 from __future__ import annotations
 
 import concurrent.futures as _futures
-import glob as _glob
 import os as _os
 import tempfile as _tempfile
 from typing import List, NamedTuple, Optional, Sequence, Tuple
@@ -14,35 +13,13 @@ import numpy as _np
 
 from . import _core
 
-# The extensions the command line takes from a folder (each also gzip-compressed).
-_TRACK_SUFFIXES = (".gpx", ".igc", ".tcx", ".fit", ".kml", ".kmz", ".geojson", ".json")
-
-
-def _is_track_file(name: str) -> bool:
-    lower = name.lower()
-    if lower.endswith(".gz"):
-        lower = lower[:-3]
-    return lower.endswith(_TRACK_SUFFIXES)
-
 
 def expand_files(files) -> List[str]:
-    """Paths as the command line takes them: a file, a folder (its track files, sorted, not its
-    subfolders), a pattern ('flights/*.igc'), or a list of those."""
+    """Paths as the command line takes them (the same code): a file, a folder (its track files,
+    sorted, not its subfolders), a pattern ('flights/*.igc'), or a list of those. A pattern or a
+    folder that gives no track file raises FileNotFoundError naming it."""
     items = [files] if isinstance(files, (str, bytes, _os.PathLike)) else list(files)
-    out: List[str] = []
-    for item in items:
-        path = _os.fspath(item)
-        if _os.path.isdir(path):
-            out += sorted(_os.path.join(path, n) for n in _os.listdir(path)
-                          if not n.startswith(".") and _is_track_file(n) and _os.path.isfile(_os.path.join(path, n)))
-        elif not _os.path.exists(path) and any(c in path for c in "*?["):
-            matches = sorted(_glob.glob(path))
-            if not matches:
-                raise FileNotFoundError(f"{path}: matches no file")
-            out += expand_files(matches)
-        else:
-            out.append(path)
-    return out
+    return _core.expand_track_arguments([_os.fsdecode(_os.fspath(item)) for item in items])
 
 
 # The counts are made whole in memory (4 bytes a cell), as the command's GeoTIFF: at most 1 GiB.

@@ -34,10 +34,6 @@ def _client(client):
     return get_client()  # the default client of this process (raises ValueError without one)
 
 
-def _count_chunk(paths: Sequence[str], cell: float, strict: bool):
-    return count_files(paths, cell, strict)
-
-
 def _merge(a, b):
     counts_a, errors_a = a
     counts_b, errors_b = b
@@ -63,7 +59,7 @@ def heatmap(files, client=None, partitions: Optional[int] = None, cell: float = 
     partitions = max(1, min(int(partitions), len(paths)))
     size = -(-len(paths) // partitions)
     chunks = [paths[i:i + size] for i in range(0, len(paths), size)]
-    level = client.map(_count_chunk, chunks, cell=float(cell), strict=bool(strict), pure=False)
+    level = client.map(count_files, chunks, cell=float(cell), strict=bool(strict), pure=False)
     while len(level) > 1:
         pairs = [client.submit(_merge, level[i], level[i + 1], pure=False) for i in range(0, len(level) - 1, 2)]
         if len(level) % 2:

@@ -15,20 +15,26 @@ void finish_read(ReadResult& result, const WarningCollector& warnings, const Rea
 }
 
 ReadResult load_track_file(const std::string& path, const ReadOptions& options) {
-  ReadResult result;
   std::string open_error;
   auto source = ByteSource::open(path, open_error);
-  const std::string name = path == "-" ? "<stdin>" : path;
   if (!source) {
-    result.error = Diagnostic{name, {}, "cannot open: " + open_error};
+    ReadResult result;
+    result.error = Diagnostic{path == "-" ? "<stdin>" : path, {}, "cannot open: " + open_error};
     return result;
   }
-  std::string_view head = source->peek(4096);
+  return read_track_source(*source, path, options);
+}
+
+ReadResult read_track_source(ByteSource& source, const std::string& path, const ReadOptions& options,
+                             std::optional<Format> format) {
+  ReadResult result;
+  const std::string& name = source.display_name();
+  std::string_view head = source.peek(4096);
   if (head.empty()) {
-    result.error = Diagnostic{name, {}, source->error().empty() ? "file is empty" : "cannot read: " + source->error()};
+    result.error = Diagnostic{name, {}, source.error().empty() ? "file is empty" : "cannot read: " + source.error()};
     return result;
   }
-  auto format = detect_format(head, path);
+  if (!format) format = detect_format(head, path);
   if (!format) {
     result.error =
         Diagnostic{name, {1, 1, 0}, "not a GPX, IGC, TCX, FIT, KML, KMZ or GeoJSON file (unrecognised content)"};
@@ -36,19 +42,19 @@ ReadResult load_track_file(const std::string& path, const ReadOptions& options) 
   }
   switch (*format) {
     case Format::Gpx:
-      return read_gpx(*source, options);
+      return read_gpx(source, options);
     case Format::Igc:
-      return read_igc(*source, options);
+      return read_igc(source, options);
     case Format::Tcx:
-      return read_tcx(*source, options);
+      return read_tcx(source, options);
     case Format::Fit:
-      return read_fit(*source, options);
+      return read_fit(source, options);
     case Format::Kml:
-      return read_kml(*source, options);
+      return read_kml(source, options);
     case Format::Kmz:
-      return read_kmz(*source, options);
+      return read_kmz(source, options);
     case Format::GeoJson:
-      return read_geojson(*source, options);
+      return read_geojson(source, options);
   }
   return result;
 }
