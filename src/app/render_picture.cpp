@@ -39,6 +39,7 @@ scene::RgbaImage render_picture(const RenderArgs& a, scene::Diagnostics& diagnos
   if (!volumes.volumes.empty()) scene.volumes = &volumes;
   scene.style = style;
   scene.color_range = scene::color_range(tracks.tracks, style);
+  scene.overlay_legend = sources.overlay_legend;
   scene.sun_time_unix_s = sun_time(time, tracks.recorded);
   // Where no source has terrain: the tracks' lowest point (DESIGN.md), else the lowest terrain in view.
   scene.neutral_ground_m = tracks.recorded.lowest_m;

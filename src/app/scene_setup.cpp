@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include "app/overlay_source.hpp"
 #include "app/track_reading.hpp"
+#include "scene/overlaid_imagery.hpp"
 #include "scene/scored_route.hpp"
 #include "scene/thermal_markers.hpp"
 #include "scene/waypoint_building.hpp"
@@ -123,6 +125,12 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagno
   // gives the hypsometric tint, which shows the relief best. Tiles it cannot deliver (offline,
   // unreachable) are tinted too, after one warning.
   sources.imagery = terrain::open_imagery_source(config.imagery, context);
+  if (!options.overlay.empty()) {
+    OverlaySource overlay = open_overlay_source(options, context);
+    sources.overlay_legend = std::move(overlay.legend);
+    sources.imagery = std::make_unique<scene::OverlaidImagery>(std::move(sources.imagery), std::move(overlay.imagery),
+                                                               options.overlay_opacity);
+  }
   return sources;
 }
 

@@ -12,6 +12,7 @@
 #include "app/waypoint_options.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/framing.hpp"
+#include "scene/legend.hpp"
 #include "scene/scored_route.hpp"
 #include "scene/style.hpp"
 #include "scene/task_volumes.hpp"
@@ -25,7 +26,8 @@ namespace trailray::app {
 
 struct TerrainSources {
   std::unique_ptr<terrain::HeightSource> heights;   // nullptr: --terrain none
-  std::unique_ptr<terrain::ImagerySource> imagery;  // nullptr: the hypsometric tint
+  std::unique_ptr<terrain::ImagerySource> imagery;  // nullptr: the hypsometric tint (--overlay: composited in)
+  std::optional<scene::ColorLegend> overlay_legend;  // a heatmap overlay's colour bar
 };
 // The sources of --terrain/--imagery, the configuration file and the defaults; the sources'
 // warnings go to `diagnostics`. Throws terrain::ConfigError and the sources' errors.

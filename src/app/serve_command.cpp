@@ -106,7 +106,7 @@ int run_serve(const ServeArgs& a) {
                                             "/tiles/terrain/{z}/{x}/{y}.png", site.terrain_max_zoom, true),
                           serve::tile_layer(site.imagery ? &site.imagery->info() : nullptr,
                                             "/tiles/imagery/{z}/{x}/{y}", site.imagery_max_zoom, false),
-                          serve::given_options(a.page_options))
+                          serve::given_options(a.page_options), sources.overlay_legend)
           .dump(2);
   const bool loopback = serve::is_loopback_address(a.bind);
   site.loopback_hosts_only = loopback;

@@ -52,6 +52,17 @@ void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
                  "cloudless)")
       ->type_name("SRC");
   add_scheme_option(cmd, "--imagery-scheme", o.imagery_scheme, "an imagery tile folder");
+  cmd.add_option("--overlay", o.overlay,
+                 "Drawn over the imagery, with its legend: a heatmap of `trailray heatmap` (OUT.tif, OUT.mbtiles, "
+                 "OUT/), or any imagery source with transparency")
+      ->type_name("SRC");
+  cmd.add_option("--overlay-opacity", o.overlay_opacity, "The overlay's opacity, 0..1 (default 1: as its tiles say)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->type_name("F");
+  cmd.add_option("--overlay-colormap", o.overlay_colormap,
+                 "Colours of a counts GeoTIFF overlay (tiles carry their own): warm (default), magma, viridis, turbo, "
+                 "cividis")
+      ->type_name("NAME");
 }
 
 terrain::TerrainConfig resolve_terrain_config(const TerrainOptions& o) {

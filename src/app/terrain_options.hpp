@@ -20,11 +20,16 @@ struct TerrainOptions {
   bool offline = false;
   std::string imagery;  // --imagery, for commands that draw (add_imagery_option)
   std::string imagery_scheme;  // --imagery-scheme
+  // --overlay SRC over the imagery (a heatmap: counts GeoTIFF, .mbtiles or folder `trailray
+  // heatmap` wrote; or any imagery with transparency), its opacity and a count raster's colours.
+  std::string overlay;
+  float overlay_opacity = 1.0f;
+  std::string overlay_colormap = "warm";
 };
 
 void add_terrain_options(CLI::App& command, TerrainOptions& options);
-// --imagery SRC (same spellings as --terrain) and --imagery-scheme, for the commands that draw
-// terrain.
+// --imagery SRC (same spellings as --terrain), --imagery-scheme and --overlay, --overlay-opacity,
+// --overlay-colormap, for the commands that draw terrain.
 void add_imagery_option(CLI::App& command, TerrainOptions& options);
 
 // The configuration file (if any) with the flags applied. Throws terrain::ConfigError.

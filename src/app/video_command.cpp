@@ -51,8 +51,8 @@ int run_video(const VideoArgs& a) {
     return *parsed.value;
   }();
   const scene::OverlayLevel overlay = [&] {
-    auto parsed = scene::parse_overlay_level(a.overlay);
-    if (!parsed.ok()) throw CLI::ValidationError("--overlay", parsed.error);
+    auto parsed = scene::parse_overlay_level(a.gauges);
+    if (!parsed.ok()) throw CLI::ValidationError("--gauges", parsed.error);
     return *parsed.value;
   }();
   const std::optional<double> sun = parse_sun_time(a.style.time);
@@ -91,6 +91,7 @@ int run_video(const VideoArgs& a) {
                  [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }};
   setup.style = style;
   setup.color_range = scene::color_range(loaded.tracks, style);
+  setup.overlay_legend = sources.overlay_legend;
   setup.sun_time_unix_s = sun_time(sun, loaded.recorded);
   setup.neutral_ground_m = loaded.recorded.lowest_m;
   setup.marker_ground_m = neutral_ground;
@@ -142,6 +143,14 @@ void add_video_command(CLI::App& app, int& exit_code) {
   add_video_options(*cmd, *args);
   cmd->callback([args, &exit_code] {
     args->tracks = expand_track_arguments(args->tracks);
+    // --overlay none|minimal|full was the gauges' option before the map overlay took the name.
+    const std::string& o = args->terrain.overlay;
+    if (o == "none" || o == "minimal" || o == "full") {
+      fmt::print(stderr, "trailray: warning: video --overlay {} is now --gauges {} (--overlay draws a heatmap or "
+                         "other imagery over the ground)\n", o, o);
+      args->gauges = o;
+      args->terrain.overlay.clear();
+    }
     exit_code = run_video(*args);
   });
 }

@@ -41,7 +41,7 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
                  "Several tracks: clock (their real times, default) or start (each from its own start)")
       ->type_name("clock|start");
   cmd.add_option(
-         "--overlay", args.overlay,
+         "--gauges", args.gauges,
          "What is painted over the film: none, minimal (the clock) or full (the clock and gauges of "
          "the followed track: altitude, height above ground, speed, vario, glide; heart rate, cadence and power "
          "when recorded; default)")

@@ -26,7 +26,7 @@ struct VideoArgs : PictureArgs {
   double fps = 30.0;
   std::string trail = "all";
   std::string align = "clock";
-  std::string overlay = "full";
+  std::string gauges = "full";  // --gauges none|minimal|full (was --overlay: that is now the map's)
   int crf = 20;
   bool fast = false;  // --fast: no shadows, no SSAO
 };

@@ -71,17 +71,18 @@ void draw_scene_legend(RgbaImage& image, const Scene& scene) {
   const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
   const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
   const auto airspaces = airspace_key_for(scene);
-  if (!legend && key.empty() && airspaces.empty()) return;
+  if (!legend && key.empty() && airspaces.empty() && !scene.overlay_legend) return;
   TextRasterizer text;
   // Stacked bottom up: the key (several solid tracks' names, or for phase the gliding and no-value
-  // colours), the colour bar, the airspaces' classes.
+  // colours), the colour bar, the airspaces' classes, the overlay's colour bar.
   PixelRect below;
   const auto stack = [&below](const LegendLayout& drawn) {
     if (drawn.drawn) below = united(below, drawn.panel);
   };
   if (!key.empty()) stack(draw_track_key(image, text, key));
   if (legend) stack(draw_color_legend(image, text, *legend, {0, rows_taken(below, image.height)}));
-  if (!airspaces.empty()) draw_track_key(image, text, airspaces, {0, rows_taken(below, image.height)});
+  if (!airspaces.empty()) stack(draw_track_key(image, text, airspaces, {0, rows_taken(below, image.height)}));
+  if (scene.overlay_legend) draw_color_legend(image, text, *scene.overlay_legend, {0, rows_taken(below, image.height)});
 }
 
 PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Scene& scene) {
@@ -95,12 +96,16 @@ PixelRect scene_legend_panel(std::uint32_t width, std::uint32_t height, const Sc
   const auto legend = color_legend_for(scene.style.tracks, scene.color_range);
   const auto key = track_key_for(scene.style.tracks, tracks_of(scene));
   const auto airspaces = airspace_key_for(scene);
-  // As draw_scene_legend: the key, the colour bar above it, the airspaces' classes above both.
+  // As draw_scene_legend: the key, the colour bar above it, the airspaces' classes above both, the
+  // overlay's bar on top.
   PixelRect below;
   if (!key.empty()) below = track_key_panel(width, height, text, key);
   if (legend) below = united(below, color_legend_panel(width, height, text, *legend, {0, rows_taken(below, height)}));
-  if (airspaces.empty()) return below;
-  return united(below, track_key_panel(width, height, text, airspaces, {0, rows_taken(below, height)}));
+  if (!airspaces.empty())
+    below = united(below, track_key_panel(width, height, text, airspaces, {0, rows_taken(below, height)}));
+  if (scene.overlay_legend)
+    below = united(below, color_legend_panel(width, height, text, *scene.overlay_legend, {0, rows_taken(below, height)}));
+  return below;
 }
 
 KeptClearCorner legend_clearance(const PixelRect& panel, std::uint32_t height) {

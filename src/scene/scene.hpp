@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/image_paint.hpp"
+#include "scene/legend.hpp"
 #include "scene/style.hpp"
 #include "scene/track_set.hpp"
 #include "scene/volumes.hpp"
@@ -31,6 +32,8 @@ struct Scene {
   Style style;
   // The colour scale in use (color_range(*tracks, style)); nullopt: solid colours.
   std::optional<track::ValueRange> color_range;
+  // The colour bar of what --overlay draws on the terrain (a heatmap), drawn above the tracks'.
+  std::optional<ColorLegend> overlay_legend;
   double sun_time_unix_s = 0.0;  // where the sun stands (scene/sun_position.hpp)
   // A light from a fixed direction instead (unit, towards it, ECEF): a sun placed by azimuth and
   // elevation rather than by time.

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "terrain/gdal_errors.hpp"
+#include "terrain/tile_source.hpp"
 
 namespace trailray::terrain {
 namespace {
@@ -28,7 +29,8 @@ std::string unique_name() {
 }  // namespace
 
 std::vector<unsigned char> encode_count_geotiff(std::span<const std::uint32_t> counts, std::uint32_t width,
-                                                std::uint32_t height, const std::array<double, 6>& geotransform) {
+                                                std::uint32_t height, const std::array<double, 6>& geotransform,
+                                                std::string_view what) {
   if (counts.size() != std::size_t{width} * height || width == 0 || height == 0)
     throw std::runtime_error("a count raster of " + std::to_string(width) + "x" + std::to_string(height) +
                              " cells with " + std::to_string(counts.size()) + " counts");
@@ -57,7 +59,7 @@ std::vector<unsigned char> encode_count_geotiff(std::span<const std::uint32_t> c
     OSRDestroySpatialReference(srs);
     std::vector<std::uint32_t> rows(counts.begin(), counts.end());  // GDALRasterIO wants a non-const buffer
     GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
-    GDALSetDescription(band, "tracks");
+    GDALSetDescription(band, std::string(what).c_str());
     if (!placed || GDALRasterIO(band, GF_Write, 0, 0, static_cast<int>(width), static_cast<int>(height), rows.data(),
                                 static_cast<int>(width), static_cast<int>(height), GDT_UInt32, 0, 0) != CE_None) {
       dataset.reset();
@@ -70,6 +72,27 @@ std::vector<unsigned char> encode_count_geotiff(std::span<const std::uint32_t> c
   if (!buffer) throw std::runtime_error("cannot write a GeoTIFF: no in-memory file " + name);
   std::vector<unsigned char> out(buffer, buffer + length);
   CPLFree(buffer);
+  return out;
+}
+
+std::optional<CountRaster> describe_count_raster(const std::string& path) {
+  gdal_detail::ensure_gdal_registered();
+  gdal_detail::GdalErrorCapture errors;
+  std::unique_ptr<void, DatasetCloser> dataset(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr,
+                                                          nullptr, nullptr));
+  if (!dataset) throw SourceError(path + ": cannot open: " + errors.message());
+  if (GDALGetRasterCount(dataset.get()) != 1) return std::nullopt;
+  GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
+  const GDALDataType type = GDALGetRasterDataType(band);
+  if (type == GDT_Byte || GDALGetRasterColorInterpretation(band) == GCI_PaletteIndex) return std::nullopt;
+  CountRaster out;
+  double min_max[2] = {0.0, 0.0};
+  if (GDALComputeRasterMinMax(band, FALSE, min_max) != CE_None)
+    throw SourceError(path + ": cannot read its counts: " + errors.message());
+  out.maximum = min_max[1];
+  out.what = GDALGetDescription(band);
+  std::array<double, 6> transform{};
+  if (GDALGetGeoTransform(dataset.get(), transform.data()) == CE_None) out.cell_m = transform[1];
   return out;
 }
 

@@ -35,7 +35,8 @@
 
 namespace trailray::terrain {
 
-enum class GdalResampling { bilinear, cubic };
+// max: the largest source pixel under each tile pixel (counts, where an average would blur them).
+enum class GdalResampling { bilinear, cubic, max };
 
 struct GdalOptions {
   GdalResampling resampling = GdalResampling::bilinear;

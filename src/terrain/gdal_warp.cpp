@@ -105,7 +105,9 @@ WarpOutput warp_tile(GDALDataset& source, const TileId& tile, const WarpSpec& sp
   std::vector<int> destination_bands(spec.source_bands.size());
   for (int i = 0; i < band_count; ++i) destination_bands[static_cast<std::size_t>(i)] = i + 1;
   options->panDstBands = new_band_list(destination_bands);
-  options->eResampleAlg = spec.resampling == GdalResampling::cubic ? GRA_Cubic : GRA_Bilinear;
+  options->eResampleAlg = spec.resampling == GdalResampling::cubic ? GRA_Cubic
+                          : spec.resampling == GdalResampling::max ? GRA_Max
+                                                                   : GRA_Bilinear;
   options->eWorkingDataType = spec.data_type;
   // With a nodata value the warper builds a validity mask and leaves invalid pixels out of the
   // kernel (renormalising its weights): nodata is never blended into the result.

@@ -33,6 +33,19 @@ struct SourceContext {
 std::unique_ptr<HeightSource> open_height_source(const SourceSettings& settings, const SourceContext& context);
 std::unique_ptr<ImagerySource> open_imagery_source(const SourceSettings& settings, const SourceContext& context);
 
+// A raster of counts (count_geotiff.hpp's CountRaster: one band wider than a byte) opened for
+// --overlay: its values warped with the largest under each pixel (GdalResampling::max), and what
+// it holds. nullptr when `path` is a raster of another kind, or not a raster (a tile folder, an
+// .mbtiles file, a URL): imagery then. Throws SourceError for a raster GDAL cannot open (and in
+// the GPU bundle, which has no GDAL, for any raster).
+struct CountSource {
+  std::unique_ptr<HeightSource> values;
+  double maximum = 0.0;
+  std::string what;   // the band's description
+  double cell_m = 0;  // its pixel width
+};
+CountSource open_count_source(const std::string& path);
+
 // The encoding a tile source's name suggests ("terrarium", "terrain-rgb"/"mapbox", "alpinemaps"
 // in a URL or path), when it suggests one.
 std::optional<HeightEncoding> encoding_from_name(std::string_view spec);

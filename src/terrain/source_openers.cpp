@@ -12,6 +12,7 @@
 #include "terrain/image_codec.hpp"
 #include "terrain/mbtiles_source.hpp"
 #include "terrain/source_factory.hpp"
+#include "terrain/count_geotiff.hpp"
 
 namespace trailray::terrain {
 namespace {
@@ -115,6 +116,19 @@ std::unique_ptr<ImagerySource> open_imagery_source(const SourceSettings& s, cons
     };
   }
   return std::make_unique<EncodedImagerySource>(open_tiles(kind, s, c, std::move(http)));
+}
+
+}  // namespace trailray::terrain
+
+namespace trailray::terrain {
+
+CountSource open_count_source(const std::string& path) {
+  if (classify_source(path) != SourceKind::raster) return {};
+  const std::optional<CountRaster> raster = describe_count_raster(path);
+  if (!raster) return {};
+  GdalOptions options;
+  options.resampling = GdalResampling::max;
+  return {std::make_unique<GdalHeightSource>(path, options), raster->maximum, raster->what, raster->cell_m};
 }
 
 }  // namespace trailray::terrain

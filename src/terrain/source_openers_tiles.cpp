@@ -43,4 +43,10 @@ std::unique_ptr<ImagerySource> open_imagery_source(const SourceSettings& s, cons
   return std::make_unique<EncodedImagerySource>(tiles_of(s));
 }
 
+CountSource open_count_source(const std::string& path) {
+  if (classify_source(path) == SourceKind::raster)
+    throw SourceError(path + ": the GPU bundle draws overlays from tile folders and .mbtiles files, not rasters");
+  return {};
+}
+
 }  // namespace trailray::terrain

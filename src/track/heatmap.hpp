@@ -1,6 +1,7 @@
 #pragma once
 // Heatmaps of many tracks: for each cell of a Web Mercator grid, how many tracks passed through it
-// (`trailray heatmap`, trailray.heatmap in Python). A track counts once per cell whatever its
+// (`trailray heatmap`, trailray.heatmap in Python), or what else is counted there (HeatmapMeasure:
+// flights that climbed in a thermal there, seconds spent there). A track counts once per cell whatever its
 // points; the line between two consecutive points counts for every cell it crosses (a track
 // sampled every 100 m still fills the 50 m cells between its fixes). A step longer than 10 km on
 // the ground is a gap (where the track went in between is unknown): its two ends count, not the
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "track/model.hpp"
@@ -27,9 +29,25 @@ namespace trailray::track {
 
 inline constexpr int kHeatmapTileCells = 256;
 
+// What a cell counts (`--of`):
+//   tracks   - tracks that passed through it (once per track);
+//   thermals - flights that climbed in a thermal there (the thermals `trailray flight` finds, from
+//              entry to exit; once per flight);
+//   time     - seconds spent there: each step's time shared among the cells its line crosses in
+//              proportion to the length in each, rounded to whole seconds per track and cell (a gap
+//              step, over 10 km, and steps without times count nothing).
+enum class HeatmapMeasure { tracks, thermals, time };
+std::string_view heatmap_measure_name(HeatmapMeasure measure);                 // "tracks", "thermals", "time"
+std::optional<HeatmapMeasure> parse_heatmap_measure(std::string_view name);  // exact names
+
 struct HeatmapCell {
   std::int64_t col = 0, row = 0;
   bool operator==(const HeatmapCell&) const = default;
+};
+
+struct HeatmapCellCount {
+  HeatmapCell cell;
+  std::uint32_t count = 0;
 };
 
 // A rectangle of cells: columns [col0, col1), rows [row0, row1).
@@ -45,20 +63,23 @@ class HeatmapCounts {
   using Tile = std::array<std::uint32_t, kHeatmapTileCells * kHeatmapTileCells>;
 
   // Throws std::invalid_argument unless 1 <= cell_m <= 100000.
-  explicit HeatmapCounts(double cell_m = 50.0);
+  explicit HeatmapCounts(double cell_m = 50.0, HeatmapMeasure measure = HeatmapMeasure::tracks);
 
   double cell_m() const { return cell_m_; }
+  HeatmapMeasure measure() const { return measure_; }
   // The grid's cells per side (the world's square).
   std::int64_t cells_per_side() const { return cells_per_side_; }
 
-  // Adds one track: +1 in every cell it passes through.
+  // Adds one track: what track_counts gives.
   void add_track(const Track& track);
-  // The same from its cells (track_cells, worked out elsewhere: another thread); counts a track.
-  void add_cells(const std::vector<HeatmapCell>& cells);
-  // The cells a track passes through, each once, sorted (what add_track counts).
+  // The same from its counts (track_counts, worked out elsewhere: another thread); counts a track.
+  void add_counts(const std::vector<HeatmapCellCount>& counts);
+  // What one track adds to each cell by the measure, sorted by cell, no zeros.
+  std::vector<HeatmapCellCount> track_counts(const Track& track) const;
+  // The cells a track passes through, each once, sorted (what the tracks measure counts).
   std::vector<HeatmapCell> track_cells(const Track& track) const;
 
-  // Adds `other` cell for cell (the same cell size, else std::invalid_argument).
+  // Adds `other` cell for cell (the same cell size and measure, else std::invalid_argument).
   void merge(const HeatmapCounts& other);
 
   std::uint32_t at(HeatmapCell cell) const;
@@ -72,6 +93,9 @@ class HeatmapCounts {
   // The window's geotransform in EPSG:3857 (GDAL's order: x0, dx, 0, y0, 0, -dy).
   std::array<double, 6> geotransform(const HeatmapWindow& window) const;
 
+  // Only the cells inside `window` (a --bbox): the same grid, the rest dropped.
+  HeatmapCounts cropped(const HeatmapWindow& window) const;
+
   // The tiles, for handing counts between processes: (tile column, tile row) -> counts.
   const std::map<std::pair<std::int64_t, std::int64_t>, Tile>& tiles() const { return tiles_; }
   void add_tile(std::int64_t tile_col, std::int64_t tile_row, const Tile& counts);
@@ -79,6 +103,7 @@ class HeatmapCounts {
 
  private:
   double cell_m_;
+  HeatmapMeasure measure_;
   std::int64_t cells_per_side_;
   std::map<std::pair<std::int64_t, std::int64_t>, Tile> tiles_;
   std::uint64_t tracks_ = 0;

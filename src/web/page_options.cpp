@@ -2,6 +2,7 @@
 
 #include <fast_float/fast_float.h>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <string>
@@ -15,6 +16,29 @@
 
 namespace trailray::web {
 namespace {
+
+// The `overlay-legend` JSON (serve writes it from the overlay's own legend: app/serve/serve_config).
+std::optional<scene::ColorLegend> parse_overlay_legend(std::string_view text) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return std::nullopt;
+  try {
+    scene::ColorLegend legend;
+    legend.title = j.at("title").get<std::string>();
+    const auto map = scene::parse_colormap(j.at("colormap").get<std::string>());
+    if (!map) return std::nullopt;
+    legend.map = *map;
+    legend.min_label = j.at("min").get<std::string>();
+    legend.max_label = j.at("max").get<std::string>();
+    for (const auto& tick : j.value("ticks", nlohmann::json::array())) {
+      const double position = tick.at(0).get<double>();
+      if (!(position >= 0.0 && position <= 1.0)) return std::nullopt;
+      legend.ticks.push_back({position, tick.at(1).get<std::string>()});
+    }
+    return legend;
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
 
 std::optional<double> number(std::string_view text) {
   double v = 0.0;
@@ -145,6 +169,12 @@ OptionOutcome apply_page_option(PageOptions& o, std::string_view name, std::stri
     if (name == "terrain") source.encoding = terrain::encoding_from_name(text);
     return {OptionEffect::terrain, {}};
   }
+  if (name == "overlay-legend") {
+    const auto legend = parse_overlay_legend(value);
+    if (!legend) return fail(name, value, R"(JSON {"title", "colormap", "min", "max", "ticks": [[0.5, "10"]]})");
+    o.overlay_legend = *legend;
+    return {OptionEffect::style, {}};
+  }
   if (name == "terrain-encoding") {
     const auto encoding = terrain::parse_height_encoding(value);
     if (!encoding) return fail(name, value, "terrarium, mapbox or alpinemaps");
@@ -201,7 +231,7 @@ std::string address_value(std::string_view value) {
 
 std::vector<std::string_view> options_reset_by(std::string_view name) {
   if (name == "terrain") return {"terrain-encoding", "terrain-max-zoom"};
-  if (name == "imagery") return {"imagery-max-zoom"};
+  if (name == "imagery") return {"imagery-max-zoom", "overlay-legend"};
   return {};
 }
 

@@ -12,6 +12,7 @@
 
 #include "scene/camera.hpp"
 #include "scene/style.hpp"
+#include "scene/legend.hpp"
 #include "terrain/terrain_config.hpp"
 
 namespace trailray::web {
@@ -24,6 +25,9 @@ struct PageOptions {
   // `terrain`, `imagery`: URL templates ({z} {x} {y} {-y} {s}) or "none"; by default the
   // desktop's online sources (terrain/terrain_config.hpp). `terrain-encoding`, `*-max-zoom`.
   terrain::SourceSettings terrain, imagery;
+  // `overlay-legend`: the colour bar of a heatmap `trailray serve --overlay` composited into its
+  // imagery, as JSON {"title", "colormap", "min", "max", "ticks": [[position, label], ...]}.
+  std::optional<scene::ColorLegend> overlay_legend;
   PageOptions();
 };
 

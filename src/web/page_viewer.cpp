@@ -225,6 +225,7 @@ void PageViewer::place_camera() {
   legend_scene.tracks = &model_.tracks;
   legend_scene.style = options_.style;
   legend_scene.color_range = scene::color_range(model_.tracks, options_.style);
+  legend_scene.overlay_legend = options_.overlay_legend;
   const scene::KeptClearCorner legend =
       scene::legend_clearance(scene::scene_legend_panel(l.width_px, l.height_px, legend_scene), l.height_px);
   const ui::FramingRoom room = panels_ ? ui::panel_framing_room(model_.settings, l, legend, pixel_ratio_)
@@ -435,6 +436,7 @@ void PageViewer::draw_scene(std::uint32_t width_px, std::uint32_t height_px, dou
   // changes the legend), not for each camera move.
   if (legend_dirty_) color_range_ = scene::color_range(model_.tracks, options_.style);
   scene.color_range = color_range_;
+  scene.overlay_legend = options_.overlay_legend;
   scene.sun_time_unix_s = sun_time();
   scene.terrain = terrain_view_.get();
   // Where the terrain has no tiles the ground lies at the lowest terrain loaded; before any has

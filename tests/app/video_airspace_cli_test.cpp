@@ -33,7 +33,7 @@ TEST(VideoAirspaceCli, AnAirspaceInViewIsInTheFilm) {
       "XDG_CONFIG_HOME=" + shell_quote(env.file("config")) + " XDG_CACHE_HOME=" + shell_quote(env.file("cache")) +
       " TRAILRAY_CONFIG= " + shell_quote(TRAILRAY_BINARY) + " video " + shell_quote(gpx) +
       " --terrain none --imagery none --no-ssao --time 2024-06-18T10:00:00Z --camera-mode fixed --camera 46.70,7.85,1500,0,-5"
-      " --size 96x64 --overlay none --duration 1s --fps 3 --verbose ";
+      " --size 96x64 --gauges none --duration 1s --fps 3 --verbose ";
   const auto plain = run_command(command + "--frames-dir " + shell_quote(env.file("plain")) + " 2>&1");
   ASSERT_EQ(plain.status, 0) << plain.out;
   const auto drawn = run_command(command + "--airspace " + shell_quote(box) + " --frames-dir " +

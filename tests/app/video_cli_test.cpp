@@ -184,7 +184,7 @@ struct FixedFilm {
 FixedFilm fixed_film(const RenderEnv& env, const std::string& tracks, double lat, double lon, const std::string& args) {
   const std::string folder = env.file("frames");
   std::filesystem::remove_all(folder);
-  const auto r = run_command(video(env) + tracks + kFilm + " --overlay none --size 320x180 --color '#0000ff' " +
+  const auto r = run_command(video(env) + tracks + kFilm + " --gauges none --size 320x180 --color '#0000ff' " +
                              "--camera-mode fixed --look-at " + fmt::format("{:.6f},{:.6f},1000", lat, lon) +
                              " --distance 3000 --heading 0 --pitch -40 --frames-dir " + shell_quote(folder) + " " +
                              args + " 2>&1");

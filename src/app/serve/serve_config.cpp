@@ -36,7 +36,16 @@ nlohmann::json tile_layer(const terrain::SourceInfo* info, const std::string& ur
 }
 
 nlohmann::json serve_config(const std::vector<ServedTrack>& tracks, nlohmann::json terrain, nlohmann::json imagery,
-                            nlohmann::json options) {
+                            nlohmann::json options, const std::optional<scene::ColorLegend>& overlay_legend) {
+  if (overlay_legend && imagery.is_object()) {
+    nlohmann::json ticks = nlohmann::json::array();
+    for (const scene::LegendTick& t : overlay_legend->ticks) ticks.push_back({t.position, t.label});
+    imagery["legend"] = {{"title", overlay_legend->title},
+                         {"colormap", std::string(scene::colormap_name(overlay_legend->map))},
+                         {"min", overlay_legend->min_label},
+                         {"max", overlay_legend->max_label},
+                         {"ticks", std::move(ticks)}};
+  }
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t i = 0; i < tracks.size(); ++i)
     list.push_back({{"name", tracks[i].name}, {"url", track_url(i, tracks[i].name)}});

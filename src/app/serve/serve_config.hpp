@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "app/serve/serve_site.hpp"
+#include "scene/legend.hpp"
 #include "terrain/tile_source.hpp"
 
 namespace trailray::app::serve {
@@ -31,7 +32,9 @@ nlohmann::json given_options(const std::vector<const CLI::Option*>& options);
 // "terrain" or "imagery" above for a source (null without one); `max_zoom` the level served.
 nlohmann::json tile_layer(const terrain::SourceInfo* info, const std::string& url, int max_zoom, bool heights);
 
+// `overlay_legend`: --overlay's colour bar, told as the imagery's "legend" ({"title", "colormap",
+// "min", "max", "ticks": [[position, label], ...]}) for the page's `overlay-legend` option.
 nlohmann::json serve_config(const std::vector<ServedTrack>& tracks, nlohmann::json terrain, nlohmann::json imagery,
-                            nlohmann::json options);
+                            nlohmann::json options, const std::optional<scene::ColorLegend>& overlay_legend = {});
 
 }  // namespace trailray::app::serve

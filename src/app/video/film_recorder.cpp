@@ -72,6 +72,7 @@ FilmRecorder::FilmRecorder(FilmSetup setup, std::unique_ptr<FilmWriter> writer)
   if (setup_.volumes != nullptr && !setup_.volumes->volumes.empty()) scene_.volumes = setup_.volumes;
   scene_.style = setup_.style;
   scene_.color_range = setup_.color_range;
+  scene_.overlay_legend = setup_.overlay_legend;
   scene_.sun_time_unix_s = setup_.sun_time_unix_s;
   scene_.neutral_ground_m = setup_.neutral_ground_m;
   // The legend lists the tracks, not their trails and ghosted futures.

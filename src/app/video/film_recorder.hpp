@@ -33,6 +33,7 @@ struct FilmSetup {
   scene::TileLoadPolicy tiles;                    // how a frame waits for its tiles (wait = true)
   scene::Style style;
   std::optional<track::ValueRange> color_range;
+  std::optional<scene::ColorLegend> overlay_legend;  // --overlay's colour bar
   double sun_time_unix_s = 0.0;
   double neutral_ground_m = 0.0;  // the scene's (NaN: the lowest terrain loaded for the view)
   double marker_ground_m = 0.0;   // where a marker's stem ends when the ground is unknown

@@ -107,21 +107,35 @@ scene::PixelRect legend_overlay_rect(const std::optional<scene::ColorLegend>& le
           static_cast<int>(std::ceil(display_height - kMargin) - std::floor(top))};
 }
 
+namespace {
+void draw_legend_window(const char* name, bool right, const std::optional<scene::ColorLegend>& legend,
+                        const std::vector<scene::TrackKeyEntry>& key);
+}  // namespace
+
 void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
                          const std::vector<scene::TrackKeyEntry>& key) {
+  draw_legend_window("Legend", false, legend, key);
+}
+
+void draw_overlay_legend(const scene::ColorLegend& legend) { draw_legend_window("Overlay legend", true, legend, {}); }
+
+namespace {
+void draw_legend_window(const char* name, bool right, const std::optional<scene::ColorLegend>& legend,
+                        const std::vector<scene::TrackKeyEntry>& key) {
   if (!legend && key.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const OverlayLayout l = overlay_layout(legend, key, display.x, display.y, overlay_text());
-  // A window of its own (no title, sized to its content), first in the bottom-left corner: it
-  // stacks with the panels and can be moved out of their way.
-  ImGui::SetNextWindowPos(ImVec2(kMargin, display.y - kMargin), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
+  // A window of its own (no title, sized to its content), first in a bottom corner: it stacks
+  // with the panels and can be moved out of their way.
+  ImGui::SetNextWindowPos(ImVec2(right ? display.x - kMargin : kMargin, display.y - kMargin), ImGuiCond_FirstUseEver,
+                          ImVec2(right ? 1.0f : 0.0f, 1.0f));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(0, 0, 0, 0));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoSavedSettings;
-  const bool open = ImGui::Begin("Legend", nullptr, flags);
+  const bool open = ImGui::Begin(name, nullptr, flags);
   ImGui::PopStyleColor();
   ImGui::PopStyleVar(2);
   if (!open) {
@@ -175,5 +189,6 @@ void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
   ImGui::Dummy(ImVec2(l.width, l.height));  // the window's size
   ImGui::End();
 }
+}  // namespace
 
 }  // namespace trailray::app::view

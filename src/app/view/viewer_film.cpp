@@ -72,6 +72,7 @@ void ViewerApp::start_film() {
   setup.tiles.timeout = std::chrono::milliseconds(static_cast<long long>(options_.timeout_s * 1000.0));
   setup.style = model_.settings.style;
   setup.color_range = model_.color_range();
+  setup.overlay_legend = sources_.overlay_legend;
   setup.sun_time_unix_s = sun_unix_time();
   setup.neutral_ground_m = recorded_.lowest_m;
   setup.marker_ground_m = neutral_;

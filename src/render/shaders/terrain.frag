@@ -44,7 +44,13 @@ vec3 hypsometric_tint(float height_m) {
 }
 
 void main() {
-  vec3 albedo = u_has_imagery ? texture(u_imagery, v_imagery_uv).rgb : hypsometric_tint(v_height);
+  // Imagery where it is opaque; the tint by height through its transparent parts (an overlay
+  // without base imagery, a raster's edge).
+  vec3 albedo = hypsometric_tint(v_height);
+  if (u_has_imagery) {
+    vec4 image = texture(u_imagery, v_imagery_uv);
+    albedo = mix(albedo, image.rgb, image.a);
+  }
   if (u_snow) {
     // Snow thins out over the last few hundred metres below the line, and slides off slopes
     // steeper than about 45 degrees (rock faces stay dark, as seen in the Alps in spring).

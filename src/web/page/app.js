@@ -142,6 +142,8 @@ function applyServedLayers(served) {
     setOption(layer, new URL(source.url, location.href).href.replace(/%7B/g, '{').replace(/%7D/g, '}'));
     if (layer === 'terrain' && source.encoding) setOption('terrain-encoding', source.encoding);
     if (source.max_zoom !== undefined) setOption(`${layer}-max-zoom`, String(source.max_zoom));
+    // A heatmap serve drew into its imagery (--overlay): its colour bar.
+    if (layer === 'imagery' && source.legend) setOption('overlay-legend', JSON.stringify(source.legend));
   }
 }
 

@@ -1,0 +1,339 @@
+#include "app/heatmap_output.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "app/output_file.hpp"
+#include "geo/web_mercator.hpp"
+#include "terrain/image_codec.hpp"
+#include "terrain/mbtiles_writer.hpp"
+#include "terrain/tile_source.hpp"
+#include "track/heatmap_pixels.hpp"
+
+namespace trailray::app {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr const char* kMetadataKey = "trailray_heatmap";
+constexpr const char* kCountsTable = "trailray_counts";
+constexpr std::size_t kTileCells = std::size_t{track::kHeatmapTileCells} * track::kHeatmapTileCells;
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string without_trailing_slash(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  return path;
+}
+
+nlohmann::json description_json(const track::HeatmapCounts& counts, const scene::HeatmapPalette& palette) {
+  return {{"format", "trailray-heatmap"},
+          {"version", 1},
+          {"cell_m", counts.cell_m()},
+          {"of", std::string(track::heatmap_measure_name(counts.measure()))},
+          {"tracks", counts.tracks()},
+          {"max", palette.max_count},
+          {"colormap", std::string(scene::colormap_name(palette.colormap))},
+          {"scale", std::string(scene::heatmap_scale_name(palette.scale))}};
+}
+
+HeatmapDescription parse_description(const std::string& text, const std::string& where) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "trailray-heatmap")
+    throw std::runtime_error(where + ": its " + kMetadataKey + " metadata is not a trailray heatmap's");
+  HeatmapDescription d;
+  try {
+    d.cell_m = j.at("cell_m").get<double>();
+    const auto measure = track::parse_heatmap_measure(j.at("of").get<std::string>());
+    const auto map = scene::parse_colormap(j.at("colormap").get<std::string>());
+    const auto scale = scene::parse_heatmap_scale(j.at("scale").get<std::string>());
+    if (!measure || !map || !scale) throw std::runtime_error("an unknown measure, colormap or scale");
+    d.measure = *measure;
+    d.tracks = j.at("tracks").get<std::uint64_t>();
+    d.palette = {*map, *scale, j.at("max").get<std::uint32_t>()};
+  } catch (const std::exception& e) {
+    throw std::runtime_error(where + ": damaged " + kMetadataKey + " metadata: " + e.what());
+  }
+  if (!(d.cell_m >= 1.0 && d.cell_m <= 100000.0))
+    throw std::runtime_error(where + ": a heatmap cell of " + std::to_string(d.cell_m) + " m");
+  return d;
+}
+
+std::vector<unsigned char> pack_counts(const track::HeatmapCounts::Tile& tile) {
+  std::vector<unsigned char> raw(kTileCells * 4);
+  for (std::size_t i = 0; i < kTileCells; ++i)
+    for (int b = 0; b < 4; ++b) raw[i * 4 + static_cast<std::size_t>(b)] = static_cast<unsigned char>(tile[i] >> (8 * b));
+  uLongf size = compressBound(static_cast<uLong>(raw.size()));
+  std::vector<unsigned char> packed(size);
+  if (compress2(packed.data(), &size, raw.data(), static_cast<uLong>(raw.size()), 6) != Z_OK)
+    throw std::runtime_error("cannot compress a counts tile");
+  packed.resize(size);
+  return packed;
+}
+
+track::HeatmapCounts::Tile unpack_counts(const std::vector<unsigned char>& packed, const std::string& where) {
+  std::vector<unsigned char> raw(kTileCells * 4);
+  uLongf size = static_cast<uLongf>(raw.size());
+  if (uncompress(raw.data(), &size, packed.data(), static_cast<uLong>(packed.size())) != Z_OK || size != raw.size())
+    throw std::runtime_error(where + ": a damaged counts tile");
+  track::HeatmapCounts::Tile tile;
+  for (std::size_t i = 0; i < kTileCells; ++i)
+    tile[i] = static_cast<std::uint32_t>(raw[i * 4]) | static_cast<std::uint32_t>(raw[i * 4 + 1]) << 8 |
+              static_cast<std::uint32_t>(raw[i * 4 + 2]) << 16 | static_cast<std::uint32_t>(raw[i * 4 + 3]) << 24;
+  return tile;
+}
+
+// "COL/ROW" or "COL_ROW" -> the tile's column and row.
+std::pair<std::int64_t, std::int64_t> parse_counts_key(const std::string& key, const std::string& where) {
+  long long col = -1, row = -1;
+  char sep = 0;
+  int used = 0;
+  if (std::sscanf(key.c_str(), "%lld%c%lld%n", &col, &sep, &row, &used) != 3 || (sep != '/' && sep != '_') ||
+      static_cast<std::size_t>(used) != key.size() || col < 0 || row < 0)
+    throw std::runtime_error(where + ": a counts tile named '" + key + "'");
+  return {col, row};
+}
+
+void check_tile_in_grid(const track::HeatmapCounts& counts, std::int64_t col, std::int64_t row, const std::string& where) {
+  const std::int64_t tiles = (counts.cells_per_side() + track::kHeatmapTileCells - 1) / track::kHeatmapTileCells;
+  if (col >= tiles || row >= tiles)
+    throw std::runtime_error(fmt::format("{}: counts tile {}/{} lies outside the {:g} m grid", where, col, row,
+                                         counts.cell_m()));
+}
+
+std::vector<unsigned char> read_file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file.string() + ": cannot open");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_file_bytes(const fs::path& file, std::span<const unsigned char> bytes) {
+  std::ofstream out(file, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+}
+
+std::vector<unsigned char> tile_png(const track::HeatmapPixels& pixels, const scene::HeatmapPalette& palette) {
+  terrain::DecodedImage image;
+  image.width = image.height = track::kHeatmapTilePixels;
+  image.channels = 4;
+  image.samples8.resize(pixels.size() * 4);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    const glm::u8vec4 c = scene::heatmap_rgba(palette, pixels[i]);
+    std::memcpy(&image.samples8[i * 4], &c, 4);
+  }
+  return terrain::encode_png(image);
+}
+
+// The lon/lat box of the counted cells, for the MBTiles "bounds".
+std::string bounds_text(const track::HeatmapCounts& counts) {
+  const track::HeatmapWindow w = counts.extent();
+  const auto g = counts.geotransform(w);
+  const geo::LatLon nw = geo::latlon_from_mercator(g[0], g[3]);
+  const geo::LatLon se = geo::latlon_from_mercator(g[0] + g[1] * static_cast<double>(w.width()),
+                                                   g[3] + g[5] * static_cast<double>(w.height()));
+  return fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}", nw.lon, se.lat, se.lon, nw.lat);
+}
+
+}  // namespace
+
+HeatmapOutputKind heatmap_output_kind(const std::string& path) {
+  const std::string l = lower(path);
+  if (l.ends_with(".tif") || l.ends_with(".tiff")) return HeatmapOutputKind::geotiff;
+  if (l.ends_with(".mbtiles")) return HeatmapOutputKind::mbtiles;
+  std::error_code ec;
+  if (path.ends_with('/') || fs::is_directory(path, ec)) return HeatmapOutputKind::folder;
+  throw std::invalid_argument(fmt::format(
+      "'{}': a heatmap is written as a GeoTIFF (.tif), an MBTiles file (.mbtiles) or a folder of tiles (a name "
+      "ending in /)",
+      path));
+}
+
+std::string heatmap_measure_title(track::HeatmapMeasure measure) {
+  switch (measure) {
+    case track::HeatmapMeasure::thermals: return "Flights climbing";
+    case track::HeatmapMeasure::time: return "Seconds";
+    case track::HeatmapMeasure::tracks: break;
+  }
+  return "Tracks";
+}
+
+HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std::string& path_in,
+                                   HeatmapOutputKind kind, HeatmapTileOptions options, bool force,
+                                   const std::function<void(int)>& progress) {
+  const std::string path = without_trailing_slash(path_in);
+  HeatmapWritten written;
+  written.min_zoom = options.min_zoom;
+  written.max_zoom = options.max_zoom.value_or(track::heatmap_native_zoom(counts.cell_m()));
+  if (written.min_zoom < 0 || written.max_zoom > 24 || written.min_zoom > written.max_zoom)
+    throw std::invalid_argument(
+        fmt::format("zoom levels {}..{}: they must lie in 0..24, the first not above the last", written.min_zoom,
+                    written.max_zoom));
+  written.max_count = track::heatmap_max(counts);
+  options.palette.max_count = std::max<std::uint32_t>(written.max_count, 1);
+  const nlohmann::json description = description_json(counts, options.palette);
+
+  std::error_code ec;
+  if (fs::exists(path, ec) && !force)
+    throw std::runtime_error(path + ": exists (use --force to replace it)");
+
+  if (kind == HeatmapOutputKind::mbtiles) {
+    const std::string temporary = temporary_path_next_to(path);
+    try {
+      terrain::MbtilesWriter out(temporary);
+      out.put_metadata("name", fs::path(path).stem().string());
+      out.put_metadata("format", "png");
+      out.put_metadata("type", "overlay");
+      out.put_metadata("minzoom", std::to_string(written.min_zoom));
+      out.put_metadata("maxzoom", std::to_string(written.max_zoom));
+      out.put_metadata("bounds", bounds_text(counts));
+      out.put_metadata("description", fmt::format("{} per {:g} m cell of {} tracks, by trailray",
+                                                  heatmap_measure_title(counts.measure()), counts.cell_m(),
+                                                  counts.tracks()));
+      out.put_metadata(kMetadataKey, description.dump());
+      for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
+        if (progress) progress(z);
+        for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
+          out.put_tile({z, static_cast<std::uint32_t>(xy.first), static_cast<std::uint32_t>(xy.second)},
+                       tile_png(pixels, options.palette));
+          ++written.tiles;
+        }
+      }
+      for (const auto& [key, tile] : counts.tiles())
+        out.put_extra(kCountsTable, fmt::format("{}/{}", key.first, key.second), pack_counts(tile));
+      out.finish();
+      replace_with_temporary(temporary, path);
+    } catch (const terrain::SourceError& e) {
+      ::unlink(temporary.c_str());
+      throw std::runtime_error(path + ": cannot write it: " + e.what());
+    } catch (...) {
+      ::unlink(temporary.c_str());
+      throw;
+    }
+    return written;
+  }
+
+  // A folder: filled under a temporary name beside it, then renamed into place.
+  const fs::path target = fs::absolute(path);
+  std::string pattern = (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr)
+    throw std::runtime_error(path + ": cannot make a temporary folder beside it: " + std::strerror(errno));
+  const fs::path temporary = pattern;
+  try {
+    nlohmann::json metadata = {{"name", target.filename().string()},
+                               {"format", "png"},
+                               {"type", "overlay"},
+                               {"scheme", "xyz"},
+                               {"minzoom", written.min_zoom},
+                               {"maxzoom", written.max_zoom},
+                               {"bounds", bounds_text(counts)},
+                               {kMetadataKey, description.dump()}};
+    for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
+      if (progress) progress(z);
+      for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
+        const fs::path file = temporary / std::to_string(z) / std::to_string(xy.first) / (std::to_string(xy.second) + ".png");
+        fs::create_directories(file.parent_path());
+        write_file_bytes(file, tile_png(pixels, options.palette));
+        ++written.tiles;
+      }
+    }
+    fs::create_directories(temporary / "counts");
+    for (const auto& [key, tile] : counts.tiles())
+      write_file_bytes(temporary / "counts" / fmt::format("{}_{}.u32.zlib", key.first, key.second), pack_counts(tile));
+    const std::string text = metadata.dump(2) + "\n";
+    write_file_bytes(temporary / "metadata.json", std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
+    fs::permissions(temporary, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                   fs::perms::others_read | fs::perms::others_exec);
+    if (fs::exists(target, ec)) {
+      // The old one out of the way first (rename cannot replace a folder that has files).
+      const fs::path old = target.parent_path() / ("." + target.filename().string() + ".old-" + std::to_string(::getpid()));
+      fs::rename(target, old);
+      fs::rename(temporary, target);
+      fs::remove_all(old, ec);
+    } else {
+      fs::rename(temporary, target);
+    }
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(temporary, ec);
+    throw std::runtime_error(path + ": " + e.code().message());
+  } catch (...) {
+    fs::remove_all(temporary, ec);
+    throw;
+  }
+  return written;
+}
+
+bool is_heatmap_tiles(const std::string& path) {
+  std::error_code ec;
+  const std::string p = without_trailing_slash(path);
+  try {
+    if (fs::is_directory(p, ec)) {
+      if (!fs::exists(fs::path(p) / "metadata.json", ec)) return false;
+      const auto bytes = read_file_bytes(fs::path(p) / "metadata.json");
+      const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+      return j.is_object() && j.contains(kMetadataKey);
+    }
+    if (!lower(p).ends_with(".mbtiles") || !fs::is_regular_file(p, ec)) return false;
+    return terrain::read_mbtiles_metadata(p).contains(kMetadataKey);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+std::optional<HeatmapDescription> describe_heatmap_tiles(const std::string& path) {
+  if (!is_heatmap_tiles(path)) return std::nullopt;
+  const std::string p = without_trailing_slash(path);
+  std::error_code ec;
+  if (fs::is_directory(p, ec)) {
+    const auto bytes = read_file_bytes(fs::path(p) / "metadata.json");
+    const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+    const nlohmann::json& v = j.at(kMetadataKey);
+    return parse_description(v.is_string() ? v.get<std::string>() : v.dump(), p);
+  }
+  return parse_description(terrain::read_mbtiles_metadata(p).at(kMetadataKey), p);
+}
+
+track::HeatmapCounts read_heatmap_counts(const std::string& path) {
+  const std::string p = without_trailing_slash(path);
+  const std::optional<HeatmapDescription> d = describe_heatmap_tiles(p);
+  if (!d) throw std::runtime_error(p + ": not a heatmap written by trailray (no " + kMetadataKey + " metadata)");
+  track::HeatmapCounts counts(d->cell_m, d->measure);
+  std::error_code ec;
+  try {
+    if (fs::is_directory(p, ec)) {
+      for (const auto& entry : fs::directory_iterator(fs::path(p) / "counts")) {
+        std::string name = entry.path().filename().string();
+        if (!name.ends_with(".u32.zlib")) continue;
+        name.resize(name.size() - std::strlen(".u32.zlib"));
+        const auto [col, row] = parse_counts_key(name, entry.path().string());
+        check_tile_in_grid(counts, col, row, entry.path().string());
+        counts.add_tile(col, row, unpack_counts(read_file_bytes(entry.path()), entry.path().string()));
+      }
+    } else {
+      for (const auto& [key, data] : terrain::read_mbtiles_extra(p, kCountsTable)) {
+        const auto [col, row] = parse_counts_key(key, p);
+        check_tile_in_grid(counts, col, row, p);
+        counts.add_tile(col, row, unpack_counts(data, p));
+      }
+    }
+  } catch (const fs::filesystem_error& e) {
+    throw std::runtime_error(p + ": cannot read its counts: " + e.code().message());
+  } catch (const terrain::SourceError& e) {
+    throw std::runtime_error(e.what());
+  }
+  counts.set_tracks(d->tracks);
+  return counts;
+}
+
+}  // namespace trailray::app
