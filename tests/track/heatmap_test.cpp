@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <set>
 
+#include "track/flight/synthetic_flight.hpp"
 #include "geo/web_mercator.hpp"
 
 using namespace trailray;
@@ -157,4 +159,121 @@ TEST(Heatmap, TheRasterAndItsGeotransformPlaceTheCells) {
   const auto r = counts.raster(box);
   EXPECT_EQ(std::count(r.begin(), r.end(), 1u), 1);
   EXPECT_THROW(HeatmapCounts(0.5), std::invalid_argument);
+}
+
+namespace {
+
+// A point at grid coordinates (in cells from the world's north-west corner).
+track::TrackPoint at_grid(double gx, double gy, double cell, double time) {
+  const double H = geo::kMercatorHalfExtentM;
+  const geo::LatLon ll = geo::latlon_from_mercator(gx * cell - H, H - gy * cell);
+  track::TrackPoint p = at(ll.lat, ll.lon);
+  p.time = time;
+  return p;
+}
+
+}  // namespace
+
+TEST(HeatmapTime, AStepsSecondsAreSharedAmongItsCellsByLength) {
+  const double cell = 100.0;
+  HeatmapCounts counts(cell, track::HeatmapMeasure::time);
+  // 80 s along a row of cells from the middle of column 300010 to the middle of 300014:
+  // half, three whole and half a cell: 10, 20, 20, 20, 10 seconds.
+  track::Track t;
+  t.segments.push_back({{at_grid(300010.5, 230000.5, cell, 1000.0), at_grid(300014.5, 230000.5, cell, 1080.0)}});
+  const auto c = counts.track_counts(t);
+  ASSERT_EQ(c.size(), 5u);
+  const std::uint32_t expected[] = {10, 20, 20, 20, 10};
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(c[i].cell.col, 300010 + static_cast<std::int64_t>(i));
+    EXPECT_EQ(c[i].cell.row, 230000);
+    EXPECT_EQ(c[i].count, expected[i]) << i;
+  }
+  // No time, time going back, and a gap over 10 km count nothing.
+  track::Track untimed;
+  untimed.segments.push_back({{at_grid(300010.5, 230000.5, cell, std::nan("")), at_grid(300012.5, 230000.5, cell, 0)}});
+  EXPECT_TRUE(counts.track_counts(untimed).empty());
+  track::Track back;
+  back.segments.push_back({{at_grid(300010.5, 230000.5, cell, 50), at_grid(300012.5, 230000.5, cell, 40)}});
+  EXPECT_TRUE(counts.track_counts(back).empty());
+  track::Track gap;
+  gap.segments.push_back({{at_grid(300010.5, 230000.5, cell, 0), at_grid(300400.5, 230000.5, cell, 3600)}});
+  EXPECT_TRUE(counts.track_counts(gap).empty());
+}
+
+TEST(HeatmapTime, TheCellsHoldTheTracksDurationUpToRounding) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> step(-0.001, 0.001);
+  std::vector<std::pair<double, double>> points{{46.5, 8.0}};
+  for (int i = 0; i < 500; ++i) points.push_back({points.back().first + step(rng), points.back().second + step(rng)});
+  track::Track t = track_of({points});
+  for (std::size_t i = 0; i < t.segments[0].points.size(); ++i) t.segments[0].points[i].time = 1e9 + 7.0 * static_cast<double>(i);
+  HeatmapCounts counts(50.0, track::HeatmapMeasure::time);
+  const auto c = counts.track_counts(t);
+  double total = 0;
+  for (const auto& x : c) total += x.count;
+  EXPECT_NEAR(total, 7.0 * 500, 0.5 * static_cast<double>(counts.track_cells(t).size()));
+  // Every cell with time is one the track passes through.
+  const auto cells = as_set(counts.track_cells(t));
+  for (const auto& x : c) EXPECT_TRUE(cells.contains({x.cell.col, x.cell.row}));
+}
+
+TEST(HeatmapThermals, OnlyTheCellsWhereAFlightCircledInLiftCount) {
+  const double cell = 50.0;
+  track::test::SyntheticFlight f;
+  f.ground(60);
+  f.glide(200, 0.0, 10.0, 1.0);
+  const track::TrackPoint first = f.points().back();
+  f.circle(150, true, 2.0);
+  f.glide(250, 90.0);
+  const track::TrackPoint second = f.points().back();
+  f.circle(150, false, 1.5);
+  f.glide(300, 180.0, 10.0, 2.0);
+  f.ground(60);
+  const track::Track t = f.track();
+  HeatmapCounts counts(cell, track::HeatmapMeasure::thermals);
+  counts.add_track(t);
+  counts.add_track(t);  // a second flight the same way
+  const auto c = counts.track_counts(t);
+  ASSERT_FALSE(c.empty());
+  // Each counted cell lies by one of the two circles (radius 40 m: within 140 m of where the circling began).
+  const double H = geo::kMercatorHalfExtentM;
+  std::size_t near_first = 0, near_second = 0;
+  for (const auto& x : c) {
+    EXPECT_EQ(x.count, 1u);  // once per flight
+    EXPECT_EQ(counts.at(x.cell), 2u);
+    const geo::LatLon centre = geo::latlon_from_mercator((static_cast<double>(x.cell.col) + 0.5) * cell - H,
+                                                         H - (static_cast<double>(x.cell.row) + 0.5) * cell);
+    const auto ground = [&](const track::TrackPoint& p) {
+      const double dn = (centre.lat - p.lat) * 111195.0, de = (centre.lon - p.lon) * 111195.0 * std::cos(p.lat * std::numbers::pi / 180);
+      return std::hypot(dn, de);
+    };
+    const bool a = ground(first) < 140.0, b = ground(second) < 140.0;
+    EXPECT_TRUE(a || b) << "cell " << x.cell.col << "," << x.cell.row;
+    near_first += a;
+    near_second += b;
+  }
+  EXPECT_GE(near_first, 4u);  // a 40 m circle crosses at least four 34 m (ground) cells
+  EXPECT_GE(near_second, 4u);
+  // The glides between are counted as tracks, not as thermals.
+  EXPECT_GT(HeatmapCounts(cell).track_cells(t).size(), 3 * c.size());
+  // A track without times has no flights, so no thermals.
+  track::Track untimed = t;
+  for (auto& p : untimed.segments[0].points) p.time = std::nan("");
+  EXPECT_TRUE(counts.track_counts(untimed).empty());
+}
+
+TEST(Heatmap, MeasuresDoNotAddUpAndCroppingKeepsTheWindow) {
+  HeatmapCounts tracks(50.0), time(50.0, track::HeatmapMeasure::time);
+  EXPECT_THROW(tracks.merge(time), std::invalid_argument);
+  EXPECT_EQ(track::parse_heatmap_measure("thermals"), track::HeatmapMeasure::thermals);
+  EXPECT_FALSE(track::parse_heatmap_measure("Tracks"));
+  tracks.add_track(track_of({{{47.0, 11.0}, {47.0, 11.02}}}));
+  const auto all = tracks.extent();
+  const track::HeatmapWindow left{all.col0, all.row0, all.col0 + 10, all.row1};
+  const HeatmapCounts kept = tracks.cropped(left);
+  EXPECT_EQ(kept.tracks(), 1u);
+  EXPECT_EQ(kept.extent().col0, all.col0);
+  EXPECT_EQ(kept.extent().col1, all.col0 + 10);
+  EXPECT_EQ(kept.raster(left), tracks.raster(left));
 }

@@ -146,9 +146,13 @@ class Heatmap:
     geotransform: Tuple[float, float, float, float, float, float]
     window: Tuple[int, int, int, int]
     cell: float
+    of: str
     tracks: int
     errors: List[FileError]
-    def write(self, path: _Path) -> None: ...
+    @classmethod
+    def read(cls, path: _Path) -> "Heatmap": ...
+    def write(self, path: _Path, zoom: Optional[Tuple[int, int]] = None, colormap: str = "warm",
+              scale: str = "log") -> None: ...
 
 def heatmap(files: Union[_Path, Sequence[_Path]], cell: float = 50.0, of: str = "tracks",
             bbox: Optional[Tuple[float, float, float, float]] = None, strict: bool = False,

@@ -52,14 +52,14 @@ def heatmap(files, client=None, partitions: Optional[int] = None, cell: float = 
     client = _client(client)
     paths = expand_files(files)
     if not paths:
-        return Heatmap(_core.HeatmapCounts(float(cell)), bbox, [])
+        return Heatmap(_core.HeatmapCounts(float(cell), of), bbox, [])
     if partitions is None:
         threads = sum(client.nthreads().values()) or 1
         partitions = 4 * threads
     partitions = max(1, min(int(partitions), len(paths)))
     size = -(-len(paths) // partitions)
     chunks = [paths[i:i + size] for i in range(0, len(paths), size)]
-    level = client.map(count_files, chunks, cell=float(cell), strict=bool(strict), pure=False)
+    level = client.map(count_files, chunks, cell=float(cell), strict=bool(strict), of=of, pure=False)
     while len(level) > 1:
         pairs = [client.submit(_merge, level[i], level[i + 1], pure=False) for i in range(0, len(level) - 1, 2)]
         if len(level) % 2:
