@@ -53,7 +53,7 @@ def test_one_machine_counts_as_the_command_line(tmp_path):
     h.write(tmp_path / "py.tif")
     assert np.array_equal(gdal.Open(str(tmp_path / "py.tif")).GetRasterBand(1).ReadAsArray(), counts)
     with pytest.raises(ValueError, match="thermals"):
-        trailray.heatmap(files, of="thermals")
+        trailray.heatmap(files, of="speed")  # the message names what heatmaps count
 
 
 def test_the_cluster_counts_as_the_command_line(tmp_path, client):
@@ -65,6 +65,11 @@ def test_the_cluster_counts_as_the_command_line(tmp_path, client):
     assert np.array_equal(h.counts, counts) and h.geotransform == transform
     assert h.tracks == 4
     assert [e.path for e in h.errors] == [str(broken)] and "broken.gpx" in h.errors[0].error
+    # The other measures travel through the cluster too (pickled with their counts).
+    for of in ("time", "thermals"):
+        on_cluster = trailray.dask.heatmap(files, client=client, partitions=3, cell=100, of=of)
+        here = trailray.heatmap(files, cell=100, of=of)
+        assert on_cluster.of == of and np.array_equal(on_cluster.counts, here.counts) and on_cluster.counts.sum() > 0
 
 
 def test_a_worker_killed_in_the_middle_loses_nothing(tmp_path, client):
