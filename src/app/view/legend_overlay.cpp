@@ -108,27 +108,33 @@ scene::PixelRect legend_overlay_rect(const std::optional<scene::ColorLegend>& le
 }
 
 namespace {
-void draw_legend_window(const char* name, bool right, const std::optional<scene::ColorLegend>& legend,
+void draw_legend_window(const char* name, float raise, const std::optional<scene::ColorLegend>& legend,
                         const std::vector<scene::TrackKeyEntry>& key);
 }  // namespace
 
 void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
                          const std::vector<scene::TrackKeyEntry>& key) {
-  draw_legend_window("Legend", false, legend, key);
+  draw_legend_window("Legend", 0.0f, legend, key);
 }
 
-void draw_overlay_legend(const scene::ColorLegend& legend) { draw_legend_window("Overlay legend", true, legend, {}); }
+void draw_overlay_legend(const scene::ColorLegend& overlay, const std::optional<scene::ColorLegend>& legend,
+                         const std::vector<scene::TrackKeyEntry>& key) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float below = legend || !key.empty()
+                          ? overlay_layout(legend, key, display.x, display.y, overlay_text()).height + 0.5f * kMargin
+                          : 0.0f;
+  draw_legend_window("Overlay legend", below, overlay, {});
+}
 
 namespace {
-void draw_legend_window(const char* name, bool right, const std::optional<scene::ColorLegend>& legend,
+void draw_legend_window(const char* name, float raise, const std::optional<scene::ColorLegend>& legend,
                         const std::vector<scene::TrackKeyEntry>& key) {
   if (!legend && key.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const OverlayLayout l = overlay_layout(legend, key, display.x, display.y, overlay_text());
-  // A window of its own (no title, sized to its content), first in a bottom corner: it stacks
-  // with the panels and can be moved out of their way.
-  ImGui::SetNextWindowPos(ImVec2(right ? display.x - kMargin : kMargin, display.y - kMargin), ImGuiCond_FirstUseEver,
-                          ImVec2(right ? 1.0f : 0.0f, 1.0f));
+  // A window of its own (no title, sized to its content), first in the bottom-left corner (raised
+  // above another legend's window): it stacks with the panels and can be moved out of their way.
+  ImGui::SetNextWindowPos(ImVec2(kMargin, display.y - kMargin - raise), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(0, 0, 0, 0));

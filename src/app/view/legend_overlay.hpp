@@ -12,9 +12,10 @@ namespace trailray::app::view {
 
 // Call between ImGui::NewFrame and ImGui::Render.
 void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend, const std::vector<scene::TrackKeyEntry>& key);
-// The --overlay's colour bar (a heatmap's) the same way, in a window of its own first in the
-// bottom-right corner (the tracks' legend has the bottom-left).
-void draw_overlay_legend(const scene::ColorLegend& legend);
+// The --overlay's colour bar (a heatmap's) the same way, in a window of its own first just above
+// the tracks' legend (`legend` and `key`, as given to draw_legend_overlay).
+void draw_overlay_legend(const scene::ColorLegend& overlay, const std::optional<scene::ColorLegend>& legend,
+                         const std::vector<scene::TrackKeyEntry>& key);
 
 // Where draw_legend_overlay first puts its window in a display of that size (the bottom-left
 // corner), from the same layout, in whole pixels covering it; empty when it shows nothing. Needs

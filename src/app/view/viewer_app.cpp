@@ -221,8 +221,10 @@ void ViewerApp::frame(double wall_s, bool scripted) {
   if (panels_ && draw_overlays(overlay)) controller_.reset_north();
   if (panels_ && model_.settings.style.legend) {
     const scene::TrackStyle& style = model_.settings.style.tracks;
-    draw_legend_overlay(scene::color_legend_for(style, model_.color_range()), legend_key(style));
-    if (sources_.overlay_legend) draw_overlay_legend(*sources_.overlay_legend);
+    const auto legend = scene::color_legend_for(style, model_.color_range());
+    const auto key = legend_key(style);
+    draw_legend_overlay(legend, key);
+    if (sources_.overlay_legend) draw_overlay_legend(*sources_.overlay_legend, legend, key);
   }
   if (width > 0 && height > 0) draw_scene_into_window(wall_s, frame_moving_ && model_.settings.moving_frame);
   imgui_.render();
