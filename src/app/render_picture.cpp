@@ -26,7 +26,7 @@ scene::RgbaImage render_picture(const RenderArgs& a, scene::Diagnostics& diagnos
       {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
   std::vector<scene::LoadedTrackFile> files = read_track_files_parallel(a.tracks, a.read, diagnostics);
   for (scene::LoadedTrackFile& f : more) files.push_back(std::move(f));
-  const SceneTracks tracks = build_scene_tracks(files, a.tracks, a.read, style.tracks,
+  const SceneTracks tracks = build_scene_tracks(std::move(files), a.tracks, a.read, style.tracks,
                                                 {sources.heights.get(), 0.0, a.analysis}, diagnostics, a.waypoints);
   // The task's cylinders (--task) and the airspaces of --airspace, on the terrain.
   scene::VolumeSet volumes = tracks.volumes;

@@ -38,7 +38,7 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
                             diagnostics, waypoints);
 }
 
-SceneTracks build_scene_tracks(const std::vector<scene::LoadedTrackFile>& files, const std::vector<std::string>& paths,
+SceneTracks build_scene_tracks(std::vector<scene::LoadedTrackFile> files, const std::vector<std::string>& paths,
                                const track::ReadOptions& read, const scene::TrackStyle& style,
                                const scene::TrackBuildOptions& options, scene::Diagnostics& diagnostics,
                                const WaypointArgs& waypoints) {
@@ -48,7 +48,7 @@ SceneTracks build_scene_tracks(const std::vector<scene::LoadedTrackFile>& files,
   build.neutral_ground_m = out.recorded.lowest_or_sea_level();
   const bool thermals = waypoints.thermals_for(style.color_by);
   build.analyse_flights = build.analyse_flights || thermals;
-  for (scene::Track& t : build_tracks_parallel(files, style, build, diagnostics)) out.tracks.add(std::move(t));
+  for (scene::Track& t : build_tracks_releasing(files, style, build, diagnostics)) out.tracks.add(std::move(t));
   const scene::WaypointBuildOptions placing{options.heights, build.neutral_ground_m};
   out.waypoints.points = scene::file_waypoints(files, placing);
   for (scene::Waypoint& w : scene::read_place_labels(waypoints.label_files, read, placing, diagnostics))

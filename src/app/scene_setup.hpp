@@ -52,7 +52,8 @@ SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints = {});
 // The same from files already read (the Python module's): `paths` are those of them that are
 // files on disk, for --score (it reads the first IGC file of them again, as the scorer reads IGC).
-SceneTracks build_scene_tracks(const std::vector<scene::LoadedTrackFile>& files, const std::vector<std::string>& paths,
+// The files' track points are freed as their tracks are built (build_tracks_releasing).
+SceneTracks build_scene_tracks(std::vector<scene::LoadedTrackFile> files, const std::vector<std::string>& paths,
                                const track::ReadOptions& read, const scene::TrackStyle& style,
                                const scene::TrackBuildOptions& options, scene::Diagnostics& diagnostics,
                                const WaypointArgs& waypoints = {});

@@ -62,10 +62,13 @@ std::vector<scene::LoadedTrackFile> read_track_files_parallel(const std::vector<
   return files;
 }
 
-std::vector<scene::Track> build_tracks_parallel(const std::vector<scene::LoadedTrackFile>& files,
-                                                const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
-                                                scene::Diagnostics& diagnostics, std::size_t first_palette_index,
-                                                unsigned threads) {
+namespace {
+
+// `release`: the same files, whose tracks are freed once built (nullptr: kept).
+std::vector<scene::Track> build_tracks(const std::vector<scene::LoadedTrackFile>& files,
+                                       std::vector<scene::LoadedTrackFile>* release, const scene::TrackStyle& style,
+                                       const scene::TrackBuildOptions& options, scene::Diagnostics& diagnostics,
+                                       std::size_t first_palette_index, unsigned threads) {
   // Without files, the checks of the style alone (agl without terrain) and nothing else.
   if (files.empty()) return scene::build_tracks(files, style, options, diagnostics, first_palette_index);
   std::vector<std::vector<scene::Track>> built(files.size());
@@ -73,6 +76,7 @@ std::vector<scene::Track> build_tracks_parallel(const std::vector<scene::LoadedT
   const auto job = [&](std::size_t i) {
     try {
       built[i] = scene::build_file_tracks(files[i], style, options);
+      if (release != nullptr) std::vector<track::Track>().swap((*release)[i].file.tracks);
       return true;
     } catch (...) {
       errors[i] = std::current_exception();
@@ -89,6 +93,22 @@ std::vector<scene::Track> build_tracks_parallel(const std::vector<scene::LoadedT
   // Density and thermals count over every track: the targets spread over the same threads.
   scene::finish_tracks(tracks, style, diagnostics, first_palette_index, parallel_for(threads));
   return tracks;
+}
+
+}  // namespace
+
+std::vector<scene::Track> build_tracks_parallel(const std::vector<scene::LoadedTrackFile>& files,
+                                                const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
+                                                scene::Diagnostics& diagnostics, std::size_t first_palette_index,
+                                                unsigned threads) {
+  return build_tracks(files, nullptr, style, options, diagnostics, first_palette_index, threads);
+}
+
+std::vector<scene::Track> build_tracks_releasing(std::vector<scene::LoadedTrackFile>& files,
+                                                 const scene::TrackStyle& style,
+                                                 const scene::TrackBuildOptions& options,
+                                                 scene::Diagnostics& diagnostics) {
+  return build_tracks(files, &files, style, options, diagnostics, 0, 0);
 }
 
 }  // namespace trailray::app

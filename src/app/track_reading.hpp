@@ -50,5 +50,11 @@ std::vector<scene::Track> build_tracks_parallel(const std::vector<scene::LoadedT
                                                 const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                                                 scene::Diagnostics& diagnostics, std::size_t first_palette_index = 0,
                                                 unsigned threads = 0);
+// The same, freeing each file's track points as soon as its tracks are built (its waypoints and
+// name stay): memory peaks at the tracks built rather than at those and every point read.
+std::vector<scene::Track> build_tracks_releasing(std::vector<scene::LoadedTrackFile>& files,
+                                                 const scene::TrackStyle& style,
+                                                 const scene::TrackBuildOptions& options,
+                                                 scene::Diagnostics& diagnostics);
 
 }  // namespace trailray::app

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -168,6 +169,10 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
       t.power_w.push_back(as_double(p.power));
     }
   }
+  // Channels no point recorded take no memory (the accessors answer NaN): most tracks have no
+  // heart rate, cadence, power or IGC altitudes, and a season of them is millions of points.
+  for (auto* v : {&t.pressure_altitude_m, &t.gnss_altitude_m, &t.heart_rate_bpm, &t.cadence_rpm, &t.power_w})
+    if (std::none_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); })) std::vector<double>().swap(*v);
   t.timed_points.clear();
   t.times_rise = true;
   for (std::size_t i = 0; i < t.time_unix_s.size(); ++i) {

@@ -53,6 +53,8 @@ struct Track {
   std::vector<double> time_unix_s;          // timestamp
   std::vector<double> elapsed_s;            // since the track's first timestamp
   std::vector<double> altitude_m;           // recorded elevation (what the 3D track is drawn at)
+  // The recorded channels below are empty when no point has the channel: read them through the
+  // accessors (pressure_altitude(i), heart_rate(i), ...), which answer NaN then.
   std::vector<double> pressure_altitude_m;  // IGC pressure altitude (against 1013.25 hPa)
   std::vector<double> gnss_altitude_m;      // IGC GNSS altitude
   std::vector<double> ground_m;             // terrain height below (NaN: no terrain, or not sampled yet)
@@ -91,6 +93,13 @@ struct Track {
   // A point's GNSS altitude (NaN: none, or no such array).
   double gnss_altitude(std::size_t point) const {
     return point < gnss_altitude_m.size() ? gnss_altitude_m[point] : track::kMissing;
+  }
+  // A point's recorded heart rate, cadence, power (NaN: none, or no such array).
+  double heart_rate(std::size_t point) const { return value_or_nan(heart_rate_bpm, point); }
+  double cadence(std::size_t point) const { return value_or_nan(cadence_rpm, point); }
+  double power(std::size_t point) const { return value_or_nan(power_w, point); }
+  static double value_or_nan(const std::vector<double>& v, std::size_t point) {
+    return point < v.size() ? v[point] : track::kMissing;
   }
   // Some point has a pressure altitude (an IGC file with a barometer).
   bool has_pressure_altitude() const;

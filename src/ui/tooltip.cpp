@@ -39,7 +39,7 @@ std::vector<std::string> tooltip_lines(const scene::Track& t, std::size_t i) {
       line("height above ground", agl, "{:.0f} m"),
       line("speed", t.speed_kmh[i], "{:.1f} km/h"),
       line("vertical speed", t.vspeed_ms[i], "{:.1f} m/s"),
-      line("heart rate", t.heart_rate_bpm[i], "{:.0f} bpm"),
+      line("heart rate", t.heart_rate(i), "{:.0f} bpm"),
   };
   // Only IGC flights have them: other tracks' tooltips do not list them as missing.
   const double pressure = t.pressure_altitude(i), gnss = t.gnss_altitude(i);

@@ -58,7 +58,8 @@ TEST(ViewerTrack, PerPointArraysFollowTheCleanedTrackAcrossSegments) {
   EXPECT_NEAR(t.vspeed_ms[5], 0.0, 1e-9);
   // No terrain, no heart rate.
   EXPECT_TRUE(std::isnan(t.ground_m[5]));
-  EXPECT_TRUE(std::isnan(t.heart_rate_bpm[5]));
+  EXPECT_TRUE(std::isnan(t.heart_rate(5)));
+  EXPECT_TRUE(t.heart_rate_bpm.empty());  // no memory for a channel never recorded
   // Statistics as `stats` prints them.
   EXPECT_EQ(t.summary.clean.points, 22u);
   EXPECT_NEAR(t.summary.clean.distance_2d_m, 2000.0, 10.0);
