@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <cctype>
@@ -17,6 +16,7 @@
 #include "terrain/image_codec.hpp"
 #include "terrain/mbtiles_writer.hpp"
 #include "terrain/tile_source.hpp"
+#include "track/heatmap_exchange.hpp"
 #include "track/heatmap_pixels.hpp"
 
 namespace trailray::app {
@@ -25,7 +25,6 @@ namespace {
 
 constexpr const char* kMetadataKey = "trailray_heatmap";
 constexpr const char* kCountsTable = "trailray_counts";
-constexpr std::size_t kTileCells = std::size_t{track::kHeatmapTileCells} * track::kHeatmapTileCells;
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -35,81 +34,6 @@ std::string lower(std::string s) {
 std::string without_trailing_slash(std::string path) {
   while (path.size() > 1 && path.back() == '/') path.pop_back();
   return path;
-}
-
-nlohmann::json description_json(const track::HeatmapCounts& counts, const scene::HeatmapPalette& palette) {
-  return {{"format", "trailray-heatmap"},
-          {"version", 1},
-          {"cell_m", counts.cell_m()},
-          {"of", std::string(track::heatmap_measure_name(counts.measure()))},
-          {"tracks", counts.tracks()},
-          {"max", palette.max_count},
-          {"colormap", std::string(scene::colormap_name(palette.colormap))},
-          {"scale", std::string(scene::heatmap_scale_name(palette.scale))}};
-}
-
-HeatmapDescription parse_description(const std::string& text, const std::string& where) {
-  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "trailray-heatmap")
-    throw std::runtime_error(where + ": its " + kMetadataKey + " metadata is not a trailray heatmap's");
-  HeatmapDescription d;
-  try {
-    d.cell_m = j.at("cell_m").get<double>();
-    const auto measure = track::parse_heatmap_measure(j.at("of").get<std::string>());
-    const auto map = scene::parse_colormap(j.at("colormap").get<std::string>());
-    const auto scale = scene::parse_heatmap_scale(j.at("scale").get<std::string>());
-    if (!measure || !map || !scale) throw std::runtime_error("an unknown measure, colormap or scale");
-    d.measure = *measure;
-    d.tracks = j.at("tracks").get<std::uint64_t>();
-    d.palette = {*map, *scale, j.at("max").get<std::uint32_t>()};
-  } catch (const std::exception& e) {
-    throw std::runtime_error(where + ": damaged " + kMetadataKey + " metadata: " + e.what());
-  }
-  if (!(d.cell_m >= 1.0 && d.cell_m <= 100000.0))
-    throw std::runtime_error(where + ": a heatmap cell of " + std::to_string(d.cell_m) + " m");
-  return d;
-}
-
-std::vector<unsigned char> pack_counts(const track::HeatmapCounts::Tile& tile) {
-  std::vector<unsigned char> raw(kTileCells * 4);
-  for (std::size_t i = 0; i < kTileCells; ++i)
-    for (int b = 0; b < 4; ++b) raw[i * 4 + static_cast<std::size_t>(b)] = static_cast<unsigned char>(tile[i] >> (8 * b));
-  uLongf size = compressBound(static_cast<uLong>(raw.size()));
-  std::vector<unsigned char> packed(size);
-  if (compress2(packed.data(), &size, raw.data(), static_cast<uLong>(raw.size()), 6) != Z_OK)
-    throw std::runtime_error("cannot compress a counts tile");
-  packed.resize(size);
-  return packed;
-}
-
-track::HeatmapCounts::Tile unpack_counts(const std::vector<unsigned char>& packed, const std::string& where) {
-  std::vector<unsigned char> raw(kTileCells * 4);
-  uLongf size = static_cast<uLongf>(raw.size());
-  if (uncompress(raw.data(), &size, packed.data(), static_cast<uLong>(packed.size())) != Z_OK || size != raw.size())
-    throw std::runtime_error(where + ": a damaged counts tile");
-  track::HeatmapCounts::Tile tile;
-  for (std::size_t i = 0; i < kTileCells; ++i)
-    tile[i] = static_cast<std::uint32_t>(raw[i * 4]) | static_cast<std::uint32_t>(raw[i * 4 + 1]) << 8 |
-              static_cast<std::uint32_t>(raw[i * 4 + 2]) << 16 | static_cast<std::uint32_t>(raw[i * 4 + 3]) << 24;
-  return tile;
-}
-
-// "COL/ROW" or "COL_ROW" -> the tile's column and row.
-std::pair<std::int64_t, std::int64_t> parse_counts_key(const std::string& key, const std::string& where) {
-  long long col = -1, row = -1;
-  char sep = 0;
-  int used = 0;
-  if (std::sscanf(key.c_str(), "%lld%c%lld%n", &col, &sep, &row, &used) != 3 || (sep != '/' && sep != '_') ||
-      static_cast<std::size_t>(used) != key.size() || col < 0 || row < 0)
-    throw std::runtime_error(where + ": a counts tile named '" + key + "'");
-  return {col, row};
-}
-
-void check_tile_in_grid(const track::HeatmapCounts& counts, std::int64_t col, std::int64_t row, const std::string& where) {
-  const std::int64_t tiles = (counts.cells_per_side() + track::kHeatmapTileCells - 1) / track::kHeatmapTileCells;
-  if (col >= tiles || row >= tiles)
-    throw std::runtime_error(fmt::format("{}: counts tile {}/{} lies outside the {:g} m grid", where, col, row,
-                                         counts.cell_m()));
 }
 
 std::vector<unsigned char> read_file_bytes(const fs::path& file) {
@@ -182,7 +106,10 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
                     written.max_zoom));
   written.max_count = track::heatmap_max(counts);
   options.palette.max_count = std::max<std::uint32_t>(written.max_count, 1);
-  const nlohmann::json description = description_json(counts, options.palette);
+  const std::string description = track::heatmap_description_json(
+      {counts.cell_m(), counts.measure(), counts.tracks(), options.palette.max_count,
+       std::string(scene::colormap_name(options.palette.colormap)),
+       std::string(scene::heatmap_scale_name(options.palette.scale))});
 
   std::error_code ec;
   if (fs::exists(path, ec) && !force)
@@ -201,7 +128,7 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
       out.put_metadata("description", fmt::format("{} per {:g} m cell of {} tracks, by trailray",
                                                   heatmap_measure_title(counts.measure()), counts.cell_m(),
                                                   counts.tracks()));
-      out.put_metadata(kMetadataKey, description.dump());
+      out.put_metadata(kMetadataKey, description);
       for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
         if (progress) progress(z);
         for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
@@ -211,7 +138,7 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
         }
       }
       for (const auto& [key, tile] : counts.tiles())
-        out.put_extra(kCountsTable, fmt::format("{}/{}", key.first, key.second), pack_counts(tile));
+        out.put_extra(kCountsTable, fmt::format("{}/{}", key.first, key.second), track::pack_heatmap_tile(tile));
       out.finish();
       replace_with_temporary(temporary, path);
     } catch (const terrain::SourceError& e) {
@@ -238,7 +165,7 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
                                {"minzoom", written.min_zoom},
                                {"maxzoom", written.max_zoom},
                                {"bounds", bounds_text(counts)},
-                               {kMetadataKey, description.dump()}};
+                               {kMetadataKey, description}};
     for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
       if (progress) progress(z);
       for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
@@ -250,7 +177,8 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
     }
     fs::create_directories(temporary / "counts");
     for (const auto& [key, tile] : counts.tiles())
-      write_file_bytes(temporary / "counts" / fmt::format("{}_{}.u32.zlib", key.first, key.second), pack_counts(tile));
+      write_file_bytes(temporary / "counts" / fmt::format("{}_{}.u32.zlib", key.first, key.second),
+                       track::pack_heatmap_tile(tile));
     const std::string text = metadata.dump(2) + "\n";
     write_file_bytes(temporary / "metadata.json", std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
     fs::permissions(temporary, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
@@ -291,42 +219,52 @@ bool is_heatmap_tiles(const std::string& path) {
   }
 }
 
-std::optional<HeatmapDescription> describe_heatmap_tiles(const std::string& path) {
+std::optional<track::HeatmapDescription> describe_heatmap_tiles(const std::string& path) {
   if (!is_heatmap_tiles(path)) return std::nullopt;
   const std::string p = without_trailing_slash(path);
+  std::string text;
   std::error_code ec;
   if (fs::is_directory(p, ec)) {
     const auto bytes = read_file_bytes(fs::path(p) / "metadata.json");
     const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
     const nlohmann::json& v = j.at(kMetadataKey);
-    return parse_description(v.is_string() ? v.get<std::string>() : v.dump(), p);
+    text = v.is_string() ? v.get<std::string>() : v.dump();
+  } else {
+    text = terrain::read_mbtiles_metadata(p).at(kMetadataKey);
   }
-  return parse_description(terrain::read_mbtiles_metadata(p).at(kMetadataKey), p);
+  try {
+    return track::parse_heatmap_description(text);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(p + ": " + e.what());
+  }
 }
 
 track::HeatmapCounts read_heatmap_counts(const std::string& path) {
   const std::string p = without_trailing_slash(path);
-  const std::optional<HeatmapDescription> d = describe_heatmap_tiles(p);
+  const std::optional<track::HeatmapDescription> d = describe_heatmap_tiles(p);
   if (!d) throw std::runtime_error(p + ": not a heatmap written by trailray (no " + kMetadataKey + " metadata)");
   track::HeatmapCounts counts(d->cell_m, d->measure);
+  const std::int64_t tiles = track::heatmap_tiles_per_side(counts);
   std::error_code ec;
+  std::string where = p;
   try {
     if (fs::is_directory(p, ec)) {
       for (const auto& entry : fs::directory_iterator(fs::path(p) / "counts")) {
         std::string name = entry.path().filename().string();
         if (!name.ends_with(".u32.zlib")) continue;
         name.resize(name.size() - std::strlen(".u32.zlib"));
-        const auto [col, row] = parse_counts_key(name, entry.path().string());
-        check_tile_in_grid(counts, col, row, entry.path().string());
-        counts.add_tile(col, row, unpack_counts(read_file_bytes(entry.path()), entry.path().string()));
+        where = entry.path().string();
+        const auto [col, row] = track::parse_heatmap_tile_key(name, tiles);
+        counts.add_tile(col, row, track::unpack_heatmap_tile(read_file_bytes(entry.path())));
       }
     } else {
       for (const auto& [key, data] : terrain::read_mbtiles_extra(p, kCountsTable)) {
-        const auto [col, row] = parse_counts_key(key, p);
-        check_tile_in_grid(counts, col, row, p);
-        counts.add_tile(col, row, unpack_counts(data, p));
+        const auto [col, row] = track::parse_heatmap_tile_key(key, tiles);
+        counts.add_tile(col, row, track::unpack_heatmap_tile(data));
       }
     }
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(where + ": " + e.what());
   } catch (const fs::filesystem_error& e) {
     throw std::runtime_error(p + ": cannot read its counts: " + e.code().message());
   } catch (const terrain::SourceError& e) {

@@ -17,6 +17,7 @@
 
 #include "scene/heatmap_colors.hpp"
 #include "track/heatmap.hpp"
+#include "track/heatmap_exchange.hpp"
 
 namespace trailray::app {
 
@@ -53,14 +54,8 @@ bool is_heatmap_tiles(const std::string& path);
 track::HeatmapCounts read_heatmap_counts(const std::string& path);
 
 // What a heatmap's tile output says of itself (for the legend of --overlay): nullopt when `path`
-// is not one.
-struct HeatmapDescription {
-  double cell_m = 50.0;
-  track::HeatmapMeasure measure = track::HeatmapMeasure::tracks;
-  std::uint64_t tracks = 0;
-  scene::HeatmapPalette palette;
-};
-std::optional<HeatmapDescription> describe_heatmap_tiles(const std::string& path);
+// is not one; std::runtime_error naming it when its description is damaged.
+std::optional<track::HeatmapDescription> describe_heatmap_tiles(const std::string& path);
 
 // The legend's words for a measure: "Tracks", "Thermal flights", "Seconds".
 std::string heatmap_measure_title(track::HeatmapMeasure measure);

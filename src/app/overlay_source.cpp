@@ -22,8 +22,14 @@ OverlaySource open_overlay_source(const TerrainOptions& options, const terrain::
     out.imagery = std::make_unique<scene::HeatmapImagery>(std::move(counts.values), palette);
     return out;
   }
-  if (const std::optional<HeatmapDescription> heatmap = describe_heatmap_tiles(options.overlay))
-    out.legend = scene::heatmap_legend(heatmap->palette, heatmap_measure_title(heatmap->measure), heatmap->cell_m);
+  if (const std::optional<track::HeatmapDescription> heatmap = describe_heatmap_tiles(options.overlay)) {
+    // The colours its tiles were painted with (unknown names: the defaults, as the legend is all they change).
+    scene::HeatmapPalette palette;
+    palette.colormap = scene::parse_colormap(heatmap->colormap).value_or(palette.colormap);
+    palette.scale = scene::parse_heatmap_scale(heatmap->scale).value_or(palette.scale);
+    palette.max_count = std::max<std::uint32_t>(heatmap->max_count, 1);
+    out.legend = scene::heatmap_legend(palette, heatmap_measure_title(heatmap->measure), heatmap->cell_m);
+  }
   terrain::SourceSettings settings;
   settings.source = options.overlay;
   out.imagery = terrain::open_imagery_source(settings, context);

@@ -84,7 +84,7 @@ std::map<std::pair<std::int64_t, std::int64_t>, HeatmapPixels> heatmap_tile_pixe
     const auto y1 = static_cast<std::int64_t>(std::floor(static_cast<double>(key.second + 1) * counts_tile_m / tile_m));
     for (std::int64_t y = std::max<std::int64_t>(y0, 0); y <= std::min(y1, tiles_per_side - 1); ++y)
       for (std::int64_t x = std::max<std::int64_t>(x0, 0); x <= std::min(x1, tiles_per_side - 1); ++x) {
-        if (out.contains({x, y})) continue;
+        if (out.find({x, y}) != out.end()) continue;
         HeatmapPixels pixels(kPixels, 0);
         gather(counts, zoom, x, y, pixels);
         if (std::any_of(pixels.begin(), pixels.end(), [](std::uint32_t v) { return v != 0; }))
