@@ -1,8 +1,9 @@
 // `trailray serve` and the page together in headless Chromium: the served page shows the given
 // track with the given options, on the given DEM's terrain (Terrarium tiles the page fetches).
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 
@@ -90,4 +91,47 @@ test('serve --terrain DEM: the page draws the served terrain under the track', a
   assert.ok(mean > 8, `the terrain changes the picture (mean difference ${mean.toFixed(1)})`);
   if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: process.env.TRAILRAY_SCREENSHOT });
   await page.close();
+});
+
+test('serve --overlay HEATMAP: the page draws the heatmap on the terrain with its colour bar', async (t) => {
+  const dem = path.join(config.sharedData || '', 'dem', 'interlaken_dhm25_wgs84.tif');
+  const flight = path.join(config.sharedData || '', 'igc', 'goigc_0100_interlaken.igc');
+  if (!config.sharedData || !fs.existsSync(dem) || !fs.existsSync(flight)) {
+    t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`);
+    return;
+  }
+  const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'trailray-serve-overlay-'));
+  const heat = path.join(scratch, 'heat.mbtiles');
+  const made = spawnSync(config.nativeBinary, ['heatmap', flight, '-o', heat, '--cell', '100']);
+  assert.equal(made.status, 0, String(made.stderr));
+  const shown = async (args) => {
+    const url = await serve(['--terrain', dem, '--imagery', 'none', '--legend', 'on', ...args]);
+    const page = await openPage(browser, url);
+    await page.waitForFunction(() => {
+      const s = JSON.parse(window.trailray.api.status());
+      return s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
+    }, { timeout: 180000, polling: 500 });
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    const s = await status(page);
+    const pixels = await canvasPixels(page);
+    const messages = await page.evaluate(() => window.trailray.messages);
+    await page.close();
+    return { s, pixels, messages };
+  };
+  // No track: only the heatmap could make a legend or change the ground's colours.
+  const plain = await shown(['--look-at', '46.71,7.84,1200', '--distance', '7000', '--pitch', '-60']);
+  const over = await shown(['--overlay', heat, '--look-at', '46.71,7.84,1200', '--distance', '7000', '--pitch', '-60']);
+  assert.deepEqual(over.s.tile_failures, []);
+  assert.deepEqual(over.messages, []);
+  assert.ok(!(plain.s.legend && plain.s.legend.width), 'no legend without the overlay');
+  assert.ok(over.s.legend.width > 50 && over.s.legend.height > 20, `its colour bar (${JSON.stringify(over.s.legend)})`);
+  let changed = 0;
+  for (let i = 0; i < over.pixels.data.length; i += 4) {
+    let d = 0;
+    for (let c = 0; c < 3; ++c) d += Math.abs(over.pixels.data[i + c] - plain.pixels.data[i + c]);
+    if (d > 30) ++changed;
+  }
+  t.diagnostic(`pixels the heatmap changed: ${changed}`);
+  assert.ok(changed > 300, `the heatmap on the ground (${changed} pixels changed)`);
+  fs.rmSync(scratch, { recursive: true, force: true });
 });
