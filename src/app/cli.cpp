@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "app/option_suggestion.hpp"
 #include "app/terminal_diagnostics.hpp"
 
 namespace trailray::app {
@@ -15,6 +16,13 @@ int run_cli(int argc, char** argv, CommandTable commands) {
 
   int exit_code = 0;
   commands(app, exit_code);
+
+  // A mistyped option first: otherwise the parser may complain about something else.
+  if (const std::optional<std::string> unknown = unknown_option_message(app, argc, argv)) {
+    TerminalDiagnostics().error(*unknown);
+    fmt::print(stderr, "Run with --help for more information.\n");
+    return 2;  // usage error
+  }
 
   try {
     app.parse(argc, argv);

@@ -127,6 +127,15 @@ int run_convert(const ConvertArgs& a) {
     if (!std::cout) throw std::runtime_error("<stdout>: cannot write");
   } else {
     write_file_atomically(a.output, [&](std::ostream& out) { write(format, merged, out); });
+    // What was written, on standard error (standard output stays the file's when it is "-").
+    std::size_t points = 0;
+    for (const track::Track& t : merged.tracks) points += t.point_count();
+    const auto count = [](std::size_t n, const char* what) {
+      return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+    };
+    diagnostics.info(fmt::format("wrote {}: {} ({}), {}, {}", a.output, count(merged.tracks.size(), "track"),
+                                 count(points, "point"), count(merged.routes.size(), "route"),
+                                 count(merged.waypoints.size(), "waypoint")));
   }
   return 0;
 }

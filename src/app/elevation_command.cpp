@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -102,6 +104,13 @@ int run_elevation(const ElevationArgs& a) {
   const TerrainHeights sampled = terrain_heights(where, a.terrain, diagnostics, a.file);
   const std::vector<double>& heights = sampled.heights;
   const std::string& source_name = sampled.source_name;
+  // Nothing had and tiles failed: the terrain could not be reached, which is not an answer.
+  if (!heights.empty() && sampled.tiles_failed > 0 &&
+      std::none_of(heights.begin(), heights.end(), [](double h) { return !std::isnan(h); })) {
+    diagnostics.error(fmt::format("{}: no terrain height could be had for any point ({} tile{} failed): nothing written",
+                                  a.file, sampled.tiles_failed, sampled.tiles_failed == 1 ? "" : "s"));
+    return 1;
+  }
 
   if (a.replace) {
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -132,7 +141,7 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
       "was above the ground. Heights are bilinear between the source's samples: a raster file's own\n"
       "grid, or a tile source's finest level (see README, \"Terrain sources\").\n"
       "--replace -o OUT.gpx writes a copy with the terrain heights as elevations (GPX 1.1).\n"
-      "Exit status: 0 done, 1 a file or source could not be read, 2 a usage error.");
+      "Exit status: 0 done, 1 a file or source could not be read (also: every tile failed), 2 a usage error.");
   cmd->add_option("TRACK", args->file, "Track file: GPX, IGC, TCX, FIT, KML, KMZ, GeoJSON (gzip too), or - for standard input")
       ->required()
       ->type_name("FILE");

@@ -112,8 +112,14 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
        std::string(scene::heatmap_scale_name(options.palette.scale))});
 
   std::error_code ec;
-  if (fs::exists(path, ec) && !force)
-    throw std::runtime_error(path + ": exists (use --force to replace it)");
+  // An empty folder is filled; --force replaces a heatmap written before, never some other
+  // folder (a typo must not delete one).
+  const bool empty_folder = kind == HeatmapOutputKind::folder && fs::is_directory(path, ec) && fs::is_empty(path, ec);
+  if (fs::exists(path, ec) && !empty_folder) {
+    if (!force) throw std::runtime_error(path + ": exists (use --force to replace it)");
+    if (kind == HeatmapOutputKind::folder && !is_heatmap_tiles(path))
+      throw std::runtime_error(path + ": a folder that is not a heatmap's tiles: not replaced (give a new folder)");
+  }
 
   if (kind == HeatmapOutputKind::mbtiles) {
     const std::string temporary = temporary_path_next_to(path);

@@ -113,7 +113,8 @@ double sun_time(const std::optional<double>& given, const scene::RecordedPoints&
   return given ? *given : scene::default_sun_time(recorded);
 }
 
-TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagnostics& diagnostics) {
+TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagnostics& diagnostics,
+                                    bool imagery_without_terrain) {
   const terrain::TerrainConfig config = resolve_terrain_config(options);
   terrain::SourceContext context{config.network, config.cache,
                                  [&diagnostics](std::string w) { diagnostics.warning("terrain: " + w); }};
@@ -121,10 +122,22 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagno
   if (options.terrain_zoom) height_settings.max_zoom = *options.terrain_zoom;
   TerrainSources sources;
   sources.heights = terrain::open_height_source(height_settings, context);
+  // Without terrain the neutral ground is drawn plain: imagery (and an overlay) would never show,
+  // so none is opened, and no server is asked (offline that cost seconds a picture).
+  if (!sources.heights && !imagery_without_terrain) {
+    if (!options.overlay.empty() || (!options.imagery.empty() && options.imagery != "none"))
+      diagnostics.warning("--terrain none: the ground is drawn plain, without --imagery or --overlay");
+    return sources;
+  }
   // Imagery from --imagery, else the config file's, else the built-in default (README); `none`
   // gives the hypsometric tint, which shows the relief best. Tiles it cannot deliver (offline,
-  // unreachable) are tinted too, after one warning.
-  sources.imagery = terrain::open_imagery_source(config.imagery, context);
+  // unreachable) are tinted too, after one warning that says how to leave it out.
+  terrain::SourceContext imagery_context = context;
+  imagery_context.warn = [&diagnostics](std::string w) {
+    const bool unreachable = w.find("unreachable") != std::string::npos;
+    diagnostics.warning("imagery: " + w + (unreachable ? " (--imagery none: the tint by height, nothing fetched)" : ""));
+  };
+  sources.imagery = terrain::open_imagery_source(config.imagery, imagery_context);
   if (!options.overlay.empty()) {
     OverlaySource overlay = open_overlay_source(options, context);
     sources.overlay_legend = std::move(overlay.legend);

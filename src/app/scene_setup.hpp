@@ -31,7 +31,11 @@ struct TerrainSources {
 };
 // The sources of --terrain/--imagery, the configuration file and the defaults; the sources'
 // warnings go to `diagnostics`. Throws terrain::ConfigError and the sources' errors.
-TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagnostics& diagnostics);
+// Without terrain (--terrain none) no imagery is opened: it only ever colours the terrain, and
+// asking a server for it costs time (seconds offline). `imagery_without_terrain`: opened anyway
+// (serve hands its tiles to pages that may bring terrain of their own).
+TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagnostics& diagnostics,
+                                    bool imagery_without_terrain = false);
 
 // The terrain height at a place from the source (NaN where it has none, or without a source).
 double ground_height_at(terrain::HeightSource* source, double lat, double lon);

@@ -31,7 +31,7 @@ int run_score(const ScoreArgs& a) {
         fmt::format("unknown rule set '{}' (one of: {})", a.rules, fmt::join(sc::rule_set_names(), ", ")));
     return 2;
   }
-  const sc::FixList list = sc::read_scoring_fixes(a.file);
+  const sc::FixList list = sc::read_any_scoring_fixes(a.file);  // IGC, or a GPX/FIT/... flight's track
   if (list.error) {
     diagnostics.error(*list.error);
     return 1;

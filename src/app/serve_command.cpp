@@ -94,7 +94,7 @@ int run_serve(const ServeArgs& a) {
   serve::ServeSite site;
   site.tracks = read_served_tracks(a, diagnostics);
   site.web_root = serve::WebRoot(a.web_root);
-  const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
+  const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics, /*imagery_without_terrain=*/true);
   site.heights = sources.heights.get();
   site.imagery = sources.imagery.get();
   if (site.heights != nullptr)

@@ -128,6 +128,14 @@ std::string file_stats_table(const FileStats& f) {
                        num(s.elevation_gain_m, 0, "+"), num(s.elevation_loss_m, 0, "-"), num(s.min_elevation_m, 0),
                        num(s.max_elevation_m, 0), num(s.avg_speed_kmh, 1), num(s.max_speed_kmh, 1));
   }
+  // The figures are the cleaned tracks': say so, and how many points the files recorded.
+  std::size_t recorded = 0, kept = 0;
+  for (const auto& t : f.tracks) {
+    recorded += t.raw.points;
+    kept += t.clean.points;
+  }
+  out += fmt::format("  (of the cleaned tracks: {} of {} recorded points kept; --json has the figures as recorded too)\n",
+                     kept, recorded);
   return out;
 }
 

@@ -32,6 +32,7 @@ TerrainHeights terrain_heights(const std::vector<geo::LatLon>& where, const Terr
   });
   diagnostics.progress_done();
   const terrain::SamplingReport& r = sampler.report();
+  out.tiles_failed = r.tiles_failed;
   if (r.tiles_failed > 0)
     diagnostics.warning(fmt::format("terrain: {} tile{} failed; first: {}", r.tiles_failed,
                                     r.tiles_failed == 1 ? "" : "s", r.errors.empty() ? "?" : r.errors.front()));

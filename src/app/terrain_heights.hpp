@@ -15,6 +15,7 @@ namespace trailray::app {
 struct TerrainHeights {
   std::vector<double> heights;  // one per place; NaN where the source has no data (all NaN without a source)
   std::string source_name;      // the source's display name, "none" without one
+  std::size_t tiles_failed = 0;  // tiles that could not be had (a server down, offline, a broken file)
 };
 
 // `file` names what the places belong to in the warnings. Throws terrain::ConfigError and the

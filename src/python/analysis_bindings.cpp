@@ -61,22 +61,10 @@ void warn_all(const std::vector<std::string>& lines) {
 // track's timed points (an IGC track's GNSS and pressure altitudes; one fix per second, as the
 // scorer keeps them).
 sc::FixList fixes_of(const py::object& flight) {
-  if (py::isinstance<Track>(flight)) {
-    const Track& t = flight.cast<const Track&>();
-    sc::FixList list;
-    for (const track::Segment& s : t.model().segments)
-      for (const track::TrackPoint& p : s.points) {
-        if (!p.has_time()) continue;
-        ++list.b_records;
-        if (!list.fixes.empty() && list.fixes.back().time >= p.time) continue;
-        auto metres = [](float v) { return std::isnan(v) ? 0 : static_cast<int>(std::lround(v)); };
-        list.fixes.push_back(sc::Fix{p.lat, p.lon, p.time, metres(p.gnss_altitude), metres(p.pressure_altitude)});
-      }
-    return list;
-  }
+  if (py::isinstance<Track>(flight)) return sc::fixes_of_track(flight.cast<const Track&>().model());
   const std::string path = py::str(py::module_::import("os").attr("fspath")(flight));
   py::gil_scoped_release unlocked;
-  return sc::read_scoring_fixes(path);
+  return sc::read_any_scoring_fixes(path);
 }
 
 py::dict score(const py::object& flight, const std::string& rules, const std::string& distance, bool trim,

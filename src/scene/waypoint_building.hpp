@@ -43,7 +43,9 @@ std::vector<Waypoint> file_waypoints(const std::vector<LoadedTrackFile>& files, 
 std::vector<Waypoint> read_place_labels(const std::vector<std::string>& paths, const track::ReadOptions& read,
                                         const WaypointBuildOptions& options, Diagnostics& diagnostics);
 
-// Shows or hides every point (their pins and labels) and bumps the set's revision.
+// Shows or hides the files' waypoints and the place labels (their pins and labels: `--no-waypoints`
+// and the viewer's checkbox) and bumps the set's revision. Thermal markers have an option of their
+// own (`--thermals`) and stay as they are.
 void set_waypoints_visible(WaypointSet& set, bool visible);
 
 }  // namespace trailray::scene

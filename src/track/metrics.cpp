@@ -158,7 +158,7 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
 
   // Cumulative distances (3D steps with the elevation difference where both points have one),
   // elapsed time, and the runs used below when every point has a time and an elevation: time
-  // runs (a new one after a pause or where the time goes back) and pieces (after a pause).
+  // runs (a new one after a pause or where the time goes back).
   double origin = time_origin_s;
   if (!std::isfinite(origin)) {
     origin = kMissing;
@@ -166,8 +166,25 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
       if (std::isfinite(pts[i].time)) origin = pts[i].time;
   }
   const bool pauses = std::isfinite(options.max_gap_s) && options.max_gap_s > 0.0;
+  // A pause is a step longer than max_gap_s and than four of the segment's usual steps: a logger
+  // that records every two minutes (or a planned route with times) has no pauses between its fixes.
+  double max_gap_s = options.max_gap_s;
+  if (pauses) {
+    std::vector<double> steps;
+    double last = kMissing;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(pts[i].time)) continue;
+      if (std::isfinite(last) && pts[i].time > last) steps.push_back(pts[i].time - last);
+      last = pts[i].time;
+    }
+    if (!steps.empty()) {
+      const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+      std::nth_element(steps.begin(), middle, steps.end());
+      max_gap_s = std::max(max_gap_s, 4.0 * *middle);
+    }
+  }
   std::size_t timed = 0, with_ele = 0, timed_with_ele = 0;
-  std::vector<std::size_t> time_runs{0}, pieces{0};
+  std::vector<std::size_t> time_runs{0};
   for (std::size_t i = 0; i < n; ++i) {
     const TrackPoint& p = pts[i];
     const bool t_ok = std::isfinite(p.time), e_ok = std::isfinite(p.ele);
@@ -186,12 +203,10 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
     }
     m.distance_m[i] = m.distance_m[i - 1] + d2;
     m.distance_3d_m[i] = m.distance_3d_m[i - 1] + (std::isfinite(d3) ? d3 : d2);
-    const bool pause = pauses && p.time - q.time > options.max_gap_s;
-    if (pause) pieces.push_back(i);
+    const bool pause = pauses && p.time - q.time > max_gap_s;
     if (pause || p.time < q.time) time_runs.push_back(i);
   }
   time_runs.push_back(n);
-  pieces.push_back(n);
 
   // Windowed rates.
   auto time_of = [&](std::size_t i) { return pts[i].time; };
@@ -201,7 +216,8 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
   const double half_slope = half_window(options.slope_window_m);
   if (timed == n && with_ele == n) {
     // The usual case: every point takes part in every rate. Speed and vertical speed share
-    // their windows; steepness runs over the pieces (the cumulative distance never goes back).
+    // their windows; steepness runs over the whole segment (the cumulative distance never goes
+    // back, and a slope is one over distance whatever the time between the fixes).
     for (std::size_t r = 0; r + 1 < time_runs.size(); ++r) {
       windows_over_run(time_runs[r], time_runs[r + 1], time_of, half_time,
                        [&](std::size_t k, std::size_t first, std::size_t last) {
@@ -210,13 +226,10 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
                          put_rate(pts[last].ele - pts[first].ele, span, kMinTimeSpan_s, 1.0, m.vspeed_ms[k]);
                        });
     }
-    for (std::size_t r = 0; r + 1 < pieces.size(); ++r) {
-      windows_over_run(pieces[r], pieces[r + 1], distance_of, half_slope,
-                       [&](std::size_t k, std::size_t first, std::size_t last) {
-                         put_rate(pts[last].ele - pts[first].ele, m.distance_m[last] - m.distance_m[first],
-                                  kMinDistanceSpan_m, 100.0, m.slope_pct[k]);
-                       });
-    }
+    windows_over_run(0, n, distance_of, half_slope, [&](std::size_t k, std::size_t first, std::size_t last) {
+      put_rate(pts[last].ele - pts[first].ele, m.distance_m[last] - m.distance_m[first], kMinDistanceSpan_m, 100.0,
+               m.slope_pct[k]);
+    });
   } else {
     // Each rate over the points that take part in it. Pieces and runs: see collect_samples.
     auto has_time = [&](std::size_t i) { return std::isfinite(pts[i].time); };
@@ -224,17 +237,18 @@ SegmentMetrics compute_segment_metrics(const Segment& segment, const MetricsOpti
     Samples samples;
 
     // Horizontal speed: points with a time; distance over time.
-    collect_samples(pts, timed == n, has_time, time_of, distance_of, true, pauses, options.max_gap_s, samples);
+    collect_samples(pts, timed == n, has_time, time_of, distance_of, true, pauses, max_gap_s, samples);
     windowed_rate(samples, time_of, distance_of, half_time, kMinTimeSpan_s, 1.0, m.speed_ms);
 
     // Vertical speed: points with a time and an elevation.
     collect_samples(
         pts, timed_with_ele == n, [&](std::size_t i) { return has_time(i) && has_ele(i); }, time_of, ele_of, true,
-        pauses, options.max_gap_s, samples);
+        pauses, max_gap_s, samples);
     windowed_rate(samples, time_of, ele_of, half_time, kMinTimeSpan_s, 1.0, m.vspeed_ms);
 
     // Steepness: points with an elevation; elevation over horizontal distance, in percent.
-    collect_samples(pts, with_ele == n, has_ele, distance_of, ele_of, false, pauses, options.max_gap_s, samples);
+    // Steepness never stops at a pause: see above.
+    collect_samples(pts, with_ele == n, has_ele, distance_of, ele_of, false, false, max_gap_s, samples);
     windowed_rate(samples, distance_of, ele_of, half_slope, kMinDistanceSpan_m, 100.0, m.slope_pct);
   }
 

@@ -32,8 +32,10 @@ namespace trailray::track {
 struct MetricsOptions {
   double speed_window_s = 10.0;        // centred window for speed and vertical speed (full width)
   double slope_window_m = 50.0;        // centred horizontal window for steepness (full width)
-  double max_gap_s = 60.0;             // a longer interval is a pause: windows do not cross it;
-                                       // <= 0 or not finite: no pause detection
+  double max_gap_s = 60.0;             // a longer interval than this and than four of the segment's
+                                       // usual (median) intervals is a pause: speed windows do not
+                                       // cross it (steepness, over distance, does); <= 0 or not
+                                       // finite: no pause detection
   double min_sink_for_glide_ms = 0.1;  // glide ratio only while sinking faster than this
 };
 

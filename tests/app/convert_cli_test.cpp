@@ -170,6 +170,8 @@ TEST(ConvertCli, ExistingOutputNeedsForceAndIsReplacedAtomically) {
   r = run_command(convert(shell_quote(in.str()) + " -o " + shell_quote(out.string()) + " --force 2>&1"));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_EQ(slurp(out).rfind("{\"type\":\"FeatureCollection\"", 0), 0u);
+  // A word on success: what was written.
+  EXPECT_NE(r.out.find("wrote " + out.string() + ": 1 track ("), std::string::npos) << r.out;
   EXPECT_EQ(others_in(dir, {"in.gpx", "out.geojson"}), std::vector<std::string>{});  // no temporary left
 }
 

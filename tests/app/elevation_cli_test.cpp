@@ -183,3 +183,14 @@ TEST(ElevationCli, BadSourcesAndConfigGiveClearErrors) {
   EXPECT_EQ(offline.status, 0) << offline.out;
   EXPECT_NE(offline.out.find("has no data at any point"), std::string::npos) << offline.out;
 }
+
+TEST(ElevationCli, EveryTileFailingIsAnErrorNotAnAnswer) {
+  // A tile server that refuses every connection (nothing listens on port 1): no height at all.
+  Env env;
+  TempFile walk("walk.gpx", kWalk);
+  const auto r = run_command(env.prefix() + "elevation " + shell_quote(walk.path().string()) +
+                             " --terrain 'http://127.0.0.1:1/{z}/{x}/{y}.png' 2>&1");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("no terrain height could be had"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("failed"), std::string::npos) << r.out;
+}

@@ -304,3 +304,18 @@ TEST(RenderCli, TracksFarApartFrameTheLargestGroupWithAWarning) {
   EXPECT_NEAR(std::stod(m[2]), 9.0, 2.0);
   EXPECT_LT(std::stod(m[3]), 400000.0);
 }
+
+TEST(RenderCli, WithoutTerrainNoImageryIsAskedFor) {
+  // Imagery only colours the terrain: with --terrain none none is opened, so no server is asked
+  // (nothing listens on port 1: asking would warn that it is unreachable), and the user is told.
+  Env env;
+  const std::string binary = "XDG_CONFIG_HOME=" + shell_quote((env.home.path() / "config").string()) +
+                             " XDG_CACHE_HOME=" + shell_quote((env.home.path() / "cache").string()) +
+                             " TRAILRAY_CONFIG= " + shell_quote(TRAILRAY_BINARY);
+  const auto r = run_command(binary + " render --terrain none --imagery 'http://127.0.0.1:1/{z}/{x}/{y}.png'" +
+                             " --camera 46.7,7.85,1500,0,-5 --size 160x90 -o " + shell_quote(env.out()) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("--terrain none: the ground is drawn plain"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("unreachable"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("imagery:"), std::string::npos) << r.out;
+}

@@ -134,3 +134,18 @@ TEST(ScoreCli, HelpNamesRuleSetsAndDistances) {
                         "geodesic", "--json", "--no-trim", "--all-types"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }
+
+TEST(ScoreCli, AFlightInAnotherFormatScoresAsItsIgc) {
+  // The same triangle as GPX (written by convert): the track's timed points are its fixes.
+  TempFile igc("tri.igc", triangle_igc());
+  const std::string gpx = (igc.path().parent_path() / "tri.gpx").string();
+  ASSERT_EQ(run_command(binary() + " convert " + shell_quote(igc.str()) + " -o " + shell_quote(gpx) + " 2>&1").status, 0);
+  const auto a = run_command(binary() + " score --no-trim --json " + shell_quote(igc.str()));
+  const auto b = run_command(binary() + " score --no-trim --json " + shell_quote(gpx) + " 2>&1");
+  ASSERT_EQ(a.status, 0) << a.out;
+  ASSERT_EQ(b.status, 0) << b.out;
+  const json ja = json::parse(a.out), jb = json::parse(b.out);
+  EXPECT_EQ(jb["type"], ja["type"]);
+  EXPECT_NEAR(jb["distance_km"].get<double>(), ja["distance_km"].get<double>(), 1e-3);
+  EXPECT_NEAR(jb["score"].get<double>(), ja["score"].get<double>(), 1e-3);
+}

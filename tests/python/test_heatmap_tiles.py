@@ -107,6 +107,18 @@ def test_partial_heatmaps_add_up_exactly_and_disagreeing_ones_are_refused(tmp_pa
     assert code == 1 and "part.mbtiles" in err and "damaged" in err
     code, _, err = run_cli("heatmap", files[0], "-o", tmp_path / "w.mbtiles", "--zoom", "9-3", check=False)
     assert code == 2 and "--zoom" in err
+    # --force replaces a heatmap's folder, never another folder; an empty folder is filled.
+    documents = tmp_path / "documents"
+    documents.mkdir()
+    (documents / "letter.txt").write_text("keep me")
+    code, _, err = run_cli("heatmap", files[0], "-o", str(documents) + "/", "--force", check=False)
+    assert code == 1 and "not a heatmap" in err and (documents / "letter.txt").read_text() == "keep me"
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    run_cli("heatmap", files[0], "-o", str(empty) + "/", "--zoom", "10")
+    assert (empty / "metadata.json").exists()
+    run_cli("heatmap", files[1], "-o", str(empty) + "/", "--zoom", "10", "--force")
+    assert trailray.Heatmap.read(str(empty) + "/").tracks == 1
 
 
 def test_time_spent_adds_up_to_the_tracks_duration(tmp_path):

@@ -136,6 +136,17 @@ TEST(WaypointBuilding, HidingBumpsTheRevision) {
   EXPECT_NE(set.revision, before);
 }
 
+TEST(WaypointBuilding, HidingWaypointsLeavesTheThermalMarkers) {
+  // --no-waypoints hides the files' waypoints and places; thermals have --thermals of their own.
+  WaypointSet set;
+  set.points = build_waypoints({point(kLat, kLon, 1.0, "hut")}, "w", WaypointKind::Waypoint, {});
+  for (Waypoint& w : build_waypoints({point(kLat, kLon, 9.0, "+2.1 m/s")}, "w", WaypointKind::Thermal, {}))
+    set.points.push_back(w);
+  set_waypoints_visible(set, false);
+  EXPECT_FALSE(set.points[0].visible);
+  EXPECT_TRUE(set.points[1].visible);
+}
+
 TEST(RouteBuilding, RoutesAreMarkedSolidInTheRouteColourWithDistancesAlong) {
   LoadedTrackFile loaded;
   loaded.path = "plan.gpx";

@@ -168,6 +168,31 @@ TEST(Metrics, WindowsDoNotCrossAPause) {
   EXPECT_LT(m2.segments[0].speed_ms[5], 1.0);
 }
 
+TEST(Metrics, ASparseLoggerHasNoPausesBetweenItsFixes) {
+  // A fix every 120 s (a planned route with times, a logger saving power), 10 m/s north, climbing
+  // 1 m every 100 m: every gap is over 60 s, but none is longer than the track's usual step.
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i <= 20; ++i) pts.push_back(north(1200.0 * i, 500.0 + 12.0 * i, 120.0 * i));
+  const SegmentMetrics m = compute_metrics(one_segment(pts)).segments[0];
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    EXPECT_NEAR(m.speed_ms[i], 10.0, 1e-6) << i;
+    EXPECT_NEAR(m.vspeed_ms[i], 0.1, 1e-6) << i;
+    EXPECT_NEAR(m.slope_pct[i], 1.0, 1e-6) << i;
+  }
+}
+
+TEST(Metrics, SteepnessDoesNotStopAtAPause) {
+  // Walking up 10 % at 1 m/s, a fix a second, then 200 s without a fix (a tunnel, a pause)
+  // while 20 m further on: speed windows stop at the pause, the slope is measured over distance.
+  std::vector<TrackPoint> pts;
+  for (int i = 0; i <= 60; ++i) pts.push_back(north(1.0 * i, 500.0 + 0.1 * i, 1.0 * i));
+  for (int i = 0; i <= 60; ++i) pts.push_back(north(80.0 + i, 508.0 + 0.1 * i, 260.0 + i));
+  const SegmentMetrics m = compute_metrics(one_segment(pts)).segments[0];
+  for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_NEAR(m.slope_pct[i], 10.0, 1e-6) << i;
+  EXPECT_NEAR(m.speed_ms[60], 1.0, 1e-6);  // from its own side of the pause only
+  EXPECT_NEAR(m.speed_ms[61], 1.0, 1e-6);
+}
+
 TEST(Metrics, GapBetweenSegmentsAddsNoDistanceAndWindowsStayInside) {
   Track t;
   Segment a, b;

@@ -138,7 +138,7 @@ void ViewerApp::adopt(LoadedViewerTracks loaded) {
   }
   if (!loaded.waypoints.empty()) {
     for (scene::Waypoint& w : loaded.waypoints) {
-      w.visible = model_.settings.show_waypoints;
+      if (w.kind != scene::WaypointKind::Thermal) w.visible = model_.settings.show_waypoints;  // --thermals' own
       model_.waypoints.points.push_back(std::move(w));
     }
     ++model_.waypoints.revision;

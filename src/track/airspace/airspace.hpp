@@ -44,6 +44,7 @@ struct AirspaceFile {
 
 struct AirspaceReadResult {
   AirspaceFile file;
+  std::size_t skipped = 0;  // airspaces the file declares (AC records) that could not be used: warned
   std::vector<Diagnostic> warnings;
   std::optional<Diagnostic> error;
 

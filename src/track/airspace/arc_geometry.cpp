@@ -50,4 +50,36 @@ std::vector<geo::LatLon> circle_points(geo::LatLon centre, double radius_m) {
   return out;
 }
 
+std::vector<geo::LatLon> airway_outline(const std::vector<geo::LatLon>& centreline, double half_width_m) {
+  std::vector<geo::LatLon> line;
+  for (const geo::LatLon& p : centreline)
+    if (line.empty() || p.lat != line.back().lat || p.lon != line.back().lon) line.push_back(p);
+  std::vector<geo::LatLon> out;
+  if (line.size() < 2 || !(half_width_m > 0.0)) return out;
+  // The azimuth of each leg where it leaves its first point, and where it arrives at its last.
+  std::vector<double> leave(line.size() - 1), arrive(line.size() - 1);
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    double d = 0.0;
+    geodesic_inverse(line[i], line[i + 1], d, leave[i]);
+    double back = 0.0;
+    geodesic_inverse(line[i + 1], line[i], d, back);
+    arrive[i] = back + 180.0;
+  }
+  // Left side forward, the round end, right side back, the round start: clockwise.
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    out.push_back(geodesic_destination(line[i], leave[i] - 90.0, half_width_m));
+    out.push_back(geodesic_destination(line[i + 1], arrive[i] - 90.0, half_width_m));
+  }
+  const double end = arrive.back();
+  append_arc(out, line.back(), half_width_m, half_width_m, end - 90.0, end + 90.0, true);
+  for (std::size_t i = line.size() - 1; i-- > 0;) {
+    out.push_back(geodesic_destination(line[i + 1], arrive[i] + 90.0, half_width_m));
+    out.push_back(geodesic_destination(line[i], leave[i] + 90.0, half_width_m));
+  }
+  const double start = leave.front();
+  append_arc(out, line.front(), half_width_m, half_width_m, start + 90.0, start + 270.0, true);
+  out.pop_back();  // the first point again
+  return out;
+}
+
 }  // namespace trailray::track::airspace

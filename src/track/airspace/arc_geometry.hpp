@@ -33,4 +33,10 @@ void append_arc(std::vector<geo::LatLon>& out, geo::LatLon centre, double start_
 // A full circle, clockwise from north, first point not repeated.
 std::vector<geo::LatLon> circle_points(geo::LatLon centre, double radius_m);
 
+// An airway (OpenAir DY points and V W= width): the ring `half_width_m` either side of the
+// centreline, round at both ends, clockwise. Consecutive duplicate points are ignored; empty for
+// fewer than two distinct points. Sharp bends fold the inner side over itself (as a buffer would
+// not): airways bend gently.
+std::vector<geo::LatLon> airway_outline(const std::vector<geo::LatLon>& centreline, double half_width_m);
+
 }  // namespace trailray::track::airspace

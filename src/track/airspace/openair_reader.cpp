@@ -39,7 +39,7 @@ class Parser {
   void line(std::string_view text, std::int64_t number) {
     line_ = number;
     if (points_ + (current_ ? current_->boundary.size() : 0) > kMaxPointsPerFile)
-      return fail("more than 5 million boundary points: not an airspace file");
+      return fail_file("more than 5 million boundary points: not an airspace file");
     text = trim(text);
     if (text.empty() || text.front() == '*' || text.front() == '#') return;
     std::size_t split = 0;
@@ -54,8 +54,12 @@ class Parser {
       current_->line = number;
       centre_.reset();
       clockwise_ = true;
+      airway_.clear();
+      airway_width_nm_ = 0.0;
       return;
     }
+    // The rest of an airspace that cannot be used is passed over up to the next AC.
+    if (current_ && broken_) return;
     if (keyword == "AR" || keyword == "AF" || keyword == "AY" || keyword == "AG" || keyword == "AT" ||
         keyword == "AI" || keyword == "SP" || keyword == "SB" || keyword == "AX" || keyword == "AA")
       return;  // radio, type, ground station, label positions, pens: nothing a check or a drawing uses
@@ -73,11 +77,21 @@ class Parser {
     } else if (keyword == "AL" || keyword == "AH") {
       auto limit = parse_openair_altitude(value);
       if (!limit) return fail(keyword + ": cannot read the height '" + std::string(value) + "'");
-      (keyword == "AL" ? floor_ : ceiling_) = *limit;
+      std::optional<AltitudeLimit>& slot = keyword == "AL" ? floor_ : ceiling_;
+      // Given twice (files merged by hand, or feet then metres): the later wins, as XCSoar reads it.
+      if (slot)
+        warnings_.add("twice:" + keyword, here(),
+                      keyword + " given twice in airspace " + (current_->name.empty() ? "(no name)" : current_->name) +
+                          ": the later ('" + std::string(value) + "') is used");
+      slot = *limit;
     } else if (keyword == "DP") {
       auto p = parse_openair_coordinate(value);
       if (!p) return fail("DP: cannot read the coordinate '" + std::string(value) + "'");
       current_->boundary.push_back(*p);
+    } else if (keyword == "DY") {
+      auto p = parse_openair_coordinate(value);
+      if (!p) return fail("DY: cannot read the coordinate '" + std::string(value) + "'");
+      airway_.push_back(*p);
     } else if (keyword == "DC") {
       const auto r = parse_double(value);
       if (!r || !(*r > 0.0) || *r * kMetresPerNauticalMile > kMaxRadiusM)
@@ -96,6 +110,13 @@ class Parser {
 
   AirspaceReadResult finish() {
     if (!result_.error) finish_airspace();
+    // Only a file with no usable airspace at all is an error: the first reason one was skipped,
+    // else that there was none.
+    if (!result_.error && result_.file.airspaces.empty())
+      result_.error = first_skipped_ ? *first_skipped_
+                      : tnp_lines_ > 0
+                          ? Diagnostic{name_, {}, "a TNP (Tim Newport-Peace, .sua) airspace file: trailray reads OpenAir"}
+                          : Diagnostic{name_, {}, "no airspace in it (no AC record with a boundary)"};
     result_.warnings = warnings_.diagnostics();
     if (options_.strict && !result_.error && !result_.warnings.empty()) {
       result_.error = result_.warnings.front();
@@ -109,8 +130,20 @@ class Parser {
 
  private:
   SourcePosition here() const { return {line_, 1, -1}; }
-  void fail(const std::string& message) { result_.error = Diagnostic{name_, here(), message}; }
+  // What makes the airspace being read unusable: it is skipped with a warning naming its line,
+  // the others go on. Outside any airspace (a V record before the first AC), a warning.
+  void fail(const std::string& message) {
+    if (!current_) {
+      warnings_.add("outside", here(), message + ": ignored (before any AC record)");
+      return;
+    }
+    if (!broken_) broken_ = Diagnostic{name_, here(), message};
+  }
+  // What makes the whole file unreadable.
+  void fail_file(const std::string& message) { result_.error = Diagnostic{name_, here(), message}; }
   void unknown(const std::string& keyword) {
+    // TNP's records (TITLE=, TYPE=, POINT=, INCLUDE=...): named when the file turns out to have no OpenAir.
+    if (keyword.find('=') != std::string::npos) ++tnp_lines_;
     warnings_.add("unknown:" + keyword, here(), "unknown OpenAir record '" + keyword + "': ignored");
   }
 
@@ -138,7 +171,12 @@ class Parser {
         clockwise_ = false;
       else
         fail("V D=: the direction must be + or -, not '" + std::string(v) + "'");
-    } else if (var != 'W' && var != 'Z' && var != 'T') {  // airway width, zoom, thickness: unused
+    } else if (var == 'W') {  // the width of an airway (DY records), nautical miles
+      const auto w = parse_double(v);
+      if (!w || !(*w > 0.0) || *w * kMetresPerNauticalMile > kMaxRadiusM)
+        return fail("V W=: an airway's width must be a positive number of nautical miles, not '" + std::string(v) + "'");
+      airway_width_nm_ = *w;
+    } else if (var != 'Z' && var != 'T') {  // zoom, thickness: unused
       warnings_.add("variable", here(), std::string("unknown variable V ") + var + "=: ignored");
     }
   }
@@ -187,6 +225,29 @@ class Parser {
   void finish_airspace() {
     if (!current_) return;
     Airspace& a = *current_;
+    if (!airway_.empty() && !broken_) {
+      // An airway: its centreline and width become the boundary.
+      if (!(airway_width_nm_ > 0.0)) {
+        line_ = a.line;
+        fail("DY: an airway without a width (V W=)");
+      } else {
+        const auto ring = airway_outline(airway_, airway_width_nm_ * kMetresPerNauticalMile / 2.0);
+        a.boundary.insert(a.boundary.end(), ring.begin(), ring.end());
+      }
+      airway_.clear();
+    }
+    if (broken_) {
+      const std::string label = a.name.empty() ? "(no name)" : a.name;
+      warnings_.add("skipped:" + std::to_string(a.line), broken_->position,
+                    broken_->message + ": airspace " + label + " (from line " + std::to_string(a.line) + ") skipped");
+      if (!first_skipped_) first_skipped_ = broken_;
+      ++result_.skipped;
+      broken_.reset();
+      current_.reset();
+      floor_.reset();
+      ceiling_.reset();
+      return;
+    }
     auto& ring = a.boundary;
     if (ring.size() > 1 && ring.front().lat == ring.back().lat && ring.front().lon == ring.back().lon) ring.pop_back();
     const SourcePosition at{a.line, 1, -1};
@@ -199,9 +260,10 @@ class Parser {
     a.ceiling = ceiling_.value_or(AltitudeLimit{AltitudeReference::Unlimited, 0.0, "UNL"});
     // Two points are a line: Skytraxx files mark cables that way (floor = ceiling). Kept for
     // drawing; a line has no inside, so no check ever finds a track in it.
-    if (ring.size() < 2)
+    if (ring.size() < 2) {
       warnings_.add("shape", at, "airspace " + label + " has fewer than 2 boundary points: skipped");
-    else {
+      ++result_.skipped;
+    } else {
       points_ += ring.size();
       result_.file.airspaces.push_back(std::move(a));
     }
@@ -217,9 +279,14 @@ class Parser {
   std::unique_ptr<Airspace> current_;
   std::optional<AltitudeLimit> floor_, ceiling_;
   std::optional<geo::LatLon> centre_;
+  std::vector<geo::LatLon> airway_;  // DY points
+  double airway_width_nm_ = 0.0;     // V W=
+  std::optional<Diagnostic> broken_;         // why the airspace being read cannot be used
+  std::optional<Diagnostic> first_skipped_;  // the first such reason in the file
   bool clockwise_ = true;
   std::int64_t line_ = 0;
   std::size_t points_ = 0;  // in the airspaces kept so far
+  std::size_t tnp_lines_ = 0;  // unknown records of TNP's KEY=VALUE form
 };
 
 }  // namespace

@@ -51,7 +51,9 @@ std::optional<double> take_angle(std::string_view& s, const char* hemispheres, d
   const char h = static_cast<char>(std::toupper(static_cast<unsigned char>(s.front())));
   if (h != hemispheres[0] && h != hemispheres[1]) return std::nullopt;
   s.remove_prefix(1);
-  if (parts[1] >= 60.0 || parts[2] >= 60.0) return std::nullopt;
+  // 60 minutes or seconds is the next degree or minute: real exports write them (French files by
+  // the thousand), and XCSoar reads them so.
+  if (parts[1] > 60.0 || parts[2] > 60.0) return std::nullopt;
   const double deg = parts[0] + parts[1] / 60.0 + parts[2] / 3600.0;
   if (!(deg <= max_deg)) return std::nullopt;
   return h == hemispheres[0] ? deg : -deg;

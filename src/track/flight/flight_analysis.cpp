@@ -74,6 +74,8 @@ Flight analyse_one(const std::vector<Sample>& s, const detail::FlightRange& rang
         (r.phase == Phase::CirclingLeft ? f.circling_left_s : f.circling_right_s) += d;
         Thermal t = detail::thermal_figures(s, r, tp.heading_sum, range.takeoff, o);
         t.phase = index;
+        // Circling down is not a thermal: it would be pinned on the map and drag the mean climb.
+        if (!(t.gain_m >= o.min_thermal_gain_m)) break;
         if (std::isfinite(t.gain_m)) {
           gain += t.gain_m;
           climb_time += t.duration_s;

@@ -42,6 +42,8 @@ struct FlightOptions {
   double circling_enter_deg_s = 7.0;     // |turn rate| that starts circling (a 51 s circle)
   double circling_exit_deg_s = 4.0;      // |turn rate| below which circling ends
   double min_thermal_s = 40.0;           // shorter circling is gliding
+  double min_thermal_gain_m = 20.0;      // circling that gains less (a spiral down, turns in sink) is
+                                         // circling time, not a thermal
   double min_glide_s = 20.0;             // shorter gliding between two circlings is thermalling
   double max_gap_s = 15.0;               // a longer step (and over 3 median steps) is a gap: Unknown
   double best_climb_window_s = 20.0;     // Thermal::best_climb_ms is the best climb over this long

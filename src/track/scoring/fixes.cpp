@@ -1,5 +1,10 @@
 #include "track/scoring/fixes.hpp"
 
+#include "track/io/load.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -105,6 +110,37 @@ FixList read_scoring_fixes(const std::string& path) {
   std::ostringstream ss;
   ss << f.rdbuf();
   return parse_scoring_fixes(ss.str(), path);
+}
+
+FixList fixes_of_track(const Track& track) {
+  FixList list;
+  const auto metres = [](double v) { return std::isfinite(v) ? static_cast<int>(std::lround(v)) : 0; };
+  for (const Segment& s : track.segments)
+    for (const TrackPoint& p : s.points) {
+      if (!p.has_time() || !std::isfinite(p.lat) || !std::isfinite(p.lon)) continue;
+      ++list.b_records;
+      if (!list.fixes.empty() && list.fixes.back().time >= p.time) continue;
+      const double gnss = p.has_gnss_altitude() ? static_cast<double>(p.gnss_altitude) : p.ele;
+      list.fixes.push_back(Fix{p.lat, p.lon, p.time, metres(gnss), metres(static_cast<double>(p.pressure_altitude))});
+    }
+  return list;
+}
+
+FixList read_any_scoring_fixes(const std::string& path) {
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower.ends_with(".igc")) return read_scoring_fixes(path);
+  const ReadResult r = load_track_file(path);
+  FixList best;
+  if (r.error) {
+    best.error = r.error->to_string();
+    return best;
+  }
+  for (const Track& t : r.file.tracks) {
+    FixList list = fixes_of_track(t);
+    if (list.fixes.size() > best.fixes.size()) best = std::move(list);
+  }
+  return best;
 }
 
 }  // namespace trailray::track::scoring

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "track/model.hpp"
+
 namespace trailray::track::scoring {
 
 struct Fix {
@@ -29,5 +31,14 @@ FixList parse_scoring_fixes(const std::string& text, const std::string& name);
 
 // Reads a file (plain or gzip is not supported: IGC logs are plain text). Never throws.
 FixList read_scoring_fixes(const std::string& path);
+
+// A track's timed points as fixes, one per second at most, as the scorer keeps them: its GNSS and
+// pressure altitudes where it has them (an IGC track), else its elevation as the GNSS altitude.
+// b_records counts the timed points.
+FixList fixes_of_track(const Track& track);
+
+// Any track file: an IGC log's B records as read_scoring_fixes reads them (by its name, *.igc),
+// another format's (GPX, FIT, TCX, KML, GeoJSON) track with the most timed points. Never throws.
+FixList read_any_scoring_fixes(const std::string& path);
 
 }  // namespace trailray::track::scoring

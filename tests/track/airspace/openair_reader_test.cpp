@@ -228,3 +228,38 @@ TEST(OpenAirReader, TwoPointLinesAreKeptOneIsSkipped) {
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(r.warnings[0].position.line, 7);
 }
+
+TEST(OpenAirReader, ReadAsLenientlyAsXCSoar) {
+  // Seconds and minutes of 60 carry over; lower-case keywords and tabs; limits given twice (the
+  // later wins, warned); an airspace that cannot be used is skipped naming its line, the others kept.
+  const auto r = read(
+      "AC R\nAN Sixty\nAL GND\nAH FL100\nDP 42:00:60 N 001:00:60 W\nDP 42:59:60 N 001:01:00 W\nDP 42:10:00 N 001:10:00 W\n"
+      "ac q\n an\tLower\nal\t1000 ft\nah 2000 ft\nAH 3000 ft\ndp 45:00:00 N 006:00:00 E\ndp 45:01:00 N 006:00:00 E\n"
+      "dp 45:01:00 N 006:01:00 E\n"
+      "AC R\nAN Broken\nAL GND\nAH FL100\nDP 46:00:00 N 007:00:00 E\nDP 96:00:00 N 007:00:00 E\nDP 46:01:00 N 007:01:00 E\n"
+      "AC D\nAN After\nAL GND\nAH FL50\nV X=47:00:00 N 008:00:00 E\nDC 2\n");
+  ASSERT_TRUE(r.ok()) << r.error->to_string();
+  ASSERT_EQ(r.file.airspaces.size(), 3u);
+  EXPECT_EQ(r.file.airspaces[0].name, "Sixty");
+  EXPECT_NEAR(r.file.airspaces[0].boundary[0].lat, 42 + 1 / 60.0, 1e-12);  // 42:00:60 is 42:01:00
+  EXPECT_NEAR(r.file.airspaces[0].boundary[0].lon, -(1 + 1 / 60.0), 1e-12);
+  EXPECT_NEAR(r.file.airspaces[0].boundary[1].lat, 43.0, 1e-12);  // 42:59:60 is 43:00:00
+  EXPECT_EQ(r.file.airspaces[1].name, "Lower");
+  EXPECT_EQ(r.file.airspaces[1].airspace_class, "q");
+  EXPECT_NEAR(r.file.airspaces[1].ceiling.metres, 3000 * 0.3048, 1e-9);
+  EXPECT_EQ(r.file.airspaces[2].name, "After");
+  bool twice = false, skipped = false;
+  for (const auto& w : r.warnings) {
+    if (w.message.find("AH given twice") != std::string::npos) twice = w.position.line == 12;
+    if (w.message.find("Broken (from line 16) skipped") != std::string::npos)
+      skipped = w.position.line == 21 && w.message.find("DP") != std::string::npos;
+  }
+  EXPECT_TRUE(twice);
+  EXPECT_TRUE(skipped);
+  // Beyond 60 is still no coordinate; a file with nothing usable is an error, and so is one with
+  // no airspace at all.
+  EXPECT_FALSE(read("AC R\nAL GND\nAH FL1\nDP 42:00:61 N 001:00:00 W\nDP 42:00:00 N 001:00:00 W\n").ok());
+  const auto none = read("* only a comment\n");
+  ASSERT_FALSE(none.ok());
+  EXPECT_NE(none.error->message.find("no airspace"), std::string::npos);
+}

@@ -290,3 +290,23 @@ TEST(FlightSynthetic, SparseFixesAreNotGaps) {
   EXPECT_LE(a.flights[0].unknown_s, 80.0 + 2 * 20.0);
   EXPECT_GT(a.flights[0].gliding_s, 900.0);
 }
+
+TEST(FlightSynthetic, CirclingDownIsCirclingNotAThermal) {
+  // A thermal climbing 2 m/s, a glide, then two minutes of circles sinking 1.8 m/s (a spiral down
+  // to land): one thermal, but all of the circling time.
+  SyntheticFlight f;
+  f.ground(60);
+  f.glide(120, 0.0);
+  f.circle(120, true, 2.0);
+  f.glide(200, 90.0);
+  f.circle(120, false, -1.8);
+  f.glide(100, 180.0, 10.0, 2.0);
+  f.ground(60);
+  const fl::FlightAnalysis a = fl::analyse_flights(f.track());
+  ASSERT_EQ(a.flights.size(), 1u);
+  const fl::Flight& flight = a.flights[0];
+  ASSERT_EQ(flight.thermals.size(), 1u);
+  EXPECT_NEAR(flight.thermals[0].mean_climb_ms, 2.0, 0.3);
+  EXPECT_NEAR(flight.mean_thermal_climb_ms, 2.0, 0.3);  // not dragged down by the descent
+  EXPECT_GT(flight.circling_s, 200.0);                  // both circlings are circling time
+}
