@@ -32,6 +32,25 @@ std::string as_utf8(std::string_view bytes, bool& converted) {
   return out;
 }
 
+// A TNP file: TITLE=/POINT=/CIRCLE/INCLUDE= records and no OpenAir AC record.
+bool is_tnp(std::string_view text) {
+  bool tnp = false;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = trim(text.substr(begin, end - begin));
+    std::string head(line.substr(0, 8));
+    for (char& c : head) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (head.rfind("AC ", 0) == 0 || head.rfind("AC\t", 0) == 0) return false;
+    if (head.rfind("TITLE=", 0) == 0 || head.rfind("POINT=", 0) == 0 || head.rfind("CIRCLE ", 0) == 0 ||
+        head.rfind("INCLUDE=", 0) == 0)
+      tnp = true;
+    begin = end + 1;
+  }
+  return tnp;
+}
+
 class Parser {
  public:
   Parser(std::string name, const ReadOptions& options) : name_(std::move(name)), warnings_(name_), options_(options) {}
@@ -108,6 +127,65 @@ class Parser {
     }
   }
 
+  // TNP (Tim Newport-Peace, .sua; XCSoar reads it too): KEY=VALUE records. TITLE=, TYPE= and
+  // CLASS= begin an airspace (once the one before has a shape), BASE= and TOPS= its limits (as
+  // OpenAir writes them), POINT=, CIRCLE RADIUS= CENTRE= and CLOCKWISE / ANTI-CLOCKWISE RADIUS=
+  // CENTRE= TO= its shape; INCLUDE=NO leaves out what follows up to INCLUDE=YES.
+  void tnp_line(std::string_view text, std::int64_t number) {
+    line_ = number;
+    if (points_ + (current_ ? current_->boundary.size() : 0) > kMaxPointsPerFile)
+      return fail_file("more than 5 million boundary points: not an airspace file");
+    text = trim(text);
+    if (text.empty() || text.front() == '#' || text.front() == '*') return;
+    std::string upper(text);
+    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const auto starts = [&](std::string_view key) { return std::string_view(upper).substr(0, key.size()) == key; };
+    const auto after = [&](std::string_view key) { return trim(text.substr(key.size())); };
+    if (starts("INCLUDE=")) {
+      const bool include = trim(std::string_view(upper).substr(8)) != "NO";
+      if (!include) finish_airspace();
+      tnp_include_ = include;
+      return;
+    }
+    if (!tnp_include_) return;
+    if (starts("TITLE=") || starts("TYPE=") || starts("CLASS=")) {
+      if (!current_ || !current_->boundary.empty() || broken_) {
+        finish_airspace();
+        current_ = std::make_unique<Airspace>();
+        current_->line = number;
+        tnp_type_.clear();
+        tnp_class_.clear();
+      }
+      if (starts("TITLE=")) current_->name = std::string(after("TITLE="));
+      if (starts("TYPE=")) tnp_type_ = trim(std::string_view(upper).substr(5));
+      if (starts("CLASS=")) tnp_class_ = trim(std::string_view(upper).substr(6));
+      current_->airspace_class = tnp_class(tnp_type_, tnp_class_);
+      return;
+    }
+    if (starts("RADIO=") || starts("ACTIVE=") || starts("END") || starts("WIDTH=")) return;  // nothing drawn or checked
+    if (!current_) {
+      unknown(std::string(upper.substr(0, upper.find_first_of(" =") + 1)));
+      return;
+    }
+    if (broken_) return;
+    if (starts("BASE=") || starts("TOPS=")) {
+      const std::string_view value = after("BASE=");
+      auto limit = parse_openair_altitude(value);
+      const std::string key = starts("BASE=") ? "BASE" : "TOPS";
+      if (!limit) return fail(key + ": cannot read the height '" + std::string(value) + "'");
+      (key == "BASE" ? floor_ : ceiling_) = *limit;
+    } else if (starts("POINT=")) {
+      std::string_view rest;
+      auto p = parse_tnp_coordinate(after("POINT="), &rest);
+      if (!p || !rest.empty()) return fail("POINT: cannot read the coordinate '" + std::string(after("POINT=")) + "'");
+      current_->boundary.push_back(*p);
+    } else if (starts("CIRCLE") || starts("CLOCKWISE") || starts("ANTI-CLOCKWISE")) {
+      tnp_shape(upper, text);
+    } else {
+      unknown(std::string(upper.substr(0, upper.find_first_of(" =") + 1)));
+    }
+  }
+
   AirspaceReadResult finish() {
     if (!result_.error) finish_airspace();
     // Only a file with no usable airspace at all is an error: the first reason one was skipped,
@@ -145,6 +223,59 @@ class Parser {
     // TNP's records (TITLE=, TYPE=, POINT=, INCLUDE=...): named when the file turns out to have no OpenAir.
     if (keyword.find('=') != std::string::npos) ++tnp_lines_;
     warnings_.add("unknown:" + keyword, here(), "unknown OpenAir record '" + keyword + "': ignored");
+  }
+
+  // The class a TNP airspace is drawn and checked as: CLASS= (A..G) when given, else its TYPE= in
+  // OpenAir's words (C/CTA/CTR: CTR, D: danger Q, G: gliding W, "CLASS C": C).
+  static std::string tnp_class(const std::string& type, const std::string& klass) {
+    if (!klass.empty()) return klass;
+    if (type == "C" || type == "CTA" || type == "CTR" || type == "CTA/CTR") return "CTR";
+    if (type == "D") return "Q";
+    if (type == "G") return "W";
+    if (type.rfind("CLASS ", 0) == 0) return std::string(trim(std::string_view(type).substr(6)));
+    return type;
+  }
+
+  // The value of KEY= in a TNP shape record ("RADIUS=5 CENTRE=N... E... TO=N... E..."); empty when absent.
+  static std::string_view tnp_field(std::string_view upper, std::string_view text, std::string_view key) {
+    const std::size_t at = upper.find(key);
+    if (at == std::string_view::npos) return {};
+    std::string_view v = text.substr(at + key.size());
+    // Up to the next KEY= (a word followed by '=').
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (v[i] == ' ') {
+        const std::size_t eq = v.find('=', i + 1), space = v.find(' ', i + 1);
+        if (eq != std::string_view::npos && (space == std::string_view::npos || eq < space)) return trim(v.substr(0, i));
+      }
+    return trim(v);
+  }
+
+  void tnp_shape(const std::string& upper, std::string_view text) {
+    const std::string_view u(upper);
+    const bool circle = u.rfind("CIRCLE", 0) == 0, anticlockwise = u.rfind("ANTI-CLOCKWISE", 0) == 0;
+    const auto r = parse_double(tnp_field(u, text, "RADIUS="));
+    std::string_view rest;
+    const auto centre = parse_tnp_coordinate(tnp_field(u, text, "CENTRE="), &rest);
+    if (!centre) return fail("cannot read the CENTRE= of '" + std::string(text) + "'");
+    if (circle) {
+      if (!r || !(*r > 0.0) || *r * kMetresPerNauticalMile > kMaxRadiusM)
+        return fail("CIRCLE: the RADIUS= must be a positive number of nautical miles in '" + std::string(text) + "'");
+      const auto points = circle_points(*centre, *r * kMetresPerNauticalMile);
+      current_->boundary.insert(current_->boundary.end(), points.begin(), points.end());
+      return;
+    }
+    const auto to = parse_tnp_coordinate(tnp_field(u, text, "TO="), &rest);
+    if (!to) return fail("cannot read the TO= of '" + std::string(text) + "'");
+    if (current_->boundary.empty()) return fail("an arc with no point before it to start from");
+    // From the last point to TO= around CENTRE= (the radius each end's own, as for DB).
+    const geo::LatLon from = current_->boundary.back();
+    double r1 = 0, a1 = 0, r2 = 0, a2 = 0;
+    geodesic_inverse(*centre, from, r1, a1);
+    geodesic_inverse(*centre, *to, r2, a2);
+    if (!(r1 > 0.0) || !(r2 > 0.0) || r1 > kMaxRadiusM || r2 > kMaxRadiusM)
+      return fail("the arc's ends must lie away from its centre, within 2000 km");
+    append_arc(current_->boundary, *centre, r1, r2, a1, a2, !anticlockwise);
+    current_->boundary.back() = *to;
   }
 
   bool need_centre(const char* keyword) {
@@ -287,6 +418,8 @@ class Parser {
   std::int64_t line_ = 0;
   std::size_t points_ = 0;  // in the airspaces kept so far
   std::size_t tnp_lines_ = 0;  // unknown records of TNP's KEY=VALUE form
+  bool tnp_include_ = true;    // TNP: INCLUDE=NO leaves out what follows
+  std::string tnp_type_, tnp_class_;
 };
 
 }  // namespace
@@ -295,6 +428,7 @@ AirspaceReadResult read_openair(std::string_view bytes, const std::string& displ
   bool latin1 = false;
   const std::string text = as_utf8(bytes, latin1);
   Parser parser(display_name, options);
+  const bool tnp = is_tnp(text);
   std::size_t begin = 0;
   std::int64_t number = 0;
   while (begin < text.size() && !parser.failed()) {
@@ -302,7 +436,10 @@ AirspaceReadResult read_openair(std::string_view bytes, const std::string& displ
     if (end == std::string::npos) end = text.size();
     std::string_view line(text.data() + begin, end - begin);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    parser.line(line, ++number);
+    if (tnp)
+      parser.tnp_line(line, ++number);
+    else
+      parser.line(line, ++number);
     begin = end + 1;
   }
   if (latin1) parser.note("not valid UTF-8: read as Latin-1 (ISO-8859-1), names converted to UTF-8");

@@ -83,6 +83,55 @@ std::optional<geo::LatLon> parse_openair_coordinate(std::string_view text, std::
   return geo::LatLon{*lat, *lon};
 }
 
+namespace {
+
+// [NS]DDMMSS[.s] or [EW]DDDMMSS[.s].
+std::optional<double> take_tnp_angle(std::string_view& s, const char* hemispheres, std::size_t degree_digits,
+                                     double max_deg) {
+  skip_spaces(s);
+  if (s.empty()) return std::nullopt;
+  const char h = static_cast<char>(std::toupper(static_cast<unsigned char>(s.front())));
+  if (h != hemispheres[0] && h != hemispheres[1]) return std::nullopt;
+  s.remove_prefix(1);
+  std::size_t n = 0;
+  while (n < s.size() && std::isdigit(static_cast<unsigned char>(s[n]))) ++n;
+  if (n != degree_digits + 4) return std::nullopt;
+  const auto number = [&](std::size_t from, std::size_t count) {
+    double v = 0;
+    for (std::size_t i = from; i < from + count; ++i) v = v * 10 + (s[i] - '0');
+    return v;
+  };
+  const double deg = number(0, degree_digits), min = number(degree_digits, 2);
+  double sec = number(degree_digits + 2, 2);
+  s.remove_prefix(n);
+  if (!s.empty() && s.front() == '.') {  // decimals of the seconds
+    s.remove_prefix(1);
+    double scale = 0.1;
+    while (!s.empty() && std::isdigit(static_cast<unsigned char>(s.front()))) {
+      sec += (s.front() - '0') * scale;
+      scale /= 10;
+      s.remove_prefix(1);
+    }
+  }
+  if (min > 60.0 || sec > 60.0) return std::nullopt;
+  const double v = deg + min / 60.0 + sec / 3600.0;
+  if (!(v <= max_deg)) return std::nullopt;
+  return h == hemispheres[0] ? v : -v;
+}
+
+}  // namespace
+
+std::optional<geo::LatLon> parse_tnp_coordinate(std::string_view text, std::string_view* rest) {
+  std::string_view s = text;
+  const auto lat = take_tnp_angle(s, "NS", 2, 90.0);
+  if (!lat) return std::nullopt;
+  const auto lon = take_tnp_angle(s, "EW", 3, 180.0);
+  if (!lon) return std::nullopt;
+  skip_spaces(s);
+  if (rest) *rest = s;
+  return geo::LatLon{*lat, *lon};
+}
+
 std::optional<AltitudeLimit> parse_openair_altitude(std::string_view text) {
   AltitudeLimit limit;
   limit.text = std::string(trim(text));

@@ -20,4 +20,9 @@ std::optional<geo::LatLon> parse_openair_coordinate(std::string_view text, std::
 // "N GND"/"N SFC" mean N above the ground; "N STD" is a pressure altitude in feet (as FL N/100).
 std::optional<AltitudeLimit> parse_openair_altitude(std::string_view text);
 
+// A TNP (Tim Newport-Peace, .sua) coordinate pair: "N013030 W0013030" (hemisphere, then
+// DDMMSS and DDDMMSS, seconds may have decimals; 60 carries over as in OpenAir). `rest` gets what
+// follows.
+std::optional<geo::LatLon> parse_tnp_coordinate(std::string_view text, std::string_view* rest = nullptr);
+
 }  // namespace trailray::track::airspace

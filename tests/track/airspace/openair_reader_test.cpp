@@ -263,3 +263,35 @@ TEST(OpenAirReader, ReadAsLenientlyAsXCSoar) {
   ASSERT_FALSE(none.ok());
   EXPECT_NE(none.error->message.find("no airspace"), std::string::npos);
 }
+
+TEST(OpenAirReader, TnpFilesAreReadToo) {
+  // XCSoar's other format: classes from TYPE= or CLASS=, limits as OpenAir writes them, points,
+  // circles and arcs; INCLUDE=NO leaves out what follows.
+  const auto r = read(
+      "INCLUDE=YES\n# comment\nTITLE=Circle\nTYPE=C\nBASE=1000 ft\nTOPS=FL 65\n"
+      "CIRCLE RADIUS=5 CENTRE=N010530 E0000530\n"
+      "TYPE=R\nTITLE=Square\nBASE=SFC\nTOPS=UNLIM\nPOINT=N013030 W0013030\nPOINT=N013030 E0013030\n"
+      "POINT=S013030 E0013030\nCLOCKWISE RADIUS=10 CENTRE=S013030 W0003030 TO=S013030 W0013030\n"
+      "INCLUDE=NO\nTITLE=Left out\nTYPE=C\nCIRCLE RADIUS=5 CENTRE=N010530 E0000530\nINCLUDE=YES\n"
+      "TITLE=Class A\nTYPE=\nCLASS=A\nBASE=100m GND\nTOPS=450m\nCIRCLE RADIUS=2 CENTRE=N470000.5 E0080000\nEND\n");
+  ASSERT_TRUE(r.ok()) << r.error->to_string();
+  ASSERT_EQ(r.file.airspaces.size(), 3u);
+  const auto& circle = r.file.airspaces[0];
+  EXPECT_EQ(circle.name, "Circle");
+  EXPECT_EQ(circle.airspace_class, "CTR");
+  EXPECT_NEAR(circle.ceiling.metres, 6500 * 0.3048, 1e-9);
+  EXPECT_GT(circle.boundary.size(), 100u);
+  const auto& square = r.file.airspaces[1];
+  EXPECT_EQ(square.airspace_class, "R");
+  EXPECT_EQ(square.ceiling.reference, AltitudeReference::Unlimited);
+  EXPECT_NEAR(square.boundary[0].lat, 1 + 30 / 60.0 + 30 / 3600.0, 1e-12);
+  EXPECT_NEAR(square.boundary[0].lon, -(1 + 30 / 60.0 + 30 / 3600.0), 1e-12);
+  EXPECT_GT(square.boundary.size(), 10u);  // three points and an arc back
+  EXPECT_NEAR(square.boundary.back().lon, -(1 + 30 / 60.0 + 30 / 3600.0), 1e-12);
+  EXPECT_EQ(r.file.airspaces[2].name, "Class A");
+  EXPECT_EQ(r.file.airspaces[2].airspace_class, "A");
+  EXPECT_EQ(r.file.airspaces[2].floor.reference, AltitudeReference::Agl);
+  const auto bad = read("TITLE=X\nTYPE=C\nPOINT=N01 E002\nPOINT=N013030 E0013030\n");
+  ASSERT_FALSE(bad.ok());  // its only airspace has an unreadable point
+  EXPECT_EQ(bad.error->position.line, 3);
+}
