@@ -76,14 +76,18 @@ void write(OutputFormat format, const track::TrackFile& file, std::ostream& out)
   }
 }
 
-// Tracks, and routes, cleaned as `stats` and `render` clean them (routes are drawn as tracks).
+// Tracks, and routes, cleaned as `stats` and `render` clean them: a route's points are planned,
+// not measured, so they are never smoothed (render draws them so: scene/track_building).
 void clean(track::TrackFile& file, const track::CleanOptions& options, std::size_t& dropped) {
   track::CleanReport report;
   for (track::Track& t : file.tracks) t = track::clean_track(t, options, report);
+  track::CleanOptions route_options = options;
+  route_options.smooth = false;
   for (track::Route& r : file.routes) {
     track::Track as_track;
     as_track.segments.push_back({std::move(r.points)});
-    r.points = std::move(track::clean_track(as_track, options, report).segments.front().points);
+    track::Track cleaned = track::clean_track(as_track, route_options, report);
+    r.points = cleaned.segments.empty() ? std::vector<track::TrackPoint>{} : std::move(cleaned.segments.front().points);
   }
   dropped += report.total_dropped();
 }
@@ -169,7 +173,7 @@ void add_convert_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--force", args->force, "Replace OUT when it exists (never an input file)");
   cmd->add_flag("--cleaned", args->cleaned,
                 "Write the tracks and routes cleaned as stats and render clean them (timestamps repaired, "
-                "--min-distance, smoothing) instead of as recorded");
+                "--min-distance, smoothing; routes never smoothed) instead of as recorded");
   add_track_options(*cmd, args->track);
   cmd->callback([args, &exit_code] { exit_code = run_convert(*args); });
 }

@@ -158,6 +158,31 @@ TEST(ConvertCli, CleanedWritesTheCleanedTracks) {
   EXPECT_GT(lines(unsmoothed.out), lines(clean.out));
 }
 
+TEST(ConvertCli, CleanedRoutesAreNeverSmoothed) {
+  // A planned zig-zag (a route: every point a place someone chose) and the same points recorded
+  // (a track): --cleaned smooths the track's corners and leaves the route's points where they are.
+  std::string zig;
+  for (int i = 0; i < 12; ++i)
+    zig += "<rtept lat=\"" + std::to_string(46.0 + 0.001 * i) + "\" lon=\"" + std::to_string(7.0 + (i % 2) * 0.002) + "\"/>";
+  std::string trk = zig;
+  for (std::string::size_type at; (at = trk.find("rtept")) != std::string::npos;) trk.replace(at, 5, "trkpt");
+  TempFile in("plan.gpx", "<gpx version=\"1.1\"><rte>" + zig + "</rte><trk><trkseg>" + trk + "</trkseg></trk></gpx>");
+  auto raw = run_command(convert(shell_quote(in.str()) + " --format csv -o - 2>/dev/null"));
+  auto clean = run_command(convert(shell_quote(in.str()) + " --cleaned --format csv -o - 2>/dev/null"));
+  ASSERT_EQ(raw.status, 0);
+  ASSERT_EQ(clean.status, 0);
+  const auto rows_of = [](const std::string& csv, const std::string& kind) {
+    std::vector<std::string> rows;
+    std::istringstream text(csv);
+    for (std::string line; std::getline(text, line);)
+      if (line.rfind(kind + ",", 0) == 0) rows.push_back(line);
+    return rows;
+  };
+  EXPECT_EQ(rows_of(clean.out, "route"), rows_of(raw.out, "route"));
+  ASSERT_EQ(rows_of(raw.out, "route").size(), 12u);
+  EXPECT_NE(rows_of(clean.out, "track"), rows_of(raw.out, "track"));  // the track's corners smoothed
+}
+
 TEST(ConvertCli, ExistingOutputNeedsForceAndIsReplacedAtomically) {
   TempFile in("in.gpx", kGpx);
   const auto dir = in.path().parent_path();
