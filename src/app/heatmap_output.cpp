@@ -60,6 +60,42 @@ std::vector<unsigned char> tile_png(const track::HeatmapPixels& pixels, const sc
   return terrain::encode_png(image);
 }
 
+// Every coloured tile of the zoom levels, handed to `put` (zoom, x, y, PNG), counted in `written`.
+void for_each_coloured_tile(const track::HeatmapCounts& counts, HeatmapWritten& written,
+                            const scene::HeatmapPalette& palette, const std::function<void(int)>& progress,
+                            const std::function<void(int, std::int64_t, std::int64_t, const std::vector<unsigned char>&)>& put) {
+  for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
+    if (progress) progress(z);
+    for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
+      put(z, xy.first, xy.second, tile_png(pixels, palette));
+      ++written.tiles;
+    }
+  }
+}
+
+// The description a heatmap's tile output carries (metadata.json's or the MBTiles metadata's
+// trailray_heatmap), as text; nullopt when `path` is not such an output or cannot be read.
+std::optional<std::string> description_text(const std::string& path) {
+  std::error_code ec;
+  try {
+    if (fs::is_directory(path, ec)) {
+      if (!fs::exists(fs::path(path) / "metadata.json", ec)) return std::nullopt;
+      const auto bytes = read_file_bytes(fs::path(path) / "metadata.json");
+      const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+      if (!j.is_object() || !j.contains(kMetadataKey)) return std::nullopt;
+      const nlohmann::json& v = j.at(kMetadataKey);
+      return v.is_string() ? v.get<std::string>() : v.dump();
+    }
+    if (!lower(path).ends_with(".mbtiles") || !fs::is_regular_file(path, ec)) return std::nullopt;
+    const auto metadata = terrain::read_mbtiles_metadata(path);
+    const auto it = metadata.find(kMetadataKey);
+    if (it == metadata.end()) return std::nullopt;
+    return it->second;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 // The lon/lat box of the counted cells, for the MBTiles "bounds".
 std::string bounds_text(const track::HeatmapCounts& counts) {
   const track::HeatmapWindow w = counts.extent();
@@ -135,14 +171,10 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
                                                   heatmap_measure_title(counts.measure()), counts.cell_m(),
                                                   counts.tracks()));
       out.put_metadata(kMetadataKey, description);
-      for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
-        if (progress) progress(z);
-        for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
-          out.put_tile({z, static_cast<std::uint32_t>(xy.first), static_cast<std::uint32_t>(xy.second)},
-                       tile_png(pixels, options.palette));
-          ++written.tiles;
-        }
-      }
+      for_each_coloured_tile(counts, written, options.palette, progress,
+                             [&](int z, std::int64_t x, std::int64_t y, const std::vector<unsigned char>& png) {
+                               out.put_tile({z, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)}, png);
+                             });
       for (const auto& [key, tile] : counts.tiles())
         out.put_extra(kCountsTable, fmt::format("{}/{}", key.first, key.second), track::pack_heatmap_tile(tile));
       out.finish();
@@ -172,15 +204,12 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
                                {"maxzoom", written.max_zoom},
                                {"bounds", bounds_text(counts)},
                                {kMetadataKey, description}};
-    for (int z = written.min_zoom; z <= written.max_zoom; ++z) {
-      if (progress) progress(z);
-      for (const auto& [xy, pixels] : track::heatmap_tile_pixels(counts, z)) {
-        const fs::path file = temporary / std::to_string(z) / std::to_string(xy.first) / (std::to_string(xy.second) + ".png");
-        fs::create_directories(file.parent_path());
-        write_file_bytes(file, tile_png(pixels, options.palette));
-        ++written.tiles;
-      }
-    }
+    for_each_coloured_tile(counts, written, options.palette, progress,
+                           [&](int z, std::int64_t x, std::int64_t y, const std::vector<unsigned char>& png) {
+                             const fs::path file = temporary / std::to_string(z) / std::to_string(x) / (std::to_string(y) + ".png");
+                             fs::create_directories(file.parent_path());
+                             write_file_bytes(file, png);
+                           });
     fs::create_directories(temporary / "counts");
     for (const auto& [key, tile] : counts.tiles())
       write_file_bytes(temporary / "counts" / fmt::format("{}_{}.u32.zlib", key.first, key.second),
@@ -208,38 +237,14 @@ HeatmapWritten write_heatmap_tiles(const track::HeatmapCounts& counts, const std
   return written;
 }
 
-bool is_heatmap_tiles(const std::string& path) {
-  std::error_code ec;
-  const std::string p = without_trailing_slash(path);
-  try {
-    if (fs::is_directory(p, ec)) {
-      if (!fs::exists(fs::path(p) / "metadata.json", ec)) return false;
-      const auto bytes = read_file_bytes(fs::path(p) / "metadata.json");
-      const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
-      return j.is_object() && j.contains(kMetadataKey);
-    }
-    if (!lower(p).ends_with(".mbtiles") || !fs::is_regular_file(p, ec)) return false;
-    return terrain::read_mbtiles_metadata(p).contains(kMetadataKey);
-  } catch (const std::exception&) {
-    return false;
-  }
-}
+bool is_heatmap_tiles(const std::string& path) { return description_text(without_trailing_slash(path)).has_value(); }
 
 std::optional<track::HeatmapDescription> describe_heatmap_tiles(const std::string& path) {
-  if (!is_heatmap_tiles(path)) return std::nullopt;
   const std::string p = without_trailing_slash(path);
-  std::string text;
-  std::error_code ec;
-  if (fs::is_directory(p, ec)) {
-    const auto bytes = read_file_bytes(fs::path(p) / "metadata.json");
-    const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
-    const nlohmann::json& v = j.at(kMetadataKey);
-    text = v.is_string() ? v.get<std::string>() : v.dump();
-  } else {
-    text = terrain::read_mbtiles_metadata(p).at(kMetadataKey);
-  }
+  const std::optional<std::string> text = description_text(p);
+  if (!text) return std::nullopt;
   try {
-    return track::parse_heatmap_description(text);
+    return track::parse_heatmap_description(*text);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(p + ": " + e.what());
   }

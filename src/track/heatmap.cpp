@@ -104,6 +104,15 @@ void visit_steps(const TrackPoint* begin, const TrackPoint* end, double cell, Vi
   }
 }
 
+// The cells a run of points passes through (a gap step: its end only), appended as keys.
+void append_run_cells(const TrackPoint* begin, const TrackPoint* end, double cell, std::int64_t n,
+                      std::vector<std::uint64_t>& keys) {
+  const auto add = [&](std::int64_t col, std::int64_t row, double, double) { keys.push_back(key_of(col, row)); };
+  visit_steps(begin, end, cell, [&](const TrackPoint&, const TrackPoint&, GridPoint a, GridPoint b, bool joined) {
+    visit_line(joined ? a : b, b, n, add);
+  });
+}
+
 // Sorted unique keys -> cells counted once.
 std::vector<HeatmapCellCount> once_each(std::vector<std::uint64_t>& keys) {
   std::sort(keys.begin(), keys.end());
@@ -139,13 +148,8 @@ HeatmapCounts::HeatmapCounts(double cell_m, HeatmapMeasure measure) : cell_m_(ce
 
 std::vector<HeatmapCell> HeatmapCounts::track_cells(const Track& track) const {
   std::vector<std::uint64_t> keys;
-  const auto add = [&](std::int64_t col, std::int64_t row, double, double) { keys.push_back(key_of(col, row)); };
   for (const Segment& s : track.segments)
-    visit_steps(s.points.data(), s.points.data() + s.points.size(), cell_m_,
-                [&](const TrackPoint&, const TrackPoint&, GridPoint a, GridPoint b, bool joined) {
-                  if (joined) visit_line(a, b, cells_per_side_, add);
-                  else visit_line(b, b, cells_per_side_, add);
-                });
+    append_run_cells(s.points.data(), s.points.data() + s.points.size(), cell_m_, cells_per_side_, keys);
   std::vector<HeatmapCell> cells;
   for (const HeatmapCellCount& c : once_each(keys)) cells.push_back(c.cell);
   return cells;
@@ -159,18 +163,12 @@ std::vector<HeatmapCellCount> thermal_counts(const Track& track, double cell, st
   std::map<std::uint64_t, std::uint32_t> counts;
   for (const flight::Flight& f : analysis.flights) {
     std::vector<std::uint64_t> keys;
-    const auto add = [&](std::int64_t col, std::int64_t row, double, double) { keys.push_back(key_of(col, row)); };
     for (const flight::Thermal& th : f.thermals) {
       // Place::point counts across segments: walk each segment's part of [start, end].
       std::size_t first = 0;
       for (const Segment& s : track.segments) {
         const std::size_t from = std::max(th.start.point, first), to = std::min(th.end.point + 1, first + s.points.size());
-        if (from < to)
-          visit_steps(s.points.data() + (from - first), s.points.data() + (to - first), cell,
-                      [&](const TrackPoint&, const TrackPoint&, GridPoint a, GridPoint b, bool joined) {
-                        if (joined) visit_line(a, b, n, add);
-                        else visit_line(b, b, n, add);
-                      });
+        if (from < to) append_run_cells(s.points.data() + (from - first), s.points.data() + (to - first), cell, n, keys);
         first += s.points.size();
       }
     }

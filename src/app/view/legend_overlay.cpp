@@ -109,25 +109,6 @@ scene::PixelRect legend_overlay_rect(const std::optional<scene::ColorLegend>& le
 
 namespace {
 void draw_legend_window(const char* name, float raise, const std::optional<scene::ColorLegend>& legend,
-                        const std::vector<scene::TrackKeyEntry>& key);
-}  // namespace
-
-void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
-                         const std::vector<scene::TrackKeyEntry>& key) {
-  draw_legend_window("Legend", 0.0f, legend, key);
-}
-
-void draw_overlay_legend(const scene::ColorLegend& overlay, const std::optional<scene::ColorLegend>& legend,
-                         const std::vector<scene::TrackKeyEntry>& key) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float below = legend || !key.empty()
-                          ? overlay_layout(legend, key, display.x, display.y, overlay_text()).height + 0.5f * kMargin
-                          : 0.0f;
-  draw_legend_window("Overlay legend", below, overlay, {});
-}
-
-namespace {
-void draw_legend_window(const char* name, float raise, const std::optional<scene::ColorLegend>& legend,
                         const std::vector<scene::TrackKeyEntry>& key) {
   if (!legend && key.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -196,5 +177,19 @@ void draw_legend_window(const char* name, float raise, const std::optional<scene
   ImGui::End();
 }
 }  // namespace
+
+void draw_legend_overlay(const std::optional<scene::ColorLegend>& legend,
+                         const std::vector<scene::TrackKeyEntry>& key) {
+  draw_legend_window("Legend", 0.0f, legend, key);
+}
+
+void draw_overlay_legend(const scene::ColorLegend& overlay, const std::optional<scene::ColorLegend>& legend,
+                         const std::vector<scene::TrackKeyEntry>& key) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float below = legend || !key.empty()
+                          ? overlay_layout(legend, key, display.x, display.y, overlay_text()).height + 0.5f * kMargin
+                          : 0.0f;
+  draw_legend_window("Overlay legend", below, overlay, {});
+}
 
 }  // namespace trailray::app::view

@@ -32,6 +32,12 @@ std::string as_utf8(std::string_view bytes, bool& converted) {
   return out;
 }
 
+std::string upper_ascii(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
 // A TNP file: TITLE=/POINT=/CIRCLE/INCLUDE= records and no OpenAir AC record.
 bool is_tnp(std::string_view text) {
   bool tnp = false;
@@ -40,8 +46,7 @@ bool is_tnp(std::string_view text) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string_view::npos) end = text.size();
     std::string_view line = trim(text.substr(begin, end - begin));
-    std::string head(line.substr(0, 8));
-    for (char& c : head) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::string head = upper_ascii(line.substr(0, 8));
     if (head.rfind("AC ", 0) == 0 || head.rfind("AC\t", 0) == 0) return false;
     if (head.rfind("TITLE=", 0) == 0 || head.rfind("POINT=", 0) == 0 || head.rfind("CIRCLE ", 0) == 0 ||
         head.rfind("INCLUDE=", 0) == 0)
@@ -55,16 +60,24 @@ class Parser {
  public:
   Parser(std::string name, const ReadOptions& options) : name_(std::move(name)), warnings_(name_), options_(options) {}
 
-  void line(std::string_view text, std::int64_t number) {
+  // One line of the file, OpenAir or TNP (`tnp`): the bound on points, comments and blank lines
+  // are the two formats' alike.
+  void line(std::string_view text, std::int64_t number, bool tnp) {
     line_ = number;
     if (points_ + (current_ ? current_->boundary.size() : 0) > kMaxPointsPerFile)
       return fail_file("more than 5 million boundary points: not an airspace file");
     text = trim(text);
     if (text.empty() || text.front() == '*' || text.front() == '#') return;
+    if (tnp)
+      tnp_record(text, number);
+    else
+      openair_record(text, number);
+  }
+
+  void openair_record(std::string_view text, std::int64_t number) {
     std::size_t split = 0;
     while (split < text.size() && text[split] != ' ' && text[split] != '\t') ++split;
-    std::string keyword(text.substr(0, split));
-    for (char& c : keyword) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::string keyword = upper_ascii(text.substr(0, split));
     const std::string_view value = trim(text.substr(split));
     if (keyword == "AC") {
       finish_airspace();
@@ -131,14 +144,8 @@ class Parser {
   // CLASS= begin an airspace (once the one before has a shape), BASE= and TOPS= its limits (as
   // OpenAir writes them), POINT=, CIRCLE RADIUS= CENTRE= and CLOCKWISE / ANTI-CLOCKWISE RADIUS=
   // CENTRE= TO= its shape; INCLUDE=NO leaves out what follows up to INCLUDE=YES.
-  void tnp_line(std::string_view text, std::int64_t number) {
-    line_ = number;
-    if (points_ + (current_ ? current_->boundary.size() : 0) > kMaxPointsPerFile)
-      return fail_file("more than 5 million boundary points: not an airspace file");
-    text = trim(text);
-    if (text.empty() || text.front() == '#' || text.front() == '*') return;
-    std::string upper(text);
-    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  void tnp_record(std::string_view text, std::int64_t number) {
+    const std::string upper = upper_ascii(text);
     const auto starts = [&](std::string_view key) { return std::string_view(upper).substr(0, key.size()) == key; };
     const auto after = [&](std::string_view key) { return trim(text.substr(key.size())); };
     if (starts("INCLUDE=")) {
@@ -192,9 +199,7 @@ class Parser {
     // else that there was none.
     if (!result_.error && result_.file.airspaces.empty())
       result_.error = first_skipped_ ? *first_skipped_
-                      : tnp_lines_ > 0
-                          ? Diagnostic{name_, {}, "a TNP (Tim Newport-Peace, .sua) airspace file: trailray reads OpenAir"}
-                          : Diagnostic{name_, {}, "no airspace in it (no AC record with a boundary)"};
+                                     : Diagnostic{name_, {}, "no airspace in it (no AC record with a boundary)"};
     result_.warnings = warnings_.diagnostics();
     if (options_.strict && !result_.error && !result_.warnings.empty()) {
       result_.error = result_.warnings.front();
@@ -220,8 +225,6 @@ class Parser {
   // What makes the whole file unreadable.
   void fail_file(const std::string& message) { result_.error = Diagnostic{name_, here(), message}; }
   void unknown(const std::string& keyword) {
-    // TNP's records (TITLE=, TYPE=, POINT=, INCLUDE=...): named when the file turns out to have no OpenAir.
-    if (keyword.find('=') != std::string::npos) ++tnp_lines_;
     warnings_.add("unknown:" + keyword, here(), "unknown OpenAir record '" + keyword + "': ignored");
   }
 
@@ -417,7 +420,6 @@ class Parser {
   bool clockwise_ = true;
   std::int64_t line_ = 0;
   std::size_t points_ = 0;  // in the airspaces kept so far
-  std::size_t tnp_lines_ = 0;  // unknown records of TNP's KEY=VALUE form
   bool tnp_include_ = true;    // TNP: INCLUDE=NO leaves out what follows
   std::string tnp_type_, tnp_class_;
 };
@@ -436,10 +438,7 @@ AirspaceReadResult read_openair(std::string_view bytes, const std::string& displ
     if (end == std::string::npos) end = text.size();
     std::string_view line(text.data() + begin, end - begin);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (tnp)
-      parser.tnp_line(line, ++number);
-    else
-      parser.line(line, ++number);
+    parser.line(line, ++number, tnp);
     begin = end + 1;
   }
   if (latin1) parser.note("not valid UTF-8: read as Latin-1 (ISO-8859-1), names converted to UTF-8");
