@@ -97,9 +97,9 @@ void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
 // The colour values of a recorded track for a metric: phase from its flight analysis, the others
 // from its points and metrics (density and thermals: none yet, apply_neighbour_counts on all the
 // tracks gives them).
-std::vector<std::vector<float>> values_for(const Track& t, track::ColorMetric metric,
-                                           const std::vector<std::vector<double>>* ground) {
-  if (metric != track::ColorMetric::phase) return track::color_values(t.cleaned, t.metrics, metric, ground);
+std::vector<std::vector<float>> values_for(const Track& t, const track::TrackMetrics& metrics,
+                                           track::ColorMetric metric, const std::vector<std::vector<double>>* ground) {
+  if (metric != track::ColorMetric::phase) return track::color_values(t.cleaned, metrics, metric, ground);
   if (!t.flights) throw std::invalid_argument("track '" + t.name + "' has no flight analysis to colour by phase");
   return track::flight::phase_color_values(t.cleaned, *t.flights);
 }
@@ -128,23 +128,27 @@ void assign_colors(std::vector<Track>& tracks, const TrackStyle& style, std::siz
 }  // namespace
 
 void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground) {
-  if (t.metrics.segments.size() != t.cleaned.segments.size())
+  fill_point_arrays(t, track::compute_metrics(t.cleaned, t.metrics_options), ground);
+}
+
+void fill_point_arrays(Track& t, const track::TrackMetrics& metrics, const std::vector<std::vector<double>>& ground) {
+  if (metrics.segments.size() != t.cleaned.segments.size())
     throw std::invalid_argument(fmt::format("track '{}': metrics for {} segments, the track has {}", t.name,
-                                            t.metrics.segments.size(), t.cleaned.segments.size()));
+                                            metrics.segments.size(), t.cleaned.segments.size()));
   if (!ground.empty() && ground.size() != t.cleaned.segments.size())
     throw std::invalid_argument(fmt::format("track '{}': ground heights for {} segments, the track has {}", t.name,
                                             ground.size(), t.cleaned.segments.size()));
   const std::size_t n = t.cleaned.point_count();
   t.segment_first.clear();
   for (auto* v :
-       {&t.distance_m, &t.time_unix_s, &t.elapsed_s, &t.altitude_m, &t.pressure_altitude_m, &t.gnss_altitude_m,
+       {&t.distance_m, &t.time_unix_s, &t.altitude_m, &t.pressure_altitude_m, &t.gnss_altitude_m,
         &t.ground_m, &t.speed_kmh, &t.vspeed_ms, &t.heart_rate_bpm, &t.cadence_rpm, &t.power_w}) {
     v->clear();
     v->reserve(n);
   }
   for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
     const auto& points = t.cleaned.segments[s].points;
-    const track::SegmentMetrics& m = t.metrics.segments[s];
+    const track::SegmentMetrics& m = metrics.segments[s];
     if (m.size() != points.size())
       throw std::invalid_argument(fmt::format("track '{}' segment {}: metrics for {} points, it has {}", t.name, s + 1,
                                               m.size(), points.size()));
@@ -157,7 +161,6 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
       const track::TrackPoint& p = points[i];
       t.distance_m.push_back(m.distance_m[i]);
       t.time_unix_s.push_back(p.time);
-      t.elapsed_s.push_back(m.elapsed_s[i]);
       t.altitude_m.push_back(p.ele);
       t.pressure_altitude_m.push_back(as_double(p.pressure_altitude));
       t.gnss_altitude_m.push_back(as_double(p.gnss_altitude));
@@ -173,13 +176,17 @@ void fill_point_arrays(Track& t, const std::vector<std::vector<double>>& ground)
   // heart rate, cadence, power or IGC altitudes, and a season of them is millions of points.
   for (auto* v : {&t.pressure_altitude_m, &t.gnss_altitude_m, &t.heart_rate_bpm, &t.cadence_rpm, &t.power_w})
     if (std::none_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); })) std::vector<double>().swap(*v);
+  if (n > std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument(fmt::format("track '{}' has {} points: more than a track can hold", t.name, n));
   t.timed_points.clear();
   t.times_rise = true;
   for (std::size_t i = 0; i < t.time_unix_s.size(); ++i) {
     if (std::isnan(t.time_unix_s[i])) continue;
     if (!t.timed_points.empty() && t.time_unix_s[i] < t.time_unix_s[t.timed_points.back()]) t.times_rise = false;
-    t.timed_points.push_back(i);
+    t.timed_points.push_back(static_cast<std::uint32_t>(i));
   }
+  t.timed_points.shrink_to_fit();
+  t.time_origin_s = t.timed_points.empty() ? kNaN : t.time_unix_s[t.timed_points.front()];
 }
 
 std::vector<std::vector<double>> sample_ground_heights(const track::Track& t, terrain::HeightSource* heights) {
@@ -214,7 +221,8 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
     track::CleanOptions clean = options.analysis.clean;
     if (named.is_route()) clean.smooth = false;
     t.cleaned = track::clean_track(named.raw(), clean, report);
-    t.metrics = track::compute_metrics(t.cleaned, options.analysis.metrics);
+    t.metrics_options = options.analysis.metrics;
+    const track::TrackMetrics metrics = track::compute_metrics(t.cleaned, t.metrics_options);
     std::vector<std::vector<double>> ground;
     if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))
       ground = sample_ground_heights(t.cleaned, options.heights);
@@ -225,14 +233,14 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
       t.flights = std::make_shared<const track::flight::FlightAnalysis>(track::flight::analyse_flights(named.raw()));
     std::vector<std::vector<float>> values;
     if (t.is_route)
-      values = distances_along(t.metrics);
+      values = distances_along(metrics);
     else if (by_value)
-      values = values_for(t, style.color_by, ground.empty() ? nullptr : &ground);
+      values = values_for(t, metrics, style.color_by, ground.empty() ? nullptr : &ground);
     fill_geometry(t, ground, values, style, options.neutral_ground_m);
     // Ground heights are kept only where they were sampled for every point of a source.
-    fill_point_arrays(t, options.heights != nullptr ? ground : std::vector<std::vector<double>>{});
+    fill_point_arrays(t, metrics, options.heights != nullptr ? ground : std::vector<std::vector<double>>{});
     if (options.inspect)
-      t.summary = track::summarize_cleaned_track(named.raw(), t.cleaned, report, t.metrics, options.analysis);
+      t.summary = track::summarize_cleaned_track(named.raw(), t.cleaned, report, metrics, options.analysis);
     tracks.push_back(std::move(t));
   }
   return tracks;
@@ -288,7 +296,11 @@ void apply_color_metric(Track& t, track::ColorMetric metric) {
       for (std::size_t i = 0; i < s.points.size(); ++i) ground.back().push_back(t.ground_m.at(flat++));
     }
   }
-  const auto values = values_for(t, metric, ground.empty() ? nullptr : &ground);
+  // Worked out again: a track keeps no metrics (Track::metrics_options).
+  const track::TrackMetrics metrics =
+      metric == track::ColorMetric::solid ? track::TrackMetrics{} : track::compute_metrics(t.cleaned, t.metrics_options);
+  const auto values = metric == track::ColorMetric::solid ? std::vector<std::vector<float>>{}
+                                                          : values_for(t, metrics, metric, ground.empty() ? nullptr : &ground);
   std::size_t line = 0;
   for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
     if (t.cleaned.segments[s].points.empty()) continue;

@@ -52,9 +52,12 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
 void finish_tracks(std::vector<Track>& tracks, const TrackStyle& style, Diagnostics& diagnostics,
                    std::size_t first_palette_index = 0, const track::ParallelFor& parallel = {});
 
-// Fills the flat per-point numbers of a track from its cleaned points and metrics; `ground` per
-// segment and point (empty: none). Throws std::invalid_argument when the metrics or the ground
-// heights do not match the track's segments and points.
+// Fills the flat per-point numbers of a track from its cleaned points and their metrics (worked
+// out with track.metrics_options when not given); `ground` per segment and point (empty: none).
+// Throws std::invalid_argument when the metrics or the ground heights do not match the track's
+// segments and points.
+void fill_point_arrays(Track& track, const track::TrackMetrics& metrics,
+                       const std::vector<std::vector<double>>& ground = {});
 void fill_point_arrays(Track& track, const std::vector<std::vector<double>>& ground = {});
 
 // The terrain height below every point of `t`, per segment; NaN everywhere without `heights`.

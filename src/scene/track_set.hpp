@@ -40,7 +40,10 @@ struct Track {
   std::string source;          // the file it came from
 
   track::Track cleaned;         // after clean_track: what is drawn and measured
-  track::TrackMetrics metrics;  // compute_metrics(cleaned)
+  // The options its metrics were computed with: the metrics themselves (seven numbers a point)
+  // are not kept but worked out again from `cleaned` when a colouring needs them, so that a
+  // season of tracks fits in memory (the per-point numbers below hold what the panels read).
+  track::MetricsOptions metrics_options;
   track::TrackSummary summary;  // raw and clean statistics, as `trailray stats` prints them
   // The flight analysis of the track as read (before cleaning, as `trailray flight` sees it);
   // nullptr where it was not asked for (TrackBuildOptions) or for a route. Shared: copies of a
@@ -51,7 +54,6 @@ struct Track {
   std::vector<std::size_t> segment_first;   // flat index of each non-empty segment's first point
   std::vector<double> distance_m;           // cumulative 2D distance from the start (gaps add nothing)
   std::vector<double> time_unix_s;          // timestamp
-  std::vector<double> elapsed_s;            // since the track's first timestamp
   std::vector<double> altitude_m;           // recorded elevation (what the 3D track is drawn at)
   // The recorded channels below are empty when no point has the channel: read them through the
   // accessors (pressure_altitude(i), heart_rate(i), ...), which answer NaN then.
@@ -63,7 +65,8 @@ struct Track {
   std::vector<double> heart_rate_bpm;       // recorded
   std::vector<double> cadence_rpm;          // recorded (revolutions or steps per minute)
   std::vector<double> power_w;              // recorded
-  std::vector<std::size_t> timed_points;    // the flat indices of the points with a time, in order
+  std::vector<std::uint32_t> timed_points;  // the flat indices of the points with a time, in order
+  double time_origin_s = track::kMissing;    // the first timestamp in file order (NaN: none)
   bool times_rise = true;                   // their times never go back (cleaned tracks' do not)
 
   // What is drawn: one polyline per non-empty segment, points in ECEF (points without an
@@ -81,6 +84,8 @@ struct Track {
   const glm::dvec3& ecef(std::size_t point) const;
   // The segment holding a flat point index.
   std::size_t segment_of(std::size_t point) const;
+  // Seconds since the track's first timestamp (NaN: the point has no time).
+  double elapsed(std::size_t point) const { return time_unix_s[point] - time_origin_s; }
   // The first and last timestamp (nullopt: no timed point).
   std::optional<double> start_time() const;
   std::optional<double> end_time() const;

@@ -65,7 +65,6 @@ std::optional<std::pair<std::size_t, std::size_t>> points_between(const scene::T
   const auto& timed = track.timed_points;
   const auto& time = track.time_unix_s;
   if (timed.empty() || !(t0 <= t1)) return std::nullopt;
-  std::size_t first = timed.size(), last = 0;
   if (track.times_rise) {
     const auto lo =
         std::lower_bound(timed.begin(), timed.end(), t0, [&](std::size_t i, double t) { return time[i] < t; });
@@ -74,14 +73,13 @@ std::optional<std::pair<std::size_t, std::size_t>> points_between(const scene::T
     if (lo >= hi) return std::nullopt;
     return std::pair{*lo, *std::prev(hi)};
   }
-  for (std::size_t k = 0; k < timed.size(); ++k) {
-    const double t = time[timed[k]];
+  std::optional<std::pair<std::size_t, std::size_t>> range;
+  for (const std::size_t i : timed) {
+    const double t = time[i];
     if (t < t0 || t > t1) continue;
-    first = std::min(first, timed[k]);
-    last = std::max(last, timed[k]);
+    range = range ? std::pair{std::min(range->first, i), std::max(range->second, i)} : std::pair{i, i};
   }
-  if (first == timed.size()) return std::nullopt;
-  return std::pair{first, last};
+  return range;
 }
 
 void flight_statistics(const scene::Track& track, PanelActions& actions) {

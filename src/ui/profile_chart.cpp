@@ -135,7 +135,7 @@ void draw_selection_statistics(const ViewerModel& model, int track) {
 
 double chart_x(const scene::Track& t, ChartAxis axis, std::size_t point) {
   if (point >= t.point_count()) return std::numeric_limits<double>::quiet_NaN();
-  return axis == ChartAxis::distance ? t.distance_m[point] : t.elapsed_s[point];
+  return axis == ChartAxis::distance ? t.distance_m[point] : t.elapsed(point);
 }
 
 std::optional<ChartExtent> chart_extent(const scene::Track& t, ChartAxis axis) {

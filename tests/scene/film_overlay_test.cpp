@@ -67,7 +67,6 @@ TEST(FilmOverlay, CadenceAndPowerGaugesWhenTheTrackRecordsThem) {
   Track t;
   t.name = "Ride";
   t.cleaned = ride;
-  t.metrics = track::compute_metrics(ride);
   fill_point_arrays(t);
   ASSERT_EQ(t.cadence_rpm.size(), 3u);
   ASSERT_EQ(t.power_w.size(), 3u);
@@ -162,7 +161,7 @@ TEST(FilmProfile, ClimbsWithTheTrackAndMarksNow) {
     t.geometry.segments[0].points_ecef.push_back(glm::dvec3(6.4e6, i * 100.0, 0.0));
     t.distance_m.push_back(i * 100.0);
     t.time_unix_s.push_back(1718704800.0 + i * 10.0);
-    t.timed_points.push_back(static_cast<std::size_t>(i));
+    t.timed_points.push_back(static_cast<std::uint32_t>(i));
     t.altitude_m.push_back(1000.0 + i * 100.0);
     t.ground_m.push_back(900.0);
   }

@@ -74,7 +74,7 @@ Track east_track(bool gap) {
   for (int i = 0; i <= 10; ++i) {
     t.distance_m.push_back(i * 100.0);
     t.time_unix_s.push_back(kT0 + i * 10.0);
-    t.timed_points.push_back(static_cast<std::size_t>(i));
+    t.timed_points.push_back(static_cast<std::uint32_t>(i));
     line.points_ecef.push_back(geo::ecef_from_geodetic(kLat, lon_at(i * 100.0), 1000.0));
     line.values.push_back(static_cast<float>(i));
   }

@@ -48,7 +48,7 @@ TEST(ViewerTrack, PerPointArraysFollowTheCleanedTrackAcrossSegments) {
   // Time and elapsed time.
   EXPECT_DOUBLE_EQ(t.time_unix_s[3], kT0 + 30.0);
   EXPECT_DOUBLE_EQ(t.time_unix_s[11], kT0 + 600.0);
-  EXPECT_DOUBLE_EQ(t.elapsed_s[11], 600.0);
+  EXPECT_DOUBLE_EQ(t.elapsed(11), 600.0);
   EXPECT_EQ(t.start_time(), kT0);
   EXPECT_EQ(t.end_time(), kT0 + 700.0);
   EXPECT_DOUBLE_EQ(t.altitude_m[5], 500.0);

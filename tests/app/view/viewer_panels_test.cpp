@@ -81,9 +81,9 @@ TEST(ChartMapping, MousePixelToNearestPoint) {
 
 TEST(ChartMapping, PointsWithoutTimeAreNotOnTheTimeAxis) {
   scene::Track t = ramp();
-  for (std::size_t i = 0; i < 10; ++i) t.elapsed_s[i] = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < 10; ++i) t.time_unix_s[i] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(point_at_x(t, ChartAxis::time, 0.0), 10u);
-  for (double& e : t.elapsed_s) e = std::numeric_limits<double>::quiet_NaN();
+  for (double& e : t.time_unix_s) e = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(point_at_x(t, ChartAxis::time, 0.0).has_value());
   EXPECT_FALSE(chart_extent(t, ChartAxis::time).has_value());
 }
