@@ -28,6 +28,7 @@ inline constexpr std::uint16_t kRecord = 20;
 inline constexpr std::uint16_t kEvent = 21;
 inline constexpr std::uint16_t kCourse = 31;
 inline constexpr std::uint16_t kCoursePoint = 32;
+inline constexpr std::uint16_t kLocation = 29;  // a saved place (Garmin's Locations.fit)
 inline constexpr std::uint16_t kTimestampCorrelation = 162;
 }  // namespace msg
 
@@ -72,6 +73,14 @@ inline constexpr std::uint8_t kPositionLong = 3;
 inline constexpr std::uint8_t kType = 5;
 inline constexpr std::uint8_t kName = 6;
 }  // namespace course_point
+
+namespace location {
+inline constexpr std::uint8_t kName = 0;
+inline constexpr std::uint8_t kPositionLat = 1;
+inline constexpr std::uint8_t kPositionLong = 2;
+inline constexpr std::uint8_t kAltitude = 4;  // scale 5, offset 500, as a record's
+inline constexpr std::uint8_t kDescription = 6;
+}  // namespace location
 
 namespace event {
 inline constexpr std::uint8_t kEvent = 0;

@@ -74,6 +74,9 @@ void TrackBuilder::add(const Message& m) {
     case msg::kCoursePoint:
       add_course_point(m);
       break;
+    case msg::kLocation:
+      add_location(m);
+      break;
     case msg::kFileId:
       add_file_id(m);
       break;
@@ -138,24 +141,44 @@ void TrackBuilder::add_event(const Message& m) {
   }
 }
 
-void TrackBuilder::add_course_point(const Message& m) {
-  auto lat = m.integer(course_point::kPositionLat), lon = m.integer(course_point::kPositionLong);
+// A waypoint at a message's position (semicircles in fields `lat_field`, `lon_field`); nullopt,
+// with a warning naming `what`, when it has none or one out of range.
+std::optional<Waypoint> TrackBuilder::waypoint_at(const Message& m, std::uint8_t lat_field, std::uint8_t lon_field,
+                                                  const std::string& what) {
+  auto lat = m.integer(lat_field), lon = m.integer(lon_field);
   if (!lat || !lon) {
-    warnings_.add("fit-course-point", at(m.offset), "course point without a position dropped");
-    return;
+    warnings_.add("fit-" + what, at(m.offset), what + " without a position dropped");
+    return std::nullopt;
   }
   Waypoint w;
   w.point.lat = static_cast<double>(*lat) * kDegreesPerSemicircle;
   w.point.lon = static_cast<double>(*lon) * kDegreesPerSemicircle;
   if (!valid_coordinates(w.point.lat, w.point.lon)) {
-    warnings_.add("fit-course-point", at(m.offset), "course point with a position out of range dropped");
-    return;
+    warnings_.add("fit-" + what, at(m.offset), what + " with a position out of range dropped");
+    return std::nullopt;
   }
-  w.name = m.text(course_point::kName);
-  if (auto type = m.integer(course_point::kType)) w.symbol = course_point_type_name(static_cast<std::uint64_t>(*type));
+  return w;
+}
+
+void TrackBuilder::add_course_point(const Message& m) {
+  std::optional<Waypoint> w = waypoint_at(m, course_point::kPositionLat, course_point::kPositionLong, "course point");
+  if (!w) return;
+  w->name = m.text(course_point::kName);
+  if (auto type = m.integer(course_point::kType)) w->symbol = course_point_type_name(static_cast<std::uint64_t>(*type));
   auto time = time_field(m, course_point::kTimestamp);
   if (time && *time < kMinAbsoluteTime) saw_relative_time_ = true;
-  course_points_.emplace_back(std::move(w), time);
+  course_points_.emplace_back(std::move(*w), time);
+}
+
+// A saved place of a Locations file: a waypoint with its name, description and altitude. Its
+// timestamp is when it was saved, not when anyone was there: not kept (gpsbabel agrees).
+void TrackBuilder::add_location(const Message& m) {
+  std::optional<Waypoint> w = waypoint_at(m, location::kPositionLat, location::kPositionLong, "location");
+  if (!w) return;
+  if (auto ele = scaled(m, location::kAltitude, record::kAltitudeScale, record::kAltitudeOffset)) w->point.ele = *ele;
+  w->name = m.text(location::kName);
+  w->description = m.text(location::kDescription);
+  locations_.push_back(std::move(*w));
 }
 
 void TrackBuilder::add_file_id(const Message& m) {
@@ -204,6 +227,7 @@ void TrackBuilder::finish(const DecodeStats& stats) {
     if (time) w.point.time = unix_time(*time);
     file_.waypoints.push_back(std::move(w));
   }
+  for (Waypoint& w : locations_) file_.waypoints.push_back(std::move(w));
   auto& fields = file_.metadata.fields;
   fields.emplace_back("laps", std::to_string(laps_));
   fields.emplace_back("records_without_position", std::to_string(records_without_position_));

@@ -61,7 +61,10 @@ class TrackBuilder {
   };
 
   void add_record(const Message& m);
+  std::optional<Waypoint> waypoint_at(const Message& m, std::uint8_t lat_field, std::uint8_t lon_field,
+                                      const std::string& what);
   void add_course_point(const Message& m);
+  void add_location(const Message& m);
   void add_file_id(const Message& m);
   void add_event(const Message& m);
   // FIT time -> seconds since the Unix epoch, with the device-relative offset applied.
@@ -74,6 +77,7 @@ class TrackBuilder {
   std::vector<Point> points_;
   std::vector<Session> sessions_;
   std::vector<std::pair<Waypoint, std::optional<std::uint32_t>>> course_points_;
+  std::vector<Waypoint> locations_;  // saved places: waypoints after the course points
   std::string course_name_, sport_from_sport_message_;
   std::optional<std::uint32_t> time_created_;
   std::optional<std::int64_t> correlation_offset_, utc_offset_;

@@ -7,7 +7,9 @@
 //     gx:MultiTrack      -> a segment per gx:Track (its altitudeMode applies to those without one)
 //     MultiGeometry      -> the geometries inside it, so one Track holds all the placemark's lines
 //     Point              -> a Waypoint; the placemark's TimeStamp/when is its time
-//     Polygon, LinearRing, Model, overlays: areas and pictures, not tracks; ignored.
+//     Polygon            -> an area, not a way travelled: skipped with a counted warning (as
+//                           the GeoJSON reader does; gpsbabel reads its ring as a track)
+//     Model, overlays    -> pictures, not tracks; ignored.
 //   ExtendedData/Data name="type" of a placemark (Google My Tracks' activity) -> Track.type.
 //   The first Document or Folder under <kml>: name and description -> the file's metadata.
 //   Folders and Documents nest freely; NetworkLinks are not followed (a warning says so).
@@ -54,7 +56,8 @@ enum class Tag : unsigned char {
   SimpleArrayData,
   Value,  // gx:SimpleArrayData/gx:value and ExtendedData/Data/value
   Data,
-  NetworkLink
+  NetworkLink,
+  Polygon
 };
 
 Tag tag_of(std::string_view n) {
@@ -78,6 +81,7 @@ Tag tag_of(std::string_view n) {
       {"value", Tag::Value},
       {"Data", Tag::Data},
       {"NetworkLink", Tag::NetworkLink},
+      {"Polygon", Tag::Polygon},
   };
   for (const auto& [name, tag] : kTags)
     if (name == n) return tag;
@@ -172,6 +176,9 @@ class KmlHandler final : public XmlHandler {
       }
       case Tag::NetworkLink:
         warnings_.add("networklink", position(), "<NetworkLink> not followed: the files it links to are not read");
+        break;
+      case Tag::Polygon:
+        warnings_.add("polygon", position(), "a <Polygon> skipped (lines and points are read; areas are not)");
         break;
       default:
         break;

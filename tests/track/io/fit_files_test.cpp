@@ -103,6 +103,27 @@ TEST(FitFiles, DeveloperFieldsAreCounted) {
   EXPECT_NEAR(hi, 109, 1.0);
 }
 
+// A Locations file (Garmin's saved places): each location message is a waypoint, as gpsbabel's
+// own expected output for the file has them (corpus/gpx/gpsbabel_track_fitlocations-sample.gpx).
+TEST(FitFiles, SavedLocationsAreWaypoints) {
+  TRAILRAY_REQUIRE_DATA(path, "corpus/fit/gpsbabel_track_fitlocations-sample.fit");
+  track::ReadResult r = track::load_track_file(path.string());
+  ASSERT_TRUE(r.ok()) << r.error->to_string();
+  EXPECT_TRUE(r.file.tracks.empty());
+  ASSERT_EQ(r.file.waypoints.size(), 2u);
+  const track::Waypoint &a = r.file.waypoints[0], &b = r.file.waypoints[1];
+  EXPECT_EQ(a.name, "Posizione 008");
+  EXPECT_NEAR(a.point.lat, 52.178867133, 1e-8);
+  EXPECT_NEAR(a.point.lon, 5.179891856, 1e-8);
+  EXPECT_FALSE(a.point.has_ele());
+  EXPECT_FALSE(a.point.has_time());  // when it was saved is not when anyone was there
+  EXPECT_EQ(b.name, "Via Sebastiano ");
+  EXPECT_EQ(b.description, "Some random position in the centre of a small tow");
+  EXPECT_NEAR(b.point.lat, 40.321111679, 1e-8);
+  EXPECT_NEAR(b.point.lon, 9.332499504, 1e-8);
+  EXPECT_NEAR(b.point.ele, 531.2, 1e-9);
+}
+
 TEST(FitFiles, CorosMisalignedFieldsWarnAndTheRestReads) {
   TRAILRAY_REQUIRE_DATA(path, "fit/fitparse_coros-pace-2-cycling-misaligned-fields.fit");
   track::ReadResult r = track::load_track_file(path.string());

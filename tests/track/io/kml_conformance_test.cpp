@@ -8,8 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "peer_tool.hpp"
 #include "test_support.hpp"
 #include "track/io/load.hpp"
 #include "track/io/parse_util.hpp"
@@ -31,20 +30,8 @@ namespace {
 using Position = std::array<double, 2>;  // lon, lat
 using Line = std::vector<Position>;
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-bool run(const std::string& command, std::string& out) {
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return false;
-  char buf[65536];
-  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = pclose(pipe);
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
+using trailray::test::run_command;
+using trailray::test::shell_quote;
 
 Position position(const json& j) { return {j[0].get<double>(), j[1].get<double>()}; }
 
@@ -72,10 +59,10 @@ TEST(KmlConformanceOgr, PositionsMatchGdalOnEveryKmlAndKmz) {
   ASSERT_GE(files.size(), 6u);
 
   std::string command =
-      "/usr/bin/python3 " + quote(std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/ogr_kml_coordinates.py");
-  for (const auto& f : files) command += " " + quote(f);
+      "/usr/bin/python3 " + shell_quote(std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/ogr_kml_coordinates.py");
+  for (const auto& f : files) command += " " + shell_quote(f);
   std::string out;
-  ASSERT_TRUE(run(command + " 2>/dev/null", out)) << "the OGR script failed (is python3-gdal installed? run "
+  ASSERT_TRUE(run_command(command + " 2>/dev/null", out)) << "the OGR script failed (is python3-gdal installed? run "
                                                      "scripts/setup.sh)";
   std::istringstream lines(out);
   int compared = 0;
@@ -146,7 +133,7 @@ TEST(KmlConformanceGpsbabel, TrackPointsTimesAndWaypointsMatchOnEveryKml) {
     if (e.path().extension() != ".kml") continue;
     const std::string file = e.path().string();
     std::string gpx;
-    ASSERT_TRUE(run("gpsbabel -t -w -i kml -f " + quote(file) + " -o gpx -F - 2>/dev/null", gpx))
+    ASSERT_TRUE(run_command("gpsbabel -t -w -i kml -f " + shell_quote(file) + " -o gpx -F - 2>/dev/null", gpx))
         << file << ": gpsbabel failed (is it installed? run scripts/setup.sh)";
     const ReadResult r = load_track_file(file);
     ASSERT_TRUE(r.ok()) << r.error->to_string();

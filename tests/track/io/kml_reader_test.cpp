@@ -146,6 +146,10 @@ TEST(KmlReader, MultiGeometryLinesAreSegmentsAndItsPointsWaypoints) {
   EXPECT_EQ(r.file.waypoints[0].name, "Both");
   EXPECT_EQ(r.file.waypoints[0].description, "d");
   EXPECT_DOUBLE_EQ(r.file.waypoints[0].point.lon, 8.15);
+  // The area is left out saying so, with where it is (as the GeoJSON reader does).
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].message.find("<Polygon> skipped"), std::string::npos) << r.warnings[0].message;
+  EXPECT_EQ(r.warnings[0].position.line, 3 + 5);  // kml() adds three lines before the placemark
 }
 
 TEST(KmlReader, NestedFoldersAndDocumentsAreReadInOrder) {
