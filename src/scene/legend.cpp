@@ -283,12 +283,24 @@ LegendLayout draw_track_key(RgbaImage& image, TextRasterizer& text, const std::v
     const glm::vec3 color = glm::round(glm::clamp(safe, 0.0f, 1.0f) * 255.0f);
     const PixelRect swatch{left, baseline - scaled(f, 0.32f, 1) - g.swatch_thickness / 2, g.swatch_width,
                            g.swatch_thickness};
-    fill_rounded_rect(image, swatch, g.swatch_thickness / 2, glm::u8vec4(glm::u8vec3(color), 255));
+    const glm::u8vec4 rgba(glm::u8vec3(color), 255);
+    if (entries[static_cast<std::size_t>(row)].dashed) {
+      for (const auto& [start, length] : swatch_dashes(swatch.width))
+        fill_rect(image, {swatch.x + start, swatch.y, length, swatch.height}, rgba);
+    } else {
+      fill_rounded_rect(image, swatch, g.swatch_thickness / 2, rgba);
+    }
     layout.swatches.push_back(swatch);
     layout.text_boxes.push_back(text.draw(image, g.names[static_cast<std::size_t>(row)],
                                           left + g.swatch_width + g.swatch_gap, baseline, name_style));
   }
   return layout;
+}
+
+std::vector<std::pair<int, int>> swatch_dashes(int width) {
+  // dash gap dash gap dash, the gaps half a dash: 4 + 2 + 4 + 2 + 4 parts.
+  const auto at = [width](int part) { return width * part / 16; };
+  return {{at(0), at(4) - at(0)}, {at(6), at(10) - at(6)}, {at(12), width - at(12)}};
 }
 
 }  // namespace trailray::scene

@@ -44,7 +44,13 @@ struct ColorLegend {
 struct TrackKeyEntry {
   std::string name;      // UTF-8; cut with "…" past kMaxTrackNameCodePoints or the image's width
   glm::vec3 color_srgb;  // the track's solid colour, sRGB 0..1
+  // A planned route: its swatch is dashed, as the route is drawn (rather than a " (route)"
+  // after its name, which cut long names such as a score's).
+  bool dashed = false;
 };
+
+// The dashes of a dashed swatch `width` long: {start, length} pairs, three dashes with two gaps.
+std::vector<std::pair<int, int>> swatch_dashes(int width);
 
 inline constexpr std::size_t kMaxTrackKeyRows = 12;  // a longer key ends in a "+N more" row
 inline constexpr std::size_t kMaxTrackNameCodePoints = 40;

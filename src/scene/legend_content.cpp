@@ -54,7 +54,7 @@ std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet
     return {{"gliding", kCategoryColorSrgb}, {"ground, gaps", kMissingValueColorSrgb}};
   if (style.color_by != track::ColorMetric::solid) return key;
   for (const Track& t : tracks.tracks())
-    if (t.visible) key.push_back({t.is_route ? t.name + " (route)" : t.name, t.color_srgb});
+    if (t.visible) key.push_back({t.name, t.color_srgb, t.is_route});
   if (key.size() < 2) key.clear();
   return key;
 }

@@ -248,6 +248,32 @@ TEST(TrackKey, OneSwatchOfEachColourBesideEachName) {
   EXPECT_LT(layout.swatches[0].y, layout.swatches[1].y);  // in the given order, top to bottom
 }
 
+// A route's swatch is dashed, as the route is drawn: its colour along the swatch's middle row
+// stops twice (two gaps), a track's does not; the name is whole, with nothing added.
+TEST(TrackKey, ARoutesSwatchIsDashed) {
+  TextRasterizer text;
+  RgbaImage image = filled(1280, 720, kSnow);
+  const glm::vec3 red{0.9f, 0.1f, 0.1f}, blue{0.1f, 0.45f, 0.95f};
+  const LegendLayout layout = draw_track_key(image, text, {{"Flight", red, false}, {"Planned", blue, true}});
+  ASSERT_EQ(layout.swatches.size(), 2u);
+  const auto runs = [&](std::size_t i, glm::vec3 c) {
+    const glm::ivec3 color = glm::ivec3(glm::round(c * 255.0f));
+    const PixelRect& s = layout.swatches[i];
+    const int y = s.y + s.height / 2;
+    int count = 0;
+    bool in = false;
+    for (int x = s.x - 1; x <= s.right() + 1; ++x) {
+      const bool now = rgb(image, x, y) == color;
+      count += now && !in;
+      in = now;
+    }
+    return count;
+  };
+  EXPECT_EQ(runs(0, red), 1);
+  EXPECT_EQ(runs(1, blue), 3);
+  EXPECT_EQ(swatch_dashes(32), (std::vector<std::pair<int, int>>{{0, 8}, {12, 8}, {24, 8}}));
+}
+
 TEST(TrackKey, NonAsciiNamesDrawTheirLetters) {
   TextRasterizer text;
   RgbaImage with = filled(640, 360, kForest), without = filled(640, 360, kForest);

@@ -180,14 +180,16 @@ TEST(RouteBuilding, RoutesAreMarkedSolidInTheRouteColourWithDistancesAlong) {
   // --color once per recorded track: the route is not counted.
   style.colors = {{1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
   EXPECT_THROW(build_tracks({loaded}, style, {}, diagnostics), std::runtime_error);
-  // The key names it a route.
+  // The key shows it as a route: dashed, its name whole.
   TrackSet set;
   style.colors.clear();
   style.color_by = track::ColorMetric::solid;
   for (Track& t : build_tracks({loaded}, style, {}, diagnostics)) set.add(std::move(t));
   const auto key = track_key_for(style, set);
   ASSERT_EQ(key.size(), 2u);
-  EXPECT_EQ(key[1].name, "plan (route)");
+  EXPECT_EQ(key[1].name, "plan");
+  EXPECT_TRUE(key[1].dashed);
+  EXPECT_FALSE(key[0].dashed);
 }
 
 TEST(RouteBuilding, RoutesAreNotSmoothedTheirCornersStayWhereThePlanPutsThem) {

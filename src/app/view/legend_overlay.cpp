@@ -166,8 +166,15 @@ void draw_legend_window(const char* name, float raise, const std::optional<scene
     for (std::size_t i = 0; i < l.listed; ++i) {
       const scene::TrackKeyEntry& entry = key[i];
       const float mid = y + 0.5f * line;
-      draw->AddLine(ImVec2(corner.x + kPadding, mid), ImVec2(corner.x + kPadding + l.swatch, mid),
-                    to_imgui(entry.color_srgb), 0.35f * line);
+      const float x0 = corner.x + kPadding;
+      if (entry.dashed) {  // a route, dashed as it is drawn
+        const int width = static_cast<int>(std::lround(l.swatch));
+        for (const auto& [start, length] : scene::swatch_dashes(width))
+          draw->AddLine(ImVec2(x0 + static_cast<float>(start), mid), ImVec2(x0 + static_cast<float>(start + length), mid),
+                        to_imgui(entry.color_srgb), 0.35f * line);
+      } else {
+        draw->AddLine(ImVec2(x0, mid), ImVec2(x0 + l.swatch, mid), to_imgui(entry.color_srgb), 0.35f * line);
+      }
       draw->AddText(ImVec2(corner.x + 2.0f * kPadding + l.swatch, y), kText, entry.name.c_str());
       y += l.key_row;
     }
