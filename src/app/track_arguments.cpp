@@ -13,7 +13,7 @@ namespace {
 
 constexpr const char* kTrackExtensions = ".gpx .igc .tcx .fit .kml .kmz .geojson .json, also with .gz";
 
-bool has_glob_characters(const std::string& s) { return s.find_first_of("*?[") != std::string::npos; }
+bool has_glob_characters(const std::string& s) { return s.find_first_of("*?[\\") != std::string::npos; }
 
 // `[...]` at pattern[p] (p at '['): whether `c` is in the set; `end` gets the index past ']'.
 // false with end = npos when the bracket is not closed (then '[' is an ordinary character).
@@ -70,6 +70,18 @@ std::vector<std::string> folder_track_files(const std::string& folder) {
   return out;
 }
 
+// `base` and every folder below it (not hidden ones, nor their insides), the way `**` matches
+// them; symbolic links to folders are not followed (a link to a parent would never end).
+void add_folder_tree(const std::string& base, std::vector<std::string>& out) {
+  out.push_back(base);
+  std::error_code ec;
+  if (!fs::is_directory(base.empty() ? fs::path(".") : fs::path(base), ec)) return;
+  for (const std::string& name : sorted_listing(base, true)) {
+    const std::string path = joined(base, name);
+    if (name.front() != '.' && fs::is_directory(fs::symlink_status(path, ec))) add_folder_tree(path, out);
+  }
+}
+
 // Every existing path matching the pattern, one component after the other, sorted by name.
 std::vector<std::string> glob_paths(const std::string& pattern) {
   std::vector<std::string> found{""};
@@ -86,6 +98,10 @@ std::vector<std::string> glob_paths(const std::string& pattern) {
     if (part.empty()) continue;  // "a//b", a trailing '/'
     std::vector<std::string> next;
     for (const std::string& base : found) {
+      if (part == "**") {  // any number of folders, none included
+        add_folder_tree(base, next);
+        continue;
+      }
       if (!has_glob_characters(part)) {
         std::error_code ec;
         const std::string path = joined(base, part);
@@ -100,6 +116,7 @@ std::vector<std::string> glob_paths(const std::string& pattern) {
     found = std::move(next);
   }
   std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end()), found.end());  // "**/**" reaches a folder twice
   return found;
 }
 
@@ -109,7 +126,7 @@ void add_pattern(const std::string& pattern, std::vector<std::string>& out) {
   const std::size_t before = out.size();
   for (const std::string& path : matches) {
     std::error_code ec;
-    if (fs::is_directory(path, ec)) {
+    if (path.empty() || fs::is_directory(path, ec)) {  // "": the current folder, as `**` reaches it
       for (std::string& file : folder_track_files(path)) out.push_back(std::move(file));
     } else if (has_track_extension(fs::path(path).filename().string())) {
       out.push_back(path);
@@ -142,7 +159,13 @@ bool glob_name_matches(const std::string& pattern, const std::string& name) {
       star_n = n;
       continue;
     }
-    if (p < pattern.size() && pattern[p] == '[') {
+    if (p + 1 < pattern.size() && pattern[p] == '\\') {  // an escaped character is itself
+      if (pattern[p + 1] == name[n]) {
+        p += 2;
+        ++n;
+        continue;
+      }
+    } else if (p < pattern.size() && pattern[p] == '[') {
       if (set_matches(pattern, p, name[n], set_end)) {
         p = set_end;
         ++n;

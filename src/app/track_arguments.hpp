@@ -24,15 +24,17 @@ bool has_track_extension(const std::string& name);
 // - itself when it is `-` (standard input) or an existing file, whatever characters it holds;
 // - for an existing folder: its track files (has_track_extension; not hidden: no leading dot),
 //   not those of its subfolders, sorted by name (byte order);
-// - for a pattern (`*`, `?`, `[...]` in a name that does not exist; `*` and `?` never match `/`
-//   nor a leading dot): the matching track files and the track files of the matching folders,
-//   sorted by name (byte order);
+// - for a pattern (`*`, `?`, `[...]`, `\` in a name that does not exist; `*` and `?` never match
+//   `/` nor a leading dot; `**` as a whole component matches any number of folders, none
+//   included, not hidden ones; `\*` is a literal `*`): the matching track files and the track
+//   files of the matching folders, sorted by name (byte order);
 // - anything else itself (the reader then says it cannot be opened).
 // Throws TrackArgumentError naming the pattern or the folder that gives no track file.
 std::vector<std::string> expand_track_arguments(const std::vector<std::string>& arguments);
 
 // The glob match of one name (no `/`): `*` any run, `?` any one character, `[abc]` `[a-z]` `[!a]`
-// `[^a]` a set; a leading dot only matched by a leading dot. Exposed for its tests.
+// `[^a]` a set, `\c` the character c itself; a leading dot only matched by a leading dot.
+// Exposed for its tests.
 bool glob_name_matches(const std::string& pattern, const std::string& name);
 
 }  // namespace trailray::app

@@ -87,6 +87,36 @@ TEST(TrackArguments, PatternMatchesFilesAndFoldersSorted) {
             (Paths{f.at("2024/a.gpx"), f.at("2024/a.igc"), f.at("2024/b.igc")}));
 }
 
+TEST(TrackArguments, DoubleStarReachesEveryFolderBelow) {
+  Folder f;
+  f.add("a.igc");
+  f.add("2024/b.igc");
+  f.add("2024/alps/c.igc");
+  f.add("2024/alps/c.gpx");
+  f.add("2024/.cache/d.igc");  // hidden folders are not entered
+  f.add(".e.igc");
+  EXPECT_EQ(expand_track_arguments({f.root + "/**/*.igc"}),
+            (Paths{f.at("2024/alps/c.igc"), f.at("2024/b.igc"), f.at("a.igc")}));
+  // As the last component: the track files of every folder it reaches.
+  EXPECT_EQ(expand_track_arguments({f.root + "/**"}),
+            (Paths{f.at("a.igc"), f.at("2024/b.igc"), f.at("2024/alps/c.gpx"), f.at("2024/alps/c.igc")}));
+  EXPECT_EQ(expand_track_arguments({f.root + "/2024/**/c.*"}), (Paths{f.at("2024/alps/c.gpx"), f.at("2024/alps/c.igc")}));
+  // Twice: each file once.
+  EXPECT_EQ(expand_track_arguments({f.root + "/**/**/b.igc"}), (Paths{f.at("2024/b.igc")}));
+}
+
+TEST(TrackArguments, ABackslashMakesAPatternCharacterLiteral) {
+  Folder f;
+  f.add("a*b.gpx");
+  f.add("aXb.gpx");
+  EXPECT_EQ(expand_track_arguments({f.root + "/a\\*b.gp?"}), (Paths{f.at("a*b.gpx")}));
+  EXPECT_EQ(expand_track_arguments({f.root + "/a*b.gp?"}), (Paths{f.at("a*b.gpx"), f.at("aXb.gpx")}));
+  EXPECT_TRUE(glob_name_matches("a\\*b", "a*b"));
+  EXPECT_FALSE(glob_name_matches("a\\*b", "aXb"));
+  EXPECT_TRUE(glob_name_matches("\\[x]", "[x]"));
+  EXPECT_FALSE(glob_name_matches("\\[x]", "x"));
+}
+
 TEST(TrackArguments, ArgumentsKeepTheirOrder) {
   Folder f;
   const std::string z = f.add("z.gpx");
