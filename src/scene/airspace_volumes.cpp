@@ -6,6 +6,8 @@
 #include <cmath>
 #include <utility>
 
+#include "geo/longitude.hpp"
+
 namespace trailray::scene {
 namespace {
 
@@ -136,15 +138,28 @@ geo::LatLonBounds grown(const geo::LatLonBounds& b, double margin_m) {
   return {b.min_lat - dlat, b.min_lon - dlon, b.max_lat + dlat, b.max_lon + dlon};
 }
 
+// A box a whole turn away (`turns` of 360 degrees east): an airspace across the antimeridian
+// has its box past +-180 (its ring's longitudes are continuous).
+geo::LatLonBounds turned(geo::LatLonBounds b, int turns) {
+  b.min_lon += 360.0 * turns;
+  b.max_lon += 360.0 * turns;
+  return b;
+}
+
 bool overlaps(const geo::LatLonBounds& a, const geo::LatLonBounds& b) {
-  return a.min_lat <= b.max_lat && b.min_lat <= a.max_lat && a.min_lon <= b.max_lon && b.min_lon <= a.max_lon;
+  for (const int turns : {0, -1, 1}) {
+    const geo::LatLonBounds c = turned(b, turns);
+    if (a.min_lat <= c.max_lat && c.min_lat <= a.max_lat && a.min_lon <= c.max_lon && c.min_lon <= a.max_lon)
+      return true;
+  }
+  return false;
 }
 
 // Metres from the region's centre to the nearest point of a box (0 inside).
 double distance_to_box(const geo::LatLon& centre, const geo::LatLonBounds& box) {
-  const geo::LatLon nearest{std::clamp(centre.lat, box.min_lat, box.max_lat),
-                            std::clamp(centre.lon, box.min_lon, box.max_lon)};
-  return glm::length(LocalPlane{centre}(nearest));
+  const double lon = geo::longitude_near(centre.lon, box.min_lon, box.max_lon);
+  const geo::LatLon nearest{std::clamp(centre.lat, box.min_lat, box.max_lat), std::clamp(lon, box.min_lon, box.max_lon)};
+  return glm::length(LocalPlane{{centre.lat, lon}}(nearest));
 }
 
 // The drawn limit; `floor_m` (the floor's drawn height) bounds capped ceilings from below.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geo/longitude.hpp"
 #include "terrain/height_sampler.hpp"
 
 namespace trailray::scene {
@@ -71,7 +72,8 @@ void place_volumes_on_ground(VolumeSet& set, terrain::HeightSource* heights) {
   for (Volume& v : set.volumes)
     if (v.ground_m.size() != v.boundary.size()) {
       todo.push_back(&v);
-      points.insert(points.end(), v.boundary.begin(), v.boundary.end());
+      // Sampled at plain longitudes: a boundary across the antimeridian runs past +-180.
+      for (const geo::LatLon& p : v.boundary) points.push_back({p.lat, geo::wrapped_longitude(p.lon)});
     }
   if (todo.empty()) return;
   std::vector<double> ground(points.size(), std::numeric_limits<double>::quiet_NaN());

@@ -198,6 +198,28 @@ TEST(AirspaceVolumes, CulledAroundTheTracksLevelledAndCapped) {
   EXPECT_EQ(airspace_volumes(file, "c.txt", options).volumes.size(), 3u);
 }
 
+// An airspace across the antimeridian (its ring past 180 degrees) is drawn for tracks on
+// either side of the line, and not for tracks half a world away.
+TEST(AirspaceVolumes, AcrossTheAntimeridianKeptForTracksOnEitherSide) {
+  air::AirspaceFile file;
+  file.airspaces.push_back(airspace("D", "DATELINE", {{-40.0, 179.5}, {-40.0, 180.5}, {-41.0, 180.5}, {-41.0, 179.5}}));
+  AirspaceDrawOptions options;
+  options.margin_m = 1000.0;
+  for (const double lon : {179.8, -179.8}) {
+    geo::LatLonBounds tracks;
+    tracks.add(-40.6, lon - 0.01);
+    tracks.add(-40.4, lon + 0.01);
+    options.region = tracks;
+    const AirspaceVolumes built = airspace_volumes(file, "d.txt", options);
+    EXPECT_EQ(built.volumes.size(), 1u) << lon;
+  }
+  geo::LatLonBounds far;
+  far.add(-40.6, 0.0);
+  far.add(-40.4, 0.1);
+  options.region = far;
+  EXPECT_TRUE(airspace_volumes(file, "d.txt", options).volumes.empty());
+}
+
 TEST(AirspaceVolumes, RingsSimplifiedWithinTheTolerance) {
   // A square whose edges carry 50 points each, a few metres off the straight line.
   std::vector<geo::LatLon> ring;

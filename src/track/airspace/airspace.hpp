@@ -33,7 +33,8 @@ struct Airspace {
   AltitudeLimit floor;         // AL
   AltitudeLimit ceiling;       // AH
   // Closed ring, first point not repeated. Two points are a line (cables in Skytraxx files,
-  // floor = ceiling): drawn, never entered.
+  // floor = ceiling): drawn, never entered. Longitudes are continuous along the ring
+  // (geo::unwrap_longitudes): one crossing the antimeridian runs past +-180 degrees.
   std::vector<geo::LatLon> boundary;
   std::int64_t line = 0;  // the line of its AC record
 };

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geo/geodesic.hpp"
+#include "geo/longitude.hpp"
 #include "geo/wgs84.hpp"
 
 namespace trailray::track::airspace {
@@ -20,7 +21,7 @@ std::int64_t cell_of(double deg) { return static_cast<std::int64_t>(std::floor(d
 AirspaceIndex::AirspaceIndex(const AirspaceFile& file) : file_(file) {
   boxes_.reserve(file.airspaces.size());
   for (std::uint32_t i = 0; i < file.airspaces.size(); ++i) {
-    BoundingBox b{90, -90, 180, -180};
+    BoundingBox b{90, -90, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
     for (const auto& p : file.airspaces[i].boundary) {
       b.lat_min = std::min(b.lat_min, p.lat);
       b.lat_max = std::max(b.lat_max, p.lat);
@@ -42,18 +43,27 @@ AirspaceIndex::AirspaceIndex(const AirspaceFile& file) : file_(file) {
 const std::vector<std::uint32_t>& AirspaceIndex::candidates(double lat, double lon) const {
   scratch_.clear();
   if (!(std::abs(lat) <= 90.0) || !(std::abs(lon) <= 180.0)) return scratch_;
-  const auto it = cells_.find(cell_key(cell_of(lon), cell_of(lat)));
-  if (it != cells_.end())
-    for (std::uint32_t i : it->second)
-      if (boxes_[i].contains(lat, lon)) scratch_.push_back(i);
+  // A box across the antimeridian lies past +-180: the point a turn away may fall in it.
+  for (const double x : {lon, lon - 360.0, lon + 360.0}) {
+    const auto it = cells_.find(cell_key(cell_of(x), cell_of(lat)));
+    if (it != cells_.end())
+      for (std::uint32_t i : it->second)
+        if (boxes_[i].contains(lat, x)) scratch_.push_back(i);
+  }
   for (std::uint32_t i : wide_)
-    if (boxes_[i].contains(lat, lon)) scratch_.push_back(i);
+    for (const double x : {lon, lon - 360.0, lon + 360.0})
+      if (boxes_[i].contains(lat, x)) {
+        scratch_.push_back(i);
+        break;
+      }
   return scratch_;
 }
 
 bool AirspaceIndex::contains(std::size_t airspace, double lat, double lon) const {
   const auto& ring = file_.airspaces[airspace].boundary;
   if (ring.size() < 3) return false;  // a line (a cable) has no inside
+  lon = geo::longitude_near(lon, boxes_[airspace].lon_min, boxes_[airspace].lon_max);
+  if (!boxes_[airspace].contains(lat, lon)) return false;
   bool inside = false;
   for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
     const geo::LatLon& a = ring[i];
@@ -72,6 +82,7 @@ double AirspaceIndex::distance_to_boundary_m(std::size_t airspace, double lat, d
   // plane's scale error (growing with distance) does not enter the result.
   const auto& ring = file_.airspaces[airspace].boundary;
   if (ring.empty()) return std::numeric_limits<double>::infinity();
+  lon = geo::longitude_near(lon, boxes_[airspace].lon_min, boxes_[airspace].lon_max);
   const double phi = lat * geo::wgs84::kRadPerDeg;
   const double c = std::cos(phi);
   const geo::wgs84::RadiiSquared r = geo::wgs84::radii_squared_from_sin2(1.0 - c * c);

@@ -4,8 +4,10 @@
 // country's file (several hundred airspaces) against a 10-hour 1 Hz flight takes milliseconds.
 //
 // Geometry: a boundary's edges are straight lines in latitude/longitude (OpenAir gives no other
-// rule; arcs are already points at most 1 m from the true arc). The antimeridian is not handled
-// (no airspace file crosses it). Distances to the boundary are geodesic (see depth_inside_m).
+// rule; arcs are already points at most 1 m from the true arc). A boundary across the
+// antimeridian has continuous longitudes (past +-180, see airspace.hpp): a point is compared with
+// it a whole turn away where that brings it into the box. Distances to the boundary are geodesic
+// (see depth_inside_m).
 
 #include <cstdint>
 #include <unordered_map>
@@ -35,7 +37,7 @@ class AirspaceIndex {
   // not keep it across calls.
   const std::vector<std::uint32_t>& candidates(double lat, double lon) const;
 
-  // Whether (lat, lon) lies inside the airspace's boundary (even-odd rule).
+  // Whether (lat, lon) lies inside the airspace's boundary (even-odd rule; any longitude).
   bool contains(std::size_t airspace, double lat, double lon) const;
 
   // Geodesic distance in metres from (lat, lon) to the nearest point of the boundary.

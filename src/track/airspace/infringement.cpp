@@ -5,6 +5,8 @@
 #include <limits>
 #include <map>
 
+#include "geo/wgs84.hpp"
+
 namespace trailray::track::airspace {
 namespace {
 
@@ -56,7 +58,7 @@ PointState evaluate(const AirspaceIndex& index, std::size_t a, const CheckPoint&
   // NaN altitudes (a fix without any) compare false: such a fix is never inside.
   const bool vertical = s.floor.above_m >= 0.0 && s.ceiling.above_m <= 0.0;
   if (!vertical) return s;
-  s.inside = index.box(a).contains(p.lat, p.lon) && index.contains(a, p.lat, p.lon);
+  s.inside = index.contains(a, p.lat, p.lon);
   if (s.floor.known) s.above_floor = s.floor.above_m;
   if (s.ceiling.known) s.below_ceiling = -s.ceiling.above_m;
   return s;
@@ -64,8 +66,11 @@ PointState evaluate(const AirspaceIndex& index, std::size_t a, const CheckPoint&
 
 CheckPoint lerp(const CheckPoint& a, const CheckPoint& b, double t) {
   auto mix = [t](double x, double y) { return x + (y - x) * t; };
-  return {mix(a.lat, b.lat),     mix(a.lon, b.lon),     mix(a.time, b.time),
-          mix(a.msl_m, b.msl_m), mix(a.std_m, b.std_m), mix(a.ground_m, b.ground_m)};
+  // Longitude the short way round: two fixes either side of the antimeridian are 0.2 degrees
+  // apart, not 359.8.
+  const double lon = a.lon + geo::wgs84::wrap_dlon_deg(b.lon - a.lon) * t;
+  return {mix(a.lat, b.lat),     lon,  mix(a.time, b.time), mix(a.msl_m, b.msl_m), mix(a.std_m, b.std_m),
+          mix(a.ground_m, b.ground_m)};
 }
 
 // The time where the line from `out` (outside) to `in` (inside) enters the airspace.

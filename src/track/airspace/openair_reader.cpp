@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "geo/longitude.hpp"
 #include "geo/utf8.hpp"
 #include "track/airspace/arc_geometry.hpp"
 #include "track/airspace/openair_values.hpp"
@@ -384,6 +385,7 @@ class Parser {
     }
     auto& ring = a.boundary;
     if (ring.size() > 1 && ring.front().lat == ring.back().lat && ring.front().lon == ring.back().lon) ring.pop_back();
+    geo::unwrap_longitudes(ring);  // across the antimeridian: continuous (airspace.hpp)
     const SourcePosition at{a.line, 1, -1};
     const std::string label = a.name.empty() ? "(no name)" : a.name;
     if (!floor_ || !ceiling_)

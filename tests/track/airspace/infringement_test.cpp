@@ -144,3 +144,41 @@ TEST(AirspaceInfringement, GridIndexFindsWhatBruteForceFinds) {
   }
   EXPECT_GT(hits, 1000u);  // the sample does reach into airspaces
 }
+
+// An airspace across the antimeridian (an oceanic area east of New Zealand): its boundary's
+// longitudes are continuous (past 180), points either side of the line are inside, one a
+// turn away is compared a turn away, and a flight eastwards across the line enters it once.
+TEST(AirspaceInfringement, AcrossTheAntimeridian) {
+  const AirspaceFile f = file_of(
+      "AC D\nAN Dateline\nAL GND\nAH FL 100\n"
+      "DP 40:00:00 S 179:30:00 E\nDP 40:00:00 S 179:30:00 W\nDP 41:00:00 S 179:30:00 W\nDP 41:00:00 S 179:30:00 E\n");
+  ASSERT_EQ(f.airspaces.size(), 1u);
+  const auto& ring = f.airspaces[0].boundary;
+  ASSERT_EQ(ring.size(), 4u);
+  for (std::size_t i = 1; i < ring.size(); ++i) EXPECT_LE(std::abs(ring[i].lon - ring[i - 1].lon), 180.0) << i;
+  EXPECT_NEAR(ring[1].lon, 180.5, 1e-9);
+
+  const AirspaceIndex index(f);
+  for (const double lon : {179.9, 180.0, -180.0, -179.9, 180.2 - 360.0}) {
+    EXPECT_EQ(index.candidates(-40.5, lon).size(), 1u) << lon;
+    EXPECT_TRUE(index.contains(0, -40.5, lon)) << lon;
+  }
+  for (const double lon : {179.0, -179.0, 0.0}) {
+    EXPECT_FALSE(index.contains(0, -40.5, lon)) << lon;
+    EXPECT_TRUE(index.candidates(-40.5, lon).empty()) << lon;
+  }
+  // 0.1 degree west of the line the boundary at 179.5 E is 0.4 degree away: about 34 km at 40.5 S.
+  EXPECT_NEAR(index.distance_to_boundary_m(0, -40.5, -179.9), 0.4 * 111320.0 * std::cos(40.5 * M_PI / 180.0), 400.0);
+
+  // Eastwards along 40.5 S from 179 E to 179 W, one fix a second: inside from 179.5 E to 179.5 W.
+  std::vector<CheckPoint> east;
+  for (int i = 0; i <= 2000; ++i) {
+    double lon = 179.0 + 2.0 * i / 2000.0;
+    if (lon > 180.0) lon -= 360.0;
+    east.push_back({-40.5, lon, 1000.0 + i, 1000.0, kNaN, kNaN});
+  }
+  const auto found = find_infringements(index, {east});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NEAR(found[0].entry_time, 1000.0 + 500.0, 1.0);
+  EXPECT_NEAR(found[0].exit_time, 1000.0 + 1500.0, 1.0);
+}
