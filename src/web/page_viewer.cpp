@@ -23,6 +23,7 @@
 #include "terrain/height_encoding.hpp"
 #include "track/io/text_output.hpp"
 #include "ui/framing_room.hpp"
+#include "ui/profile_chart.hpp"
 #include "ui/replay_follow.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/track_picking.hpp"
@@ -185,6 +186,10 @@ void PageViewer::rebuild_tracks() {
   model_.neutral_ground_m = recorded_.lowest_or_sea_level();
   scene::TrackBuildOptions build;
   build.neutral_ground_m = recorded_.lowest_or_sea_level();
+  // As the desktop viewer builds them (app/view/track_loading): each track's summary, which the
+  // Statistics panel shows, and its flights' analysis (the panel's flight lines).
+  build.inspect = true;
+  build.analysis = model_.analysis;
   scene::CollectedDiagnostics diagnostics;
   scene::TrackSet fresh;
   for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics))
@@ -510,6 +515,13 @@ std::string PageViewer::status_json() const {
     hover["lines"] = ui::tooltip_lines(model_.tracks[static_cast<std::size_t>(model_.hover.track)], model_.hover.point);
   }
   j["hover"] = hover;
+  // What the Statistics panel shows for its track, and the profile's range selection (the same
+  // lines the panels draw).
+  nlohmann::json statistics = {{"track", model_.selected_track}, {"lines", nlohmann::json::array()}};
+  if (model_.selected_track >= 0 && model_.selected_track < static_cast<int>(model_.tracks.size()))
+    statistics["lines"] =
+        ui::statistics_lines(model_.tracks[static_cast<std::size_t>(model_.selected_track)].summary.clean);
+  j["statistics"] = statistics;
   j["interface"] = {{"wants_mouse", wants_mouse()}, {"wants_keyboard", wants_keyboard()}};
   j["legend"] = {{"x", legend_.rect.x},
                  {"y", legend_.rect.y},

@@ -7,7 +7,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 
-import { canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor } from './harness.mjs';
+import { canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor, run } from './harness.mjs';
 
 const MAGENTA = [255, 0, 255];
 let browser;
@@ -134,4 +134,38 @@ test('serve --overlay HEATMAP: the page draws the heatmap on the terrain with it
   t.diagnostic(`pixels the heatmap changed: ${changed}`);
   assert.ok(changed > 300, `the heatmap on the ground (${changed} pixels changed)`);
   fs.rmSync(scratch, { recursive: true, force: true });
+});
+
+// The Statistics panel (ui/'s, as the desktop viewer draws it) describes a served flight with the
+// figures `trailray stats --json` gives for the same file: its lines are in the status as the
+// panel draws them.
+test('serve: the Statistics panel says what `trailray stats` says of the served flight', async (t) => {
+  const flights = [path.join(config.sourceDir, 'examples', 'paraglider_flight.igc')];
+  const real = path.join(config.sharedData || '', 'igc', 'goigc_0100_interlaken.igc');
+  if (config.sharedData && fs.existsSync(real)) flights.push(real);
+  else t.diagnostic(`${real} is absent: the example flight only`);
+  for (const flight of flights) {
+    const stats = await run(config.nativeBinary, ['stats', '--json', flight]);
+    assert.equal(stats.code, 0, stats.output);
+    const clean = JSON.parse(stats.output).files[0].tracks[0].clean;
+    const url = await serve(['--terrain', 'none', '--imagery', 'none', flight]);
+    const page = await openPage(browser, url, 1600, 900);
+    await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).tracks.length === 1, { timeout: 60000 });
+    await framesDrawn(page);
+    const lines = (await status(page)).statistics.lines;
+    t.diagnostic(`${path.basename(flight)}: ${lines.join('; ')}`);
+    if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-${path.basename(flight)}.png` });
+    await page.close();
+    const hms = (seconds) => {
+      const s = Math.round(seconds);
+      return `${Math.floor(s / 3600)}:${String(Math.floor(s / 60) % 60).padStart(2, '0')}:${String(s % 60).padStart(2, '0')}`;
+    };
+    assert.equal(lines[0], `points: ${clean.points}, segments: ${clean.segments}`);
+    assert.ok(clean.points > 1000, `a real flight (${clean.points} points)`);
+    assert.equal(lines[1], `distance: ${(clean.distance_2d_m / 1000).toFixed(3)} km`);
+    assert.equal(lines[2], `duration: ${hms(clean.duration_s)}, moving: ${hms(clean.moving_time_s)}`);
+    assert.equal(lines[3], `climb: +${Math.round(clean.elevation_gain_m)} m, descent: -${Math.round(clean.elevation_loss_m)} m`);
+    assert.equal(lines[4], `altitude: ${Math.round(clean.min_elevation_m)} m to ${Math.round(clean.max_elevation_m)} m`);
+    assert.ok(lines.every((l) => !l.includes('\u2014')), `no figure missing: ${lines.join('; ')}`);
+  }
 });
