@@ -1,4 +1,4 @@
-// libFuzzer target: the task readers (XCTrack JSON v1, the XCTSK: QR form, IGC C records) over
+// libFuzzer target: the task readers (XCTrack JSON v1, the XCTSK: QR form, XCSoar .tsk XML, IGC C records) over
 // arbitrary bytes, then the distances of what they read. Contract: a task or an error, never
 // both nor neither; a task has turnpoints with finite coordinates; its distances are finite.
 #include <cmath>

@@ -6,7 +6,7 @@
 # 1. configures build-sanitize if needed (scripts/sanitizer_tree.sh: the clang tree that also
 #    runs the test suite under the sanitizers) and builds the fuzz targets in it -> fuzz_gpx,
 #    fuzz_igc, fuzz_tcx, fuzz_fit, fuzz_kml (KML and KMZ), fuzz_geojson, fuzz_airspace,
-#    fuzz_task (XCTrack tasks, IGC C records), fuzz_heatmap (heatmap descriptions, counts tiles), fuzz_tile,
+#    fuzz_task (XCTrack tasks, XCSoar tasks, IGC C records), fuzz_heatmap (heatmap descriptions, counts tiles), fuzz_tile,
 #    fuzz_terrain_text (config, URL templates, Cache-Control, disk cache entries)
 #    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges, points CSV)
 #    fuzz_film_text (video: --camera-path files, --duration/--speed/--from/--to/--trail)
@@ -109,7 +109,7 @@ fuzz_one() {
   rm -f "$LOGS/failed-$fmt"
   mkdir -p "$CORPUS/$fmt" "$ARTIFACTS/$fmt" "$REGRESSIONS/$fmt"
   [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
-  [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records
+  [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records (XCSoar .tsk: the regressions)
   {
     if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ] || [ "$fmt" = heatmap ]; then
       :  # seeded by its regression inputs (a config, a template, a header, a cache entry)

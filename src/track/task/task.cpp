@@ -43,6 +43,8 @@ const char* format_name(TaskFormat format) {
       return "XCTrack task (QR form, version 2)";
     case TaskFormat::IgcDeclaration:
       return "IGC task declaration (C records)";
+    case TaskFormat::XcsoarTsk:
+      return "XCSoar task (.tsk)";
   }
   return "task";
 }

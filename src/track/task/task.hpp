@@ -21,7 +21,7 @@ enum class SssType { Race, ElapsedTime };
 enum class Direction { Enter, Exit };
 enum class GoalType { Cylinder, Line };
 enum class EarthModel { Wgs84, FaiSphere };
-enum class TaskFormat { XctskJson, XctskQr, IgcDeclaration };
+enum class TaskFormat { XctskJson, XctskQr, IgcDeclaration, XcsoarTsk };
 
 // What the readers use where a format gives no radius (IGC C records, XCTrack waypoint lists):
 // the 400 m cylinder of the FAI Sporting Code (Section 7D) for paragliding and hang-gliding

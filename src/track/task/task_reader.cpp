@@ -35,10 +35,11 @@ TaskReadResult read_task_text(std::string_view text, const std::string& file) {
   std::string_view body = trim(text);
   if (body.starts_with("\xEF\xBB\xBF")) body = trim(body.substr(3));
   if (body.starts_with("{") || body.starts_with("XCTSK:")) return read_xctsk(text, file);
+  if (body.starts_with("<")) return read_xcsoar_task(text, file);  // XML: XCSoar's <Task>
   // An IGC file: records are one letter at the start of a line; C records hold the task.
   if (body.starts_with("A") || body.starts_with("H") || body.starts_with("C")) return read_igc_declaration(text, file);
   TaskReadResult result;
-  result.error = Diagnostic{file, {1, 1, -1}, "not a task: expected an XCTrack task (JSON or XCTSK:) or an IGC file"};
+  result.error = Diagnostic{file, {1, 1, -1}, "not a task: expected an XCTrack task (JSON or XCTSK:), an XCSoar task (.tsk) or an IGC file"};
   return result;
 }
 
