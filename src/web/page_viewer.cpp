@@ -285,6 +285,15 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   // The scene again only when it changed; else the last picture under the new interface.
   if (dirty_ || !target_.show_kept()) draw_scene(width_px, height_px, pixel_ratio);
   imgui_.render();
+  // This frame's interface was drawn with the tile figures of the scene drawn before: when this
+  // frame's scene changed them (tiles came, or the view wants others), the interface is drawn
+  // again with them, so "Loading terrain" goes away once the last tile is in, view moving or not.
+  const terrain::LoadProgress& now = terrain_report_.progress;
+  const terrain::LoadProgress& shown = shown_progress_;
+  if (panels_ && camera_ &&
+      (now.wanted != shown.wanted || now.loaded != shown.loaded || now.no_data != shown.no_data ||
+       now.failed != shown.failed))
+    ui_frames_ = std::max(ui_frames_, 1);
   return true;
 }
 
@@ -353,6 +362,7 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
     const scene::Camera camera = camera_->camera();
     const ui::OverlayState overlay{
         model_, camera, terrain_report_.progress, status_line_, camera_->view().heading_deg, std::nullopt};
+    shown_progress_ = terrain_report_.progress;
     if (ui::draw_overlays(overlay)) camera_->reset_north();
   }
   return edited;
@@ -522,7 +532,15 @@ std::string PageViewer::status_json() const {
     statistics["lines"] =
         ui::statistics_lines(model_.tracks[static_cast<std::size_t>(model_.selected_track)].summary.clean);
   j["statistics"] = statistics;
-  j["interface"] = {{"wants_mouse", wants_mouse()}, {"wants_keyboard", wants_keyboard()}};
+  // The tile figures the interface was last drawn with (its "Loading terrain: N/M tiles" line and
+  // the Tracks panel's "loading terrain...", shown while tiles are pending).
+  j["interface"] = {{"wants_mouse", wants_mouse()},
+                    {"wants_keyboard", wants_keyboard()},
+                    {"tiles_shown",
+                     {{"wanted", shown_progress_.wanted},
+                      {"loaded", shown_progress_.loaded},
+                      {"no_data", shown_progress_.no_data},
+                      {"failed", shown_progress_.failed}}}};
   j["legend"] = {{"x", legend_.rect.x},
                  {"y", legend_.rect.y},
                  {"width", legend_.rgba.empty() ? 0 : legend_.rect.width},

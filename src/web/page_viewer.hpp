@@ -97,6 +97,7 @@ class PageViewer {
   std::unique_ptr<terrain::ImagerySource> imagery_;
   std::unique_ptr<scene::TerrainView> terrain_view_;  // after the sources: goes before them
   scene::TerrainReport terrain_report_;               // of the last frame
+  terrain::LoadProgress shown_progress_;              // what the interface last showed of it
   double since_drawn_s_ = 0.0;
   render::Renderer renderer_;
   render::KeptFrameTarget target_;

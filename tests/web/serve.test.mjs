@@ -7,7 +7,9 @@ import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 
-import { canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor, run } from './harness.mjs';
+import {
+  canvasPixels, config, framesDrawn, launchBrowser, openPage, pixelsOfColor, run, screenshotPixels,
+} from './harness.mjs';
 
 const MAGENTA = [255, 0, 255];
 let browser;
@@ -168,4 +170,46 @@ test('serve: the Statistics panel says what `trailray stats` says of the served 
     assert.equal(lines[4], `altitude: ${Math.round(clean.min_elevation_m)} m to ${Math.round(clean.max_elevation_m)} m`);
     assert.ok(lines.every((l) => !l.includes('\u2014')), `no figure missing: ${lines.join('; ')}`);
   }
+});
+
+// "Loading terrain: N/M tiles" (bottom left) is drawn while tiles are on their way; once every
+// tile the resting view wants is in, it goes away without the view moving (the interface is
+// drawn again with the last figures, not left with those of the frame before).
+test('serve --terrain DEM: once every tile is in and the view rests, "Loading terrain" goes away', async (t) => {
+  const dem = path.join(config.sharedData || '', 'dem', 'interlaken_dhm25_wgs84.tif');
+  const flight = path.join(config.sharedData || '', 'igc', 'goigc_0100_interlaken.igc');
+  if (!config.sharedData || !fs.existsSync(dem) || !fs.existsSync(flight)) {
+    t.skip(`needs ${dem} and ${flight} (../shared/data is absent)`);
+    return;
+  }
+  const url = await serve(['--terrain', dem, '--imagery', 'none', flight]);
+  const page = await openPage(browser, url);
+  const loadingSeen = page.waitForFunction(() => {
+    const s = JSON.parse(window.trailray.api.status()).interface.tiles_shown;
+    return s.wanted > s.loaded + s.no_data + s.failed;
+  }, { timeout: 180000, polling: 50 }).then(() => true, () => false);
+  await page.waitForFunction(() => {
+    const s = JSON.parse(window.trailray.api.status());
+    return s.tracks.length === 1 && s.tiles.wanted > 0 && s.tiles.loaded + s.tiles.no_data + s.tiles.failed === s.tiles.wanted;
+  }, { timeout: 180000, polling: 250 });
+  assert.ok(await loadingSeen, 'the interface said "Loading terrain" while tiles came');
+  // The view rests: nothing moves it, nothing more arrives. Within a second the line is gone.
+  await new Promise((r) => setTimeout(r, 1500));
+  const s = await status(page);
+  const shown = s.interface.tiles_shown;
+  t.diagnostic(`tiles ${JSON.stringify(s.tiles)}; the interface shows ${JSON.stringify(shown)}`);
+  assert.equal(shown.wanted - shown.loaded - shown.no_data - shown.failed, 0,
+    `the interface still says "Loading terrain: ${shown.loaded + shown.no_data + shown.failed}/${shown.wanted} tiles"`);
+  // And the canvas shows no line there: its bottom left is the picture without the interface.
+  const canvas = await canvasPixels(page);
+  const picture = await screenshotPixels(page);
+  let difference = 0, n = 0;
+  for (let y = canvas.height - 30; y < canvas.height; ++y)
+    for (let x = 0; x < 230; ++x, ++n)
+      for (let c = 0; c < 3; ++c) difference += Math.abs(canvas.data[(y * canvas.width + x) * 4 + c] - picture.data[(y * canvas.width + x) * 4 + c]);
+  const mean = difference / n / 3;
+  t.diagnostic(`bottom left, canvas vs the picture without the interface: mean difference ${mean.toFixed(2)}`);
+  if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-rest.png` });
+  assert.ok(mean < 1, `no text drawn at the bottom left (mean difference ${mean.toFixed(2)})`);
+  await page.close();
 });
