@@ -2,6 +2,7 @@
 
 #include <emscripten/fetch.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace trailray::web {
@@ -14,11 +15,13 @@ struct Request {
 
 }  // namespace
 
-FetchedTiles::FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight)
+FetchedTiles::FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight,
+                           std::size_t max_kept)
     : info_(std::move(info)),
       url_(info_.name),
       on_arrival_(std::move(on_arrival)),
       max_in_flight_(max_in_flight),
+      max_kept_(std::max<std::size_t>(max_kept, 1)),
       self_(std::make_shared<FetchedTiles*>(this)) {}
 
 FetchedTiles::~FetchedTiles() {
@@ -28,7 +31,7 @@ FetchedTiles::~FetchedTiles() {
 
 terrain::EncodedTile FetchedTiles::fetch(const terrain::TileId& tile, terrain::StopToken) {
   if (auto it = arrived_.find(tile); it != arrived_.end()) {
-    terrain::EncodedTile out = std::move(it->second);
+    terrain::EncodedTile out = std::move(it->second.tile);
     arrived_.erase(it);
     return out;
   }
@@ -53,6 +56,12 @@ terrain::EncodedTile FetchedTiles::fetch(const terrain::TileId& tile, terrain::S
   return waiting;
 }
 
+std::size_t FetchedTiles::kept_bytes() const {
+  std::size_t bytes = 0;
+  for (const auto& [tile, kept] : arrived_) bytes += kept.tile.bytes.size();
+  return bytes;
+}
+
 void FetchedTiles::on_success(emscripten_fetch_t* fetch) {
   auto* request = static_cast<Request*>(fetch->userData);
   if (FetchedTiles* source = *request->source) source->arrived(fetch, true);
@@ -70,7 +79,17 @@ void FetchedTiles::on_error(emscripten_fetch_t* fetch) {
 void FetchedTiles::arrived(emscripten_fetch_t* fetch, bool ok) {
   const terrain::TileId tile = static_cast<Request*>(fetch->userData)->tile;
   in_flight_.erase(tile);
-  terrain::EncodedTile& out = arrived_[tile];
+  // At the bound, the tile that has waited longest goes: no view took it since it came.
+  if (!arrived_.contains(tile) && arrived_.size() >= max_kept_) {
+    const auto oldest = std::min_element(arrived_.begin(), arrived_.end(),
+                                         [](const auto& a, const auto& b) { return a.second.serial < b.second.serial; });
+    arrived_.erase(oldest);
+    ++dropped_;
+  }
+  Arrived& kept = arrived_[tile];
+  kept.serial = ++arrivals_;
+  terrain::EncodedTile& out = kept.tile;
+  out = {};
   if (ok && fetch->status == 200) {
     out.status = terrain::TileStatus::ok;
     out.bytes.assign(fetch->data, fetch->data + fetch->numBytes);

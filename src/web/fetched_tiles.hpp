@@ -7,6 +7,12 @@
 // the status. Requests in flight are bounded (`max_in_flight`); the others wait their turn. The
 // bound is above the browser's six connections a host: requests wait in the browser's queue, not
 // for the next frame to start them (a frame takes a second in software GL).
+//
+// A tile that arrives after the view moved on is never asked for again: arrived tiles waiting to
+// be taken are bounded (`max_kept`), the oldest arrival let go first, so a long session's memory
+// does not grow with every place the view passed. The loader takes a wanted tile at the frame its
+// arrival asks for (a few at most arrive between two frames: those in flight), so only tiles no
+// view wants reach the bound; one let go that is wanted after all is simply asked for again.
 
 #include <cstdint>
 #include <functional>
@@ -23,7 +29,8 @@ namespace trailray::web {
 
 class FetchedTiles : public terrain::EncodedTileSource {
  public:
-  FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight = 16);
+  FetchedTiles(terrain::SourceInfo info, std::function<void()> on_arrival, int max_in_flight = 16,
+               std::size_t max_kept = 64);
   ~FetchedTiles() override;
   FetchedTiles(const FetchedTiles&) = delete;
   FetchedTiles& operator=(const FetchedTiles&) = delete;
@@ -32,6 +39,10 @@ class FetchedTiles : public terrain::EncodedTileSource {
   terrain::EncodedTile fetch(const terrain::TileId& tile, terrain::StopToken stop) override;
 
   std::size_t in_flight() const { return in_flight_.size(); }
+  // Tiles that arrived and wait for the loader to take them, and their bytes.
+  std::size_t kept() const { return arrived_.size(); }
+  std::size_t kept_bytes() const;
+  std::size_t dropped() const { return dropped_; }  // arrived tiles let go at the bound, in all
 
  private:
   static void on_success(emscripten_fetch_t* fetch);
@@ -42,8 +53,15 @@ class FetchedTiles : public terrain::EncodedTileSource {
   terrain::UrlTemplate url_;
   std::function<void()> on_arrival_;
   int max_in_flight_;
+  std::size_t max_kept_;
   std::unordered_map<terrain::TileId, emscripten_fetch_t*> in_flight_;
-  std::unordered_map<terrain::TileId, terrain::EncodedTile> arrived_;
+  struct Arrived {
+    terrain::EncodedTile tile;
+    std::uint64_t serial = 0;  // arrival order: the oldest goes first at the bound
+  };
+  std::unordered_map<terrain::TileId, Arrived> arrived_;
+  std::uint64_t arrivals_ = 0;
+  std::size_t dropped_ = 0;
   // Each request's user data: the source, while it lives (cleared when it goes first).
   std::shared_ptr<FetchedTiles*> self_;
 };

@@ -81,6 +81,7 @@ void PageViewer::open_terrain() {
   terrain_view_.reset();
   heights_.reset();
   imagery_.reset();
+  fetched_.clear();
   const auto redraw = [this] { dirty_ = true; };
   const auto info_of = [](const terrain::SourceSettings& s) {
     terrain::SourceInfo info;
@@ -93,12 +94,15 @@ void PageViewer::open_terrain() {
   };
   if (options_.terrain.source != "none") {
     auto tiles = std::make_shared<FetchedTiles>(info_of(options_.terrain), redraw);
+    fetched_.push_back(tiles);
     heights_ = std::make_unique<terrain::EncodedHeightSource>(
         tiles, options_.terrain.encoding.value_or(terrain::HeightEncoding::terrarium));
   }
-  if (options_.imagery.source != "none")
-    imagery_ = std::make_unique<terrain::EncodedImagerySource>(
-        std::make_shared<FetchedTiles>(info_of(options_.imagery), redraw));
+  if (options_.imagery.source != "none") {
+    auto tiles = std::make_shared<FetchedTiles>(info_of(options_.imagery), redraw);
+    fetched_.push_back(tiles);
+    imagery_ = std::make_unique<terrain::EncodedImagerySource>(std::move(tiles));
+  }
   if (heights_ || imagery_) {
     terrain::TileLoaderOptions loading;
     loading.memory_budget_bytes = 256u << 20;
@@ -506,6 +510,17 @@ std::string PageViewer::status_json() const {
   j["warnings"] = warnings_;
   const terrain::LoadProgress& p = terrain_report_.progress;
   j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};
+  // Fetched tiles held until the loader takes them (those that arrived after the view moved on
+  // are never taken), and the bytes they hold.
+  std::size_t kept = 0, kept_bytes = 0, dropped = 0;
+  for (const auto& f : fetched_) {
+    kept += f->kept();
+    kept_bytes += f->kept_bytes();
+    dropped += f->dropped();
+  }
+  j["tiles"]["kept"] = kept;
+  j["tiles"]["kept_bytes"] = kept_bytes;
+  j["tiles"]["dropped"] = dropped;  // let go at the bound (FetchedTiles)
   j["tile_failures"] = terrain_report_.failures;
   // The sources in use and the page's defaults, for its "Terrain & imagery" form.
   const auto sources = [](const PageOptions& o) {

@@ -21,6 +21,7 @@
 #include "scene/track_files.hpp"
 #include "scene/track_set.hpp"
 #include "ui/viewer_model.hpp"
+#include "web/fetched_tiles.hpp"
 #include "web/page_input.hpp"
 #include "web/page_legend.hpp"
 #include "web/page_options.hpp"
@@ -93,6 +94,7 @@ class PageViewer {
   // few), without drawing the scene again.
   static constexpr int kUiFramesAfterInput = 3;
 
+  std::vector<std::shared_ptr<FetchedTiles>> fetched_;  // the sources' tiles (for the status)
   std::unique_ptr<terrain::HeightSource> heights_;
   std::unique_ptr<terrain::ImagerySource> imagery_;
   std::unique_ptr<scene::TerrainView> terrain_view_;  // after the sources: goes before them

@@ -543,6 +543,42 @@ test('a terrain template typed into "Terrain & imagery" draws its tiles, and the
   }
 });
 
+// Tiles asked for by a view the camera has left arrive all the same; they are never taken (the
+// view wants others) and must not pile up over a long session: what the page keeps of them is
+// bounded, while the view moves across many places, and the tiles of the view it rests on come.
+test('fetched tiles the view no longer wants are kept within a bound while the view moves far', async (t) => {
+  const tiles = await hillTileServer();
+  try {
+    const template = encodeURIComponent(`${tiles.url}hills/{z}/{x}/{y}.png`);
+    const page = await openPage(browser,
+      `${base}?imagery=none&terrain=${template}&no-panels&look-at=46.0,6.0,800&distance=4000&pitch=-35`);
+    await framesDrawn(page);
+    let mostKept = 0;
+    // Twelve places a degree or more apart: each wants its own tiles (all but the coarsest).
+    for (let i = 1; i <= 12; ++i) {
+      const drawn = (await status(page)).frames_drawn;
+      await page.evaluate((v) => window.trailray.api.setOption('look-at', v), `${46 + (i % 4) * 0.9},${6 + i * 1.1},800`);
+      await framesDrawn(page, drawn + 2);
+      mostKept = Math.max(mostKept, (await status(page)).tiles.kept);
+    }
+    await allTilesIn(page);
+    await new Promise((r) => setTimeout(r, 1500));  // the last answers of earlier views come in
+    const s = await status(page);
+    mostKept = Math.max(mostKept, s.tiles.kept);
+    t.diagnostic(`${tiles.asked.length} tiles asked; kept unused at most ${mostKept}, now ${s.tiles.kept} ` +
+      `(${(s.tiles.kept_bytes / 1e6).toFixed(1)} MB); ${s.tiles.dropped} dropped`);
+    assert.ok(tiles.asked.length > 150, `the view asked for many tiles (${tiles.asked.length})`);
+    assert.ok(mostKept <= 64, `tiles kept unused: at most ${mostKept} (bound 64)`);
+    assert.ok(s.tiles.dropped > 0, 'more than the bound arrived unwanted, and the oldest were let go');
+    // The view it rests on still got every tile it wants.
+    assert.equal(s.tiles.loaded + s.tiles.no_data, s.tiles.wanted);
+    assert.deepEqual(s.tile_failures, []);
+    await page.close();
+  } finally {
+    tiles.server.close();
+  }
+});
+
 // The view's numbers as the fragment has them.
 async function viewOf(page) {
   const state = new URLSearchParams(await page.evaluate(() => window.trailray.api.viewState()));
