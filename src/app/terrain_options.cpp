@@ -26,8 +26,9 @@ std::optional<terrain::TileScheme> scheme_of(std::string value) {
 void add_terrain_options(CLI::App& cmd, TerrainOptions& o) {
   cmd.add_option("--terrain", o.terrain,
                  "Elevation source: a raster file (GeoTIFF, .hgt, VRT, ...), a {z}/{x}/{y} tile folder, an .mbtiles "
-                 "file, an http(s) URL template with {z} {x} {y} {-y} {s}, or none (default: the config file's, "
-                 "else the AWS Terrain Tiles)")
+                 "file, an http(s) URL template with {z} {x} {y} {-y} {s}, one remote raster (an http(s) URL without "
+                 "placeholders, /vsicurl/..., /vsis3/...: read by range requests), or none (default: the config "
+                 "file's, else the AWS Terrain Tiles)")
       ->type_name("SRC");
   cmd.add_option("--terrain-encoding", o.terrain_encoding,
                  "How tile pixels encode heights (default: the source's metadata, else guessed from its name, "
@@ -48,7 +49,7 @@ void add_terrain_options(CLI::App& cmd, TerrainOptions& o) {
 void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
   cmd.add_option("--imagery", o.imagery,
                  "Imagery for the ground's colour: a raster file, a {z}/{x}/{y} tile folder, an .mbtiles file, an "
-                 "http(s) URL template, or none: a tint by height (default: the config file's, else EOX Sentinel-2 "
+                 "http(s) URL template, one remote raster (a URL without placeholders, /vsicurl/...), or none: a tint by height (default: the config file's, else EOX Sentinel-2 "
                  "cloudless)")
       ->type_name("SRC");
   add_scheme_option(cmd, "--imagery-scheme", o.imagery_scheme, "an imagery tile folder");

@@ -32,10 +32,10 @@ HeightBandValues read_height_band_values(GDALRasterBand& band) {
 }
 
 NativeHeightGrid::NativeHeightGrid(DatasetPool& pool, int width, int height, HeightBandValues values,
-                                   std::size_t budget_bytes)
+                                   std::size_t budget_bytes, bool read_whole)
     : pool_(pool), width_(width), height_(height), values_(values) {
   const std::size_t whole = std::size_t(width) * std::size_t(height) * sizeof(float);
-  if (whole <= budget_bytes) {
+  if (read_whole && whole <= budget_bytes) {
     block_width_ = width;
     block_height_ = height;
   }

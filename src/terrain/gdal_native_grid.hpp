@@ -33,7 +33,9 @@ class NativeHeightGrid {
   // (then it is one block, read once).
   static constexpr int kBlockSize = 256;
 
-  NativeHeightGrid(DatasetPool& pool, int width, int height, HeightBandValues values, std::size_t budget_bytes);
+  // `read_whole`: false reads by blocks even a raster that fits the budget.
+  NativeHeightGrid(DatasetPool& pool, int width, int height, HeightBandValues values, std::size_t budget_bytes,
+                   bool read_whole = true);
 
   // Heights at continuous pixel coordinates (px, py), (0, 0) being the outer corner of the first
   // pixel, by the rule documented at GdalHeightSource::sample_native (steps 2 to 5). The three

@@ -40,7 +40,8 @@ struct GdalHeightSource::Impl {
         raster(path, opts.max_idle_datasets),
         band(describe_height_band(raster.pool())),
         to_raster_crs(raster.georef(), path),
-        grid(raster.pool(), raster.georef().width, raster.georef().height, band.values, opts.native_cache_bytes),
+        grid(raster.pool(), raster.georef().width, raster.georef().height, band.values, opts.native_cache_bytes,
+             opts.read_whole_raster),
         tiles(opts.tile_cache_bytes) {
     info = raster.basic_info();
     info.encoding = HeightEncoding::float32;

@@ -46,6 +46,9 @@ struct GdalOptions {
   // Raster pixels kept in memory for sample_native, in blocks of 256 x 256 (a raster that fits
   // is read whole, once). At least one block is always kept.
   std::size_t native_cache_bytes = std::size_t{256} << 20;
+  // A raster smaller than native_cache_bytes is read whole for sample_native; false reads it by
+  // blocks always (a remote raster: the blocks a track needs, not the file).
+  bool read_whole_raster = true;
   // Dataset handles kept open between calls (one is needed per concurrent caller; more callers
   // open extra handles and close them afterwards).
   std::size_t max_idle_datasets = 8;

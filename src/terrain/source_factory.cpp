@@ -20,7 +20,16 @@ SourceKind classify_source(std::string_view spec) {
   if (spec.empty()) throw SourceError("empty terrain/imagery source (give a file, a folder, a URL or `none`)");
   if (spec == "none") return SourceKind::none;
   const std::string l = lower(spec);
-  if (l.starts_with("http://") || l.starts_with("https://")) return SourceKind::http;
+  if (l.starts_with("http://") || l.starts_with("https://"))
+    return spec.find('{') == std::string_view::npos ? SourceKind::remote_raster : SourceKind::http;
+  // GDAL's virtual file systems: on servers and object stores (even inside /vsizip/) a remote
+  // raster; the others (/vsizip/, /vsigzip/, /vsitar/ of a local file) a raster GDAL opens.
+  if (l.starts_with("/vsi")) {
+    for (const char* network : {"/vsicurl", "/vsis3", "/vsigs", "/vsiaz", "/vsiadls", "/vsioss", "/vsiswift",
+                                "/vsiwebhdfs", "/vsihdfs"})
+      if (l.find(network) != std::string::npos) return SourceKind::remote_raster;
+    return SourceKind::raster;
+  }
   const std::filesystem::path path(spec);
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -30,6 +39,12 @@ SourceKind classify_source(std::string_view spec) {
   if (std::filesystem::is_directory(status)) return SourceKind::directory;
   if (l.ends_with(".mbtiles")) return SourceKind::mbtiles;
   return SourceKind::raster;
+}
+
+std::string remote_raster_path(std::string_view spec) {
+  const std::string l = lower(spec);
+  if (l.starts_with("http://") || l.starts_with("https://")) return "/vsicurl/" + std::string(spec);
+  return std::string(spec);
 }
 
 std::optional<HeightEncoding> encoding_from_name(std::string_view spec) {

@@ -2,7 +2,10 @@
 // Turns a source as the user spells it (DESIGN.md "Terrain sources": --terrain / --imagery or
 // the config file) into a HeightSource or an ImagerySource:
 //   none                     -> no source (nullptr)
-//   http://... / https://... -> HttpTileSource (URL template, disk cache) + decoder
+//   http://... / https://... -> HttpTileSource (URL template, disk cache) + decoder; a URL
+//                               without placeholders is one remote raster (below)
+//   /vsicurl/..., /vsis3/... -> a remote raster: one file (a Cloud-Optimized GeoTIFF at best)
+//                               read through GDAL's range requests, only the blocks needed
 //   *.mbtiles                -> MbtilesTileSource + decoder
 //   a folder                 -> DirectoryTileSource ({z}/{x}/{y}.png|webp|jpg) + decoder
 //   any other file           -> a GDAL raster (GeoTIFF, .hgt, VRT, .img, ...; any CRS)
@@ -17,11 +20,15 @@
 
 namespace trailray::terrain {
 
-enum class SourceKind { none, http, mbtiles, directory, raster };
+enum class SourceKind { none, http, mbtiles, directory, raster, remote_raster };
 
 // What `spec` names, from its spelling and (for paths) what is on disk. Throws SourceError for
 // an empty spec or a path that does not exist.
 SourceKind classify_source(std::string_view spec);
+
+// The path GDAL opens for a remote raster: "/vsicurl/" before an http(s) URL, a GDAL virtual
+// path (/vsicurl/, /vsis3/, /vsigs/, /vsiaz/, ...) as it is.
+std::string remote_raster_path(std::string_view spec);
 
 struct SourceContext {
   NetworkSettings network;

@@ -7,6 +7,7 @@
 #include "terrain/directory_source.hpp"
 #include "terrain/encoded_sources.hpp"
 #include "terrain/gdal_raster.hpp"
+#include "terrain/gdal_remote.hpp"
 #include "terrain/height_decode.hpp"
 #include "terrain/http_source.hpp"
 #include "terrain/image_codec.hpp"
@@ -75,6 +76,7 @@ std::unique_ptr<HeightSource> open_height_source(const SourceSettings& s, const 
   const SourceKind kind = classify_source(s.source);
   if (kind == SourceKind::none) return nullptr;
   if (kind == SourceKind::raster) return std::make_unique<GdalHeightSource>(s.source);
+  if (kind == SourceKind::remote_raster) return open_remote_height_source(s, c.network);
 
   // The encoding: said by the user, else by the source's metadata, else by its name, else
   // Terrarium (the most common); a wrong guess shows as implausible heights, and the decoder's
@@ -104,6 +106,7 @@ std::unique_ptr<ImagerySource> open_imagery_source(const SourceSettings& s, cons
   const SourceKind kind = classify_source(s.source);
   if (kind == SourceKind::none) return nullptr;
   if (kind == SourceKind::raster) return std::make_unique<GdalImagerySource>(s.source);
+  if (kind == SourceKind::remote_raster) return open_remote_imagery_source(s, c.network);
   HttpSourceOptions http = http_options(s, c);
   if (kind == SourceKind::http) {
     http.validate = [](std::span<const unsigned char> bytes) -> std::optional<std::string> {

@@ -18,6 +18,9 @@
 //   /fail/<status>/  always that status (e.g. /fail/503/..., /fail/403/...)
 //   /nostore/  the PNG with Cache-Control: no-store
 //   /slow/     answers only after release_slow() or stop()
+// and files (serve_file): /files/NAME with HTTP range requests (206 Partial Content, as object
+// stores and static file servers answer), /norange/NAME always whole (200, Range ignored).
+// HEAD is answered too (the headers of the GET, no body).
 // Every request is counted (by path prefix too), with the headers and target of the last one,
 // and the largest number of requests being handled at once.
 
@@ -233,6 +236,15 @@ class LocalTileServer {
   // Each request is held this long before it is answered (to make requests overlap).
   void set_delay(std::chrono::milliseconds delay) { delay_ms_ = static_cast<int>(delay.count()); }
   void release_slow() { slow_released_ = true; }
+  // Serves the file at `path` as /files/NAME and /norange/NAME.
+  void serve_file(const std::string& name, const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes(std::istreambuf_iterator<char>(in), {});
+    std::lock_guard lock(mutex_);
+    files_[name] = std::move(bytes);
+  }
+  // Body bytes sent so far (GET answers), all routes together.
+  std::size_t body_bytes_sent() const { return body_bytes_sent_; }
 
   int request_count() const { return requests_; }
   int request_count(std::string_view path_prefix) const {
@@ -322,6 +334,7 @@ class LocalTileServer {
       const std::size_t space1 = request_line.find(' '), space2 = request_line.rfind(' ');
       if (space1 == std::string::npos || space2 <= space1) break;
       const std::string target = request_line.substr(space1 + 1, space2 - space1 - 1);
+      const bool head_only = request_line.starts_with("HEAD ");
       Headers headers;
       std::size_t at = line_end == std::string::npos ? head.size() : line_end + 2;
       while (at < head.size()) {
@@ -342,7 +355,10 @@ class LocalTileServer {
       out += "Content-Length: " + std::to_string(response.body.size()) + "\r\n";
       for (const auto& [name, value] : response.headers) out += name + ": " + value + "\r\n";
       out += "\r\n";
-      out.append(response.body.begin(), response.body.end());
+      if (!head_only) {
+        out.append(response.body.begin(), response.body.end());
+        body_bytes_sent_ += response.body.size();
+      }
       if (!send_all(fd, out)) break;
       if (headers["connection"] == "close") break;
     }
@@ -355,6 +371,10 @@ class LocalTileServer {
         return "OK";
       case 204:
         return "No Content";
+      case 206:
+        return "Partial Content";
+      case 416:
+        return "Range Not Satisfiable";
       case 304:
         return "Not Modified";
       case 403:
@@ -417,7 +437,43 @@ class LocalTileServer {
     return response;
   }
 
+  // /files/NAME (ranges) and /norange/NAME; nullopt for other targets.
+  std::optional<Response> file_route(const std::string& target, const Headers& headers) {
+    const bool ranges = target.starts_with("/files/");
+    if (!ranges && !target.starts_with("/norange/")) return std::nullopt;
+    std::vector<unsigned char> bytes;
+    {
+      std::lock_guard lock(mutex_);
+      const auto it = files_.find(target.substr(target.find('/', 1) + 1));
+      if (it == files_.end()) return Response{404, {}, {}};
+      bytes = it->second;
+    }
+    Response r;
+    r.headers.emplace_back("Content-Type", "image/tiff");
+    const auto range = headers.find("range");
+    if (!ranges || range == headers.end()) {
+      if (ranges) r.headers.emplace_back("Accept-Ranges", "bytes");
+      r.body = std::move(bytes);
+      return r;
+    }
+    // "bytes=FIRST-LAST" (LAST optional), the one form GDAL sends.
+    const std::string spec = range->second.substr(range->second.find('=') + 1);
+    const std::size_t dash = spec.find('-');
+    const std::size_t first = std::strtoull(spec.substr(0, dash).c_str(), nullptr, 10);
+    std::size_t last = dash + 1 < spec.size() ? std::strtoull(spec.substr(dash + 1).c_str(), nullptr, 10)
+                                              : bytes.size() - 1;
+    if (first >= bytes.size()) return Response{416, {}, {{"Content-Range", "bytes */" + std::to_string(bytes.size())}}};
+    last = std::min(last, bytes.size() - 1);
+    r.status = 206;
+    r.headers.emplace_back("Accept-Ranges", "bytes");
+    r.headers.emplace_back("Content-Range", "bytes " + std::to_string(first) + "-" + std::to_string(last) + "/" +
+                                                std::to_string(bytes.size()));
+    r.body.assign(bytes.begin() + static_cast<std::ptrdiff_t>(first), bytes.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    return r;
+  }
+
   Response route(const std::string& target, const Headers& headers) {
+    if (std::optional<Response> file = file_route(target, headers)) return *file;
     Response r;
     const std::optional<Target> t = parse_target(target);
     if (!t) return Response{404, {}, {}};
@@ -492,6 +548,8 @@ class LocalTileServer {
   std::map<std::string, int> per_target_;
   std::map<std::string, int> flaky_failures_;
   mutable std::map<std::string, std::vector<unsigned char>> generated_;
+  std::map<std::string, std::vector<unsigned char>> files_;
+  std::atomic<std::size_t> body_bytes_sent_{0};
   Headers last_headers_;
   std::string last_target_;
   std::string cache_control_;

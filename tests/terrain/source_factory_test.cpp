@@ -27,6 +27,15 @@ TEST(SourceFactory, ClassifiesBySpellingAndByWhatIsOnDisk) {
   EXPECT_EQ(classify_source((dir.path() / "t.mbtiles").string()), SourceKind::mbtiles);
   EXPECT_EQ(classify_source((dir.path() / "dem.tif").string()), SourceKind::raster);
   EXPECT_THROW(classify_source(""), SourceError);
+  // One remote file: a URL without placeholders, or GDAL's network file systems (nothing on disk
+  // to check); a local archive through /vsizip/ is a raster GDAL opens.
+  EXPECT_EQ(classify_source("https://data.example/copernicus/dem.tif"), SourceKind::remote_raster);
+  EXPECT_EQ(classify_source("/vsicurl/https://data.example/dem.tif"), SourceKind::remote_raster);
+  EXPECT_EQ(classify_source("/vsis3/bucket/dem.tif"), SourceKind::remote_raster);
+  EXPECT_EQ(classify_source("/vsizip//vsicurl/https://data.example/dems.zip/dem.tif"), SourceKind::remote_raster);
+  EXPECT_EQ(classify_source("/vsizip/dems.zip/dem.tif"), SourceKind::raster);
+  EXPECT_EQ(remote_raster_path("https://data.example/dem.tif"), "/vsicurl/https://data.example/dem.tif");
+  EXPECT_EQ(remote_raster_path("/vsis3/bucket/dem.tif"), "/vsis3/bucket/dem.tif");
   try {
     classify_source("/no/such/dem.tif");
     FAIL();
