@@ -29,6 +29,7 @@ struct ElevationArgs {
   std::string output;
   track::ReadOptions read;
   TerrainOptions terrain;
+  std::string surface;  // --surface: empty without
 };
 
 // Every point the heights are wanted for, in file order: track points, then route points, then
@@ -45,11 +46,15 @@ std::vector<track::TrackPoint*> points_of(track::TrackFile& f, bool with_waypoin
   return out;
 }
 
-std::vector<ElevationPoint> report_points(const track::TrackFile& f, const std::vector<double>& terrain) {
+std::vector<ElevationPoint> report_points(const track::TrackFile& f, const std::vector<double>& terrain,
+                                          const std::vector<double>& surface) {
   std::vector<ElevationPoint> out;
   std::size_t k = 0;
   auto add = [&](std::size_t track, std::size_t segment, const track::TrackPoint& p) {
-    out.push_back({track, segment, p.lat, p.lon, p.ele, terrain[k++]});
+    ElevationPoint point{track, segment, p.lat, p.lon, p.ele, terrain[k]};
+    if (k < surface.size()) point.surface_m = surface[k];
+    ++k;
+    out.push_back(point);
   };
   for (std::size_t t = 0; t < f.tracks.size(); ++t)
     for (std::size_t s = 0; s < f.tracks[t].segments.size(); ++s)
@@ -119,7 +124,15 @@ int run_elevation(const ElevationArgs& a) {
     return 0;
   }
 
-  ElevationReport report{a.file == "-" ? "<stdin>" : a.file, source_name, report_points(file, heights), {}};
+  // The surface model (canopy and buildings) at the same places, from any source --terrain takes.
+  TerrainHeights surface;
+  if (!a.surface.empty()) {
+    TerrainOptions options = a.terrain;
+    options.terrain = a.surface;
+    surface = terrain_heights(where, options, diagnostics, a.file);
+  }
+  ElevationReport report{a.file == "-" ? "<stdin>" : a.file, source_name, surface.source_name,
+                         report_points(file, heights, surface.heights), {}};
   report.summary = summarize(report.points);
   if (a.json)
     std::cout << elevation_json(report).dump(2) << '\n';
@@ -136,7 +149,10 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ElevationArgs>();
   CLI::App* cmd = app.add_subcommand("elevation", "Terrain height and height above ground at every point of a track");
   cmd->footer(
-      "Per point: lat, lon, ele_m (recorded), terrain_m (from --terrain), agl_m = ele_m - terrain_m.\n"
+      "Per point: lat, lon, ele_m (recorded), terrain_m (from --terrain), agl_m = ele_m - terrain_m;\n"
+      "with --surface also surface_m, canopy_m = surface_m - terrain_m and cover: open (above the surface,\n"
+      "or where the two agree within 2 m), covered (below the surface, at or above the ground, 3 m\n"
+      "tolerance) or below_ground (a tunnel, or a bad altitude); a point without an elevation is on the ground.\n"
       "The summary's mean/median offset is how far a barometer drifted (hikes) or how high a flight\n"
       "was above the ground. Heights are bilinear between the source's samples: a raster file's own\n"
       "grid, or a tile source's finest level (see README, \"Terrain sources\").\n"
@@ -155,6 +171,11 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--force", args->force, "Let --replace overwrite an existing OUT");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress display");
   add_terrain_options(*cmd, args->terrain);
+  cmd->add_option("--surface", args->surface,
+                  "Surface model (canopy and buildings, e.g. a DSM beside a DTM): any source --terrain takes. Adds "
+                  "per point surface_m, canopy_m and cover (open, covered, below_ground), and the share under cover")
+      ->type_name("SRC")
+      ->excludes(replace);
   add_read_options(*cmd, args->read);
   cmd->callback([args, &exit_code] { exit_code = run_elevation(*args); });
 }

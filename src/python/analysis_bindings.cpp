@@ -198,7 +198,8 @@ class Airspaces {
   std::shared_ptr<const as::AirspaceIndex> index_;
 };
 
-py::dict elevation(const Track& t, const std::string& terrain, std::optional<int> zoom) {
+py::dict elevation(const Track& t, const std::string& terrain, std::optional<int> zoom,
+                   const std::optional<std::string>& surface_source) {
   app::TerrainOptions options;
   options.terrain = terrain;
   if (zoom) options.terrain_zoom = *zoom;
@@ -211,12 +212,23 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
     for (const track::Segment& s : t.model().segments)
       for (const track::TrackPoint& p : s.points) where.push_back({p.lat, p.lon});
     const app::TerrainHeights sampled = app::terrain_heights(where, options, diagnostics, t.owner()->path);
+    app::TerrainHeights surface;
+    if (surface_source) {
+      app::TerrainOptions surface_options = options;
+      surface_options.terrain = *surface_source;
+      surface = app::terrain_heights(where, surface_options, diagnostics, t.owner()->path);
+      report.surface = surface.source_name;
+    }
     report.path = t.owner()->path;
     report.terrain = sampled.source_name;
     std::size_t k = 0;
     for (std::size_t s = 0; s < t.model().segments.size(); ++s)
-      for (const track::TrackPoint& p : t.model().segments[s].points)
-        report.points.push_back({t.index(), s, p.lat, p.lon, p.ele, sampled.heights[k++]});
+      for (const track::TrackPoint& p : t.model().segments[s].points) {
+        app::ElevationPoint point{t.index(), s, p.lat, p.lon, p.ele, sampled.heights[k]};
+        if (surface_source) point.surface_m = surface.heights[k];
+        ++k;
+        report.points.push_back(point);
+      }
     report.summary = app::summarize(report.points);
   }
   warn_all(diagnostics.warnings);
@@ -230,7 +242,23 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
   out["terrain"] = ground;
   out["agl"] = agl;
   out["source"] = text(report.terrain);
-  out["summary"] = to_python(app::elevation_summary_json(report.summary));
+  if (surface_source) {
+    // Per point: the surface, the canopy above the ground, and the class as a name (None: no class).
+    py::array_t<double> surface(static_cast<py::ssize_t>(report.points.size()));
+    py::array_t<double> canopy(static_cast<py::ssize_t>(report.points.size()));
+    py::list cover;
+    for (std::size_t i = 0; i < report.points.size(); ++i) {
+      surface.mutable_data()[i] = report.points[i].surface_m;
+      canopy.mutable_data()[i] = report.points[i].canopy_m();
+      const std::optional<track::Cover> c = report.points[i].cover();
+      cover.append(c ? py::object(text(std::string(track::cover_name(*c)))) : py::object(py::none()));
+    }
+    out["surface"] = surface;
+    out["canopy"] = canopy;
+    out["cover"] = cover;
+    out["surface_source"] = text(report.surface);
+  }
+  out["summary"] = to_python(app::elevation_summary_json(report.summary, surface_source.has_value()));
   return out;
 }
 
@@ -240,7 +268,7 @@ void bind_analysis(py::module_& m) {
   m.def("score", &score, py::arg("flight"), py::arg("rules"), py::arg("distance"), py::arg("trim"),
         py::arg("all_types"));
   m.def("flight", &flight, py::arg("track"));
-  m.def("elevation", &elevation, py::arg("track"), py::arg("terrain"), py::arg("terrain_zoom"));
+  m.def("elevation", &elevation, py::arg("track"), py::arg("terrain"), py::arg("terrain_zoom"), py::arg("surface"));
   py::class_<Task>(m, "Task", "A competition task (XCTrack .xctsk, its XCTSK: QR text, or an IGC C-record declaration).")
       .def_static("read", &Task::read, py::arg("path"), "Reads a task file; ReadError naming the file and the place.")
       .def_property_readonly("path", [](const Task& t) { return text(t.path()); })

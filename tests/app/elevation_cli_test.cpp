@@ -2,6 +2,7 @@
 // MBTiles file and an HTTP server; JSON and CSV shapes; --replace; errors and offline use.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -193,4 +194,70 @@ TEST(ElevationCli, EveryTileFailingIsAnErrorNotAnAnswer) {
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("no terrain height could be had"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("failed"), std::string::npos) << r.out;
+}
+
+namespace {
+
+// A straight walk of `n` points between two places, every point at `ele` (NaN: no elevation).
+std::string straight_walk(std::pair<double, double> a, std::pair<double, double> b, int n, double ele) {
+  std::string gpx = "<gpx version=\"1.1\" creator=\"test\"><trk><name>Forest</name><trkseg>\n";
+  for (int i = 0; i < n; ++i) {
+    const double f = i / double(n - 1);
+    gpx += "<trkpt lat=\"" + std::to_string(a.first + (b.first - a.first) * f) + "\" lon=\"" +
+           std::to_string(a.second + (b.second - a.second) * f) + "\">" +
+           (std::isnan(ele) ? std::string() : "<ele>" + std::to_string(ele) + "</ele>") + "</trkpt>\n";
+  }
+  return gpx + "</trkseg></trk></gpx>\n";
+}
+
+}  // namespace
+
+// --surface on a real lidar pair of one forest (shared/data/dem/SURFACE_PAIR.json: a terrain and a
+// surface model, 1 m, and a line from an opening through 20 m canopy to another opening): the
+// walk's ends are open, its middle under cover; a glider far above is open everywhere, a tunnel
+// below the ground everywhere; canopy_m is surface_m - terrain_m; CSV and table say the same.
+TEST(ElevationCli, SurfaceModelTellsTheForestFromTheOpen) {
+  TRAILRAY_REQUIRE_DATA(pair_file, "dem/SURFACE_PAIR.json");
+  const json pair = json::parse(read_file(pair_file));
+  const std::string dtm = (pair_file.parent_path() / pair["dtm"].get<std::string>()).string();
+  const std::string dsm = (pair_file.parent_path() / pair["dsm"].get<std::string>()).string();
+  const std::pair<double, double> a{pair["line"][0][0], pair["line"][0][1]}, b{pair["line"][1][0], pair["line"][1][1]};
+  Env env;
+  const std::string models = " --terrain " + shell_quote(dtm) + " --surface " + shell_quote(dsm) + " ";
+
+  TempFile walk("walk.gpx", straight_walk(a, b, 101, std::nan("")));
+  auto r = run_command(env.prefix() + "elevation --json" + models + walk.str());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const json doc = json::parse(r.out);
+  EXPECT_EQ(doc["surface"], dsm);
+  const json& points = doc["points"];
+  ASSERT_EQ(points.size(), 101u);
+  EXPECT_EQ(points[0]["cover"], "open");
+  EXPECT_EQ(points[100]["cover"], "open");
+  EXPECT_EQ(points[50]["cover"], "covered");
+  EXPECT_GT(points[50]["canopy_m"].get<double>(), 10.0);
+  for (const json& p : points)
+    EXPECT_NEAR(p["canopy_m"].get<double>(), p["surface_m"].get<double>() - p["terrain_m"].get<double>(), 0.011);
+  const json& s = doc["summary"];
+  EXPECT_EQ(s["points_open"].get<int>() + s["points_covered"].get<int>() + s["points_cover_below_ground"].get<int>(),
+            101);
+  EXPECT_EQ(s["points_cover_below_ground"], 0);
+  EXPECT_GT(s["covered_share"].get<double>(), 0.6);
+  EXPECT_LT(s["covered_share"].get<double>(), 0.97);
+
+  TempFile glider("glider.gpx", straight_walk(a, b, 21, 700.0));  // the ground is at 350-370 m
+  const json high = json::parse(run_command(env.prefix() + "elevation --json" + models + glider.str()).out);
+  EXPECT_EQ(high["summary"]["points_open"], 21);
+  EXPECT_EQ(high["summary"]["covered_share"], 0.0);
+  TempFile tunnel("tunnel.gpx", straight_walk(a, b, 21, 250.0));
+  const json low = json::parse(run_command(env.prefix() + "elevation --json" + models + tunnel.str()).out);
+  EXPECT_EQ(low["summary"]["points_cover_below_ground"], 21);
+
+  auto csv = run_command(env.prefix() + "elevation --csv" + models + walk.str());
+  ASSERT_EQ(csv.status, 0);
+  EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')), "track,segment,lat,lon,ele_m,terrain_m,agl_m,surface_m,canopy_m,cover");
+  EXPECT_NE(csv.out.find(",covered\n"), std::string::npos);
+  auto table = run_command(env.prefix() + "elevation" + models + walk.str());
+  ASSERT_EQ(table.status, 0);
+  EXPECT_NE(table.out.find("under cover"), std::string::npos) << table.out;
 }

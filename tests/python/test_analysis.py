@@ -1,5 +1,6 @@
 """score, flight, Task, Airspaces and elevation give the numbers of the commands' --json."""
 
+import json
 import warnings
 
 import numpy as np
@@ -71,6 +72,24 @@ def test_airspaces_are_the_commands():
     # The GNSS mode compares every limit with the GNSS altitude, as --igc-altitude gnss does.
     gnss = cli_json("check", "--json", "--igc-altitude", "gnss", "--airspace", airspace, flight_path)["tracks"][0]
     assert spaces.check(quietly(trailray.read, flight_path, igc_altitude="gnss").tracks[0]) == gnss
+
+
+def test_elevation_with_a_surface_model_is_the_commands(tmp_path):
+    pair_file = shared("dem/SURFACE_PAIR.json")
+    pair = json.loads(pair_file.read_text())
+    dtm, dsm = str(pair_file.parent / pair["dtm"]), str(pair_file.parent / pair["dsm"])
+    (a_lat, a_lon), (b_lat, b_lon) = pair["line"]
+    points = "".join(f'<trkpt lat="{a_lat + (b_lat - a_lat) * i / 40}" lon="{a_lon + (b_lon - a_lon) * i / 40}"/>'
+                     for i in range(41))
+    walk = tmp_path / "walk.gpx"
+    walk.write_text(f'<gpx version="1.1" creator="t"><trk><trkseg>{points}</trkseg></trk></gpx>')
+    expected = cli_json("elevation", "--json", "--terrain", dtm, "--surface", dsm, str(walk))
+    got = trailray.elevation(quietly(trailray.read, walk).tracks[0], dtm, surface=dsm)
+    assert got["summary"] == expected["summary"]
+    assert got["cover"] == [p["cover"] for p in expected["points"]]
+    assert got["cover"][0] == "open" and got["cover"][20] == "covered"
+    np.testing.assert_allclose(got["canopy"], got["surface"] - got["terrain"])
+    assert 0.6 < got["summary"]["covered_share"] < 0.97
 
 
 def test_elevation_is_the_commands():

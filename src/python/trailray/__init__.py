@@ -256,12 +256,16 @@ def flight(track: Track) -> dict:
     return _core.flight(track)
 
 
-def elevation(track: Track, terrain: str, terrain_zoom: _Optional[int] = None) -> dict:
+def elevation(track: Track, terrain: str, terrain_zoom: _Optional[int] = None, surface: _Optional[str] = None) -> dict:
     """The terrain under every point of a track, as ``trailray elevation --json`` measures it.
 
     terrain: an elevation source as ``--terrain`` takes it (a raster file, a tile folder, an
-        .mbtiles file, an http(s) URL template).
+        .mbtiles file, an http(s) URL template, one remote raster).
+    surface: a surface model (canopy and buildings) as ``--surface`` takes it, beside the terrain.
     Returns {"terrain": heights (float64, NaN without data), "agl": ele - terrain, "source": the
-    source's name, "summary": mean/median offset, rmse, points below ground, ...}.
+    source's name, "summary": mean/median offset, rmse, points below ground, ...}; with a surface
+    also "surface", "canopy" (surface - terrain) arrays, "cover" (a list of "open", "covered",
+    "below_ground" or None per point), "surface_source", and the summary's "covered_share".
     """
-    return _core.elevation(track, _os.fspath(terrain), terrain_zoom)
+    return _core.elevation(track, _os.fspath(terrain), terrain_zoom,
+                           None if surface is None else _os.fspath(surface))
