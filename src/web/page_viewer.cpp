@@ -31,6 +31,7 @@
 #include "ui/viewer_panels.hpp"
 #include "ui/waypoint_view.hpp"
 #include "web/fetched_tiles.hpp"
+#include "web/page_panels.hpp"
 
 namespace trailray::web {
 namespace {
@@ -237,7 +238,7 @@ void PageViewer::place_camera() {
   legend_scene.overlay_legend = options_.overlay_legend;
   const scene::KeptClearCorner legend =
       scene::legend_clearance(scene::scene_legend_panel(l.width_px, l.height_px, legend_scene), l.height_px);
-  const ui::FramingRoom room = panels_ ? ui::panel_framing_room(model_.settings, l, legend, pixel_ratio_)
+  const ui::FramingRoom room = panels_ ? page_framing_room(model_.settings, l, legend, pixel_ratio_)
                                        : ui::FramingRoom{legend, std::nullopt};
   framing.keep_clear = room.keep_clear;
   framing.area = room.area;
@@ -313,7 +314,16 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   imgui_.begin_frame();
   if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
   if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
+  if (!panels_placed_) {
+    // Their first places for the window's size (page_panels: folded on a small window).
+    const float bar = ImGui::GetFrameHeight();
+    const std::string placement = panel_settings_ini(
+        page_panel_layout(io.DisplaySize.x, io.DisplaySize.y, model_.settings.show_menu ? bar : 0.0f, bar));
+    ImGui::LoadIniSettingsFromMemory(placement.c_str(), placement.size());
+    panels_placed_ = true;
+  }
   const ui::PanelActions actions = ui::draw_panels(model_, seconds);
+  if (panel_keeper_.keep_in_view(model_)) ui_frames_ = std::max(ui_frames_, 2);
   // An edit in the panels (a click, a key, the wheel over them, or a slider dragged: an item held
   // while the pointer moves, not a panel being moved) may have changed the scene.
   const bool dragging = ImGui::IsAnyItemActive() && input_.moved() && !ImGui::GetCurrentContext()->MovingWindow;
@@ -417,7 +427,7 @@ void PageViewer::fly_to_track(int index) {
   framing.lens = lens();
   framing.preferred_heading_deg = camera_->view().heading_deg;
   if (panels_) {
-    const ui::FramingRoom room = ui::panel_framing_room(model_.settings, framing.lens, {}, pixel_ratio_);
+    const ui::FramingRoom room = page_framing_room(model_.settings, framing.lens, {}, pixel_ratio_);
     framing.keep_clear = room.keep_clear;
     framing.area = room.area;
   }
@@ -556,6 +566,23 @@ std::string PageViewer::status_json() const {
                       {"loaded", shown_progress_.loaded},
                       {"no_data", shown_progress_.no_data},
                       {"failed", shown_progress_.failed}}}};
+  // The panels as they are now, in CSS pixels (height: unfolded; content: what their contents
+  // need, scroll: how much of it lies out of sight).
+  nlohmann::json panels = nlohmann::json::object();
+  for (const char* name : kPanelNames) {
+    const ImGuiWindow* w = panels_ ? ImGui::FindWindowByName(name) : nullptr;
+    if (w == nullptr || !w->Active) continue;
+    panels[name] = {{"x", w->Pos.x},
+                    {"y", w->Pos.y},
+                    {"width", w->SizeFull.x},
+                    {"height", w->SizeFull.y},
+                    {"collapsed", w->Collapsed},
+                    {"content_height", w->ContentSize.y},
+                    {"scroll_max", w->ScrollMax.y}};
+  }
+  j["panels"] = panels;
+  j["selection"] = model_.selection.statistics ? ui::statistics_lines(*model_.selection.statistics)
+                                               : std::vector<std::string>{};
   j["legend"] = {{"x", legend_.rect.x},
                  {"y", legend_.rect.y},
                  {"width", legend_.rgba.empty() ? 0 : legend_.rect.width},

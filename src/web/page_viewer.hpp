@@ -25,6 +25,7 @@
 #include "web/page_input.hpp"
 #include "web/page_legend.hpp"
 #include "web/page_options.hpp"
+#include "web/page_panels.hpp"
 
 namespace trailray::web {
 
@@ -107,6 +108,8 @@ class PageViewer {
   PageInput input_;
   int ui_frames_ = kUiFramesAfterInput;
   bool panels_ = true;  // false: `no-panels`
+  bool panels_placed_ = false;  // their first places given (page_panels)
+  PanelKeeper panel_keeper_;
   PageOptions options_;
   std::vector<std::pair<std::string, std::string>> given_options_;  // as given, for view_state
   std::vector<scene::LoadedTrackFile> files_;

@@ -230,6 +230,44 @@ const settle = (page) => page.evaluate(() => new Promise((r) => {
   requestAnimationFrame(step);
 }));
 
+// The share of the canvas the interface covers: pixels where the canvas (picture and panels)
+// differs from the picture alone (the screenshot's) by more than 30 levels.
+async function interfaceShare(page) {
+  const canvas = await canvasPixels(page, { withLegend: true });
+  const picture = await screenshotPixels(page);
+  await settle(page);  // the interface comes back after the picture
+  return changedPixels(canvas, picture) / (canvas.width * canvas.height);
+}
+
+// On a small window (here a laptop's 1280x720) the 3D view comes first: the track list opens, the
+// other panels folded to their title bars; a large one (1600x900) opens them all as before.
+test('the panels open folded on a small window, the 3D view first, and open on a large one', async (t) => {
+  const url = `${base}?${OFFLINE}&track=examples/paraglider_flight.igc`;
+  const small = await openPage(browser, url, 1280, 720);
+  await framesDrawn(small);
+  await settle(small);
+  const folded = (await status(small)).panels;
+  const smallShare = await interfaceShare(small);
+  if (process.env.TRAILRAY_SCREENSHOT) await small.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-1280x720.png` });
+  await small.close();
+  const large = await openPage(browser, url, 1600, 900);
+  await framesDrawn(large);
+  await settle(large);
+  const opened = (await status(large)).panels;
+  const largeShare = await interfaceShare(large);
+  if (process.env.TRAILRAY_SCREENSHOT) await large.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-1600x900.png` });
+  await large.close();
+  t.diagnostic(`the interface covers ${(100 * smallShare).toFixed(1)} % of 1280x720, ${(100 * largeShare).toFixed(1)} % of 1600x900`);
+  const names = ['Tracks', 'Statistics', 'Profile', 'Replay'];
+  assert.deepEqual(names.map((n) => folded[n]?.collapsed), [false, true, true, true], JSON.stringify(folded));
+  for (const n of names)  // the folded ones' title bars inside the window
+    assert.ok(folded[n].x >= 0 && folded[n].y >= 0 && folded[n].x + folded[n].width <= 1280 && folded[n].y + 19 <= 720,
+      `${n} at ${JSON.stringify(folded[n])}`);
+  assert.ok(smallShare < 0.2, `the panels leave the 3D view free (${(100 * smallShare).toFixed(1)} % covered)`);
+  assert.deepEqual(names.map((n) => opened[n]?.collapsed), [false, false, false, false], JSON.stringify(opened));
+  assert.ok(largeShare > 0.3, `a large window opens the panels (${(100 * largeShare).toFixed(1)} % covered)`);
+});
+
 test('hover over the track shows its tooltip (the point\'s numbers) over the picture', async (t) => {
   const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff&track=examples/hike.gpx`, ...WIDE);
   await framesDrawn(page);
