@@ -120,7 +120,25 @@ int chart_track(const ViewerModel& model) {
   return 0;
 }
 
-void draw_selection_statistics(const ViewerModel& model, int track) {
+// A range's statistics side by side in two columns where both fit in `width`, else one.
+int statistics_columns(const std::vector<std::string>& lines, float width) {
+  float widest = 0.0f;
+  for (const std::string& line : lines) widest = std::max(widest, ImGui::CalcTextSize(line.c_str()).x);
+  return 2.0f * widest + 4.0f * ImGui::GetStyle().ItemSpacing.x <= width ? 2 : 1;
+}
+
+// The height of what is drawn under the plot (the hint, or the selection and its statistics),
+// kept free of the plot so that it shows in full where the window has room for it.
+float below_plot_height(const ViewerModel& model, int track, float width) {
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const ChartSelection& sel = model.selection;
+  if (sel.track != track || !sel.statistics) return line;
+  const std::vector<std::string> lines = statistics_lines(*sel.statistics);
+  const auto columns = static_cast<std::size_t>(statistics_columns(lines, width));
+  return line * static_cast<float>(1 + (lines.size() + columns - 1) / columns);
+}
+
+void draw_selection_statistics(const ViewerModel& model, int track, float width) {
   const ChartSelection& sel = model.selection;
   if (sel.track != track) {
     ImGui::TextDisabled("Drag across the chart to measure a part of the track.");
@@ -128,7 +146,17 @@ void draw_selection_statistics(const ViewerModel& model, int track) {
   }
   ImGui::Text("Selection: points %zu to %zu", sel.first + 1, sel.last + 1);
   if (!sel.statistics) return;
-  for (const std::string& line : statistics_lines(*sel.statistics)) ImGui::TextUnformatted(line.c_str());
+  const std::vector<std::string> lines = statistics_lines(*sel.statistics);
+  const auto columns = static_cast<std::size_t>(statistics_columns(lines, width));
+  const std::size_t rows = (lines.size() + columns - 1) / columns;
+  const float second_column = ImGui::GetCursorPosX() + width * 0.5f;
+  for (std::size_t row = 0; row < rows; ++row) {
+    ImGui::TextUnformatted(lines[row].c_str());
+    if (columns == 2 && row + rows < lines.size()) {
+      ImGui::SameLine(second_column);
+      ImGui::TextUnformatted(lines[row + rows].c_str());
+    }
+  }
 }
 
 }  // namespace
@@ -263,12 +291,13 @@ void draw_profile_chart(ViewerModel& model) {
     return;
   }
 
-  // The plot: the window's width, its height less a line for the hint below (the window opens
-  // sized from the screen: no scroll bar on a small one), a margin for the axis labels.
+  // The plot: the window's width, its height less what is shown below it (the hint, or a range's
+  // statistics; the window opens sized from the screen: no scroll bar on a small one), a margin
+  // for the axis labels.
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(50.0f, ImGui::GetContentRegionAvail().x);
   const float height =
-      std::clamp(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing(), 100.0f, 600.0f);
+      std::clamp(ImGui::GetContentRegionAvail().y - below_plot_height(model, ti, width), 100.0f, 600.0f);
   const float label_w = 48.0f;
   const float left = origin.x + label_w, top = origin.y + 4.0f;
   const float plot_w = width - label_w, plot_h = height - 20.0f;
@@ -391,7 +420,7 @@ void draw_profile_chart(ViewerModel& model) {
     else if (!dragged())
       model.selection = {};
   }
-  draw_selection_statistics(model, ti);
+  draw_selection_statistics(model, ti, width);
 }
 
 }  // namespace trailray::ui

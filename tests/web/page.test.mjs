@@ -268,6 +268,45 @@ test('the panels open folded on a small window, the 3D view first, and open on a
   assert.ok(largeShare > 0.3, `a large window opens the panels (${(100 * largeShare).toFixed(1)} % covered)`);
 });
 
+// A range dragged across the Profile's chart: its statistics (seven lines under the chart) show in
+// full, the panel inside the window; on a small window the Profile opens folded at the bottom
+// and, unfolded, comes up into the window.
+test('a range dragged across the profile shows its statistics in full, inside the window', async (t) => {
+  for (const [width, height] of [[1280, 720], [960, 540], [1600, 900]]) {
+    const page = await openPage(browser, `${base}?${OFFLINE}&track=examples/paraglider_flight.igc`, width, height);
+    await framesDrawn(page);
+    await settle(page);
+    let p = (await status(page)).panels.Profile;
+    const inside = (q) => q.x >= 0 && q.y >= 0 && q.x + q.width <= width && q.y + q.height <= height;
+    if (p.collapsed) {
+      await page.mouse.click(p.x + 10, p.y + 9);  // its title bar's arrow
+      await settle(page);
+      p = (await status(page)).panels.Profile;
+      assert.equal(p.collapsed, false, 'unfolded by its arrow');
+    }
+    assert.ok(inside(p), `${width}x${height}: the Profile inside the window (${JSON.stringify(p)})`);
+    // The plot: under the title bar and the axis buttons, right of the altitude labels.
+    const y = p.y + 19 + 8 + 23 + 34;
+    const left = p.x + 8 + 48, plot = p.width - 16 - 48;
+    await page.mouse.move(left + plot * 0.3, y);
+    await page.mouse.down();
+    await page.mouse.move(left + plot * 0.7, y, { steps: 8 });
+    await page.mouse.up();
+    await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).selection.length > 0, { timeout: 20000 });
+    await settle(page);
+    const s = await status(page);
+    p = s.panels.Profile;
+    t.diagnostic(`${width}x${height}: ${JSON.stringify(p)}; ${s.selection.join('; ')}`);
+    if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-${width}x${height}.png` });
+    await page.close();
+    assert.equal(s.selection.length, 7);
+    assert.match(s.selection[0], /^points: \d+, segments: 1$/);
+    assert.equal(p.collapsed, false);
+    assert.ok(inside(p), `${width}x${height}: the Profile inside the window (${JSON.stringify(p)})`);
+    assert.equal(p.scroll_max, 0, `${width}x${height}: every line of the panel in sight (${p.scroll_max} px scrolled out)`);
+  }
+});
+
 test('hover over the track shows its tooltip (the point\'s numbers) over the picture', async (t) => {
   const page = await openPage(browser, `${base}?${OFFLINE}&color=%23ff00ff&track=examples/hike.gpx`, ...WIDE);
   await framesDrawn(page);
