@@ -68,7 +68,9 @@ class PageViewer {
   // plus the style options given), so a copied address reproduces it.
   std::string view_state() const;
   // What the page shows beside the picture, as JSON: the tracks (name, points, colour), the colour
-  // scale, the warnings of the last file opened, the frames drawn.
+  // scale, the warnings of the last file opened, the frames drawn, the tiles (wanted, in, and the
+  // fetched ones kept), and what the panels show (the Statistics panel's and the range
+  // selection's lines, the tile figures the interface was drawn with, each panel's place).
   std::string status_json() const;
   // The legend drawn with the last frame (its place is in status_json, with a version that
   // changes whenever it does).
