@@ -5,11 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace trailray::track {
 namespace {
 
-constexpr double kNaN = std::nan("");
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(Cover, OpenCoveredAndBelowGround) {
   // A forest 20 m tall on ground at 500 m.
