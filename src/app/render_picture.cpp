@@ -21,13 +21,16 @@ scene::RgbaImage render_picture(const RenderArgs& a, scene::Diagnostics& diagnos
   const std::optional<double> time = parse_sun_time(a.style.time);
 
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
-  scene::TerrainView terrain(sources.heights.get(), sources.imagery.get());
+  scene::TerrainView terrain(sources.drawn(), sources.imagery.get());
   terrain.set_policy(
       {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
   std::vector<scene::LoadedTrackFile> files = read_track_files_parallel(a.tracks, a.read, diagnostics);
   for (scene::LoadedTrackFile& f : more) files.push_back(std::move(f));
-  const SceneTracks tracks = build_scene_tracks(std::move(files), a.tracks, a.read, style.tracks,
-                                                {sources.heights.get(), 0.0, a.analysis}, diagnostics, a.waypoints);
+  scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.analysis};
+  build.surface = sources.surface.get();
+  const SceneTracks tracks =
+      build_scene_tracks(std::move(files), a.tracks, a.read, style.tracks, build, diagnostics, a.waypoints);
+  sources.cut_canopy(tracks.tracks);
   // The task's cylinders (--task) and the airspaces of --airspace, on the terrain.
   scene::VolumeSet volumes = tracks.volumes;
   add_airspace_volumes(volumes, a.airspace.files, airspace_region(tracks.tracks, tracks.waypoints, camera_request),

@@ -122,6 +122,16 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagno
   if (options.terrain_zoom) height_settings.max_zoom = *options.terrain_zoom;
   TerrainSources sources;
   sources.heights = terrain::open_height_source(height_settings, context);
+  if (!options.surface.empty() && options.surface != "none") {
+    if (!sources.heights)
+      throw std::runtime_error("--surface needs --terrain: the tracks stand on the terrain model, the surface is drawn");
+    terrain::SourceSettings surface_settings = height_settings;
+    surface_settings.source = options.surface;
+    surface_settings.encoding.reset();
+    surface_settings.scheme.reset();
+    sources.surface = terrain::open_height_source(surface_settings, context);
+    if (sources.surface) sources.drawn_surface = std::make_unique<scene::CanopyCutHeights>(*sources.surface, *sources.heights);
+  }
   // Without terrain the neutral ground is drawn plain: imagery (and an overlay) would never show,
   // so none is opened, and no server is asked (offline that cost seconds a picture).
   if (!sources.heights && !imagery_without_terrain) {
@@ -145,6 +155,10 @@ TerrainSources open_terrain_sources(const TerrainOptions& options, scene::Diagno
                                                                options.overlay_opacity);
   }
   return sources;
+}
+
+void TerrainSources::cut_canopy(const scene::TrackSet& tracks) const {
+  if (drawn_surface) drawn_surface->set_cut_lines(scene::covered_lines(tracks));
 }
 
 double ground_height_at(terrain::HeightSource* source, double lat, double lon) {

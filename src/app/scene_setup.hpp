@@ -10,6 +10,7 @@
 #include "app/camera_options.hpp"
 #include "app/terrain_options.hpp"
 #include "app/waypoint_options.hpp"
+#include "scene/canopy_cut.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/framing.hpp"
 #include "scene/legend.hpp"
@@ -26,8 +27,19 @@ namespace trailray::app {
 
 struct TerrainSources {
   std::unique_ptr<terrain::HeightSource> heights;   // nullptr: --terrain none
+  // --surface: the surface model, and what is drawn of it (the canopy cut along the tracks under
+  // cover: set_cut_lines once the tracks are built, before the first frame). nullptr without.
+  std::unique_ptr<terrain::HeightSource> surface;
+  std::unique_ptr<scene::CanopyCutHeights> drawn_surface;
   std::unique_ptr<terrain::ImagerySource> imagery;  // nullptr: the hypsometric tint (--overlay: composited in)
   std::optional<scene::ColorLegend> overlay_legend;  // a heatmap overlay's colour bar
+
+  // What the terrain pass draws: the surface (cut) with --surface, else the terrain.
+  terrain::HeightSource* drawn() const {
+    return drawn_surface ? static_cast<terrain::HeightSource*>(drawn_surface.get()) : heights.get();
+  }
+  // Once the tracks are built: the canopy cut along their covered parts (nothing without --surface).
+  void cut_canopy(const scene::TrackSet& tracks) const;
 };
 // The sources of --terrain/--imagery, the configuration file and the defaults; the sources'
 // warnings go to `diagnostics`. Throws terrain::ConfigError and the sources' errors.

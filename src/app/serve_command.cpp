@@ -95,7 +95,21 @@ int run_serve(const ServeArgs& a) {
   site.tracks = read_served_tracks(a, diagnostics);
   site.web_root = serve::WebRoot(a.web_root);
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics, /*imagery_without_terrain=*/true);
-  site.heights = sources.heights.get();
+  if (sources.drawn_surface) {
+    // --surface: the page draws what it is served as terrain, the surface with the canopy cut
+    // along the tracks under cover (found here, as `render` finds them); points without an
+    // elevation then stand on the ground there, and the open needs no cut.
+    std::vector<std::string> paths;
+    for (const serve::ServedTrack& t : site.tracks) paths.push_back(t.path);
+    scene::TrackBuildOptions build{sources.heights.get(), 0.0, {}};
+    build.surface = sources.surface.get();
+    scene::TrackSet served;
+    for (scene::Track& t : scene::build_tracks(read_track_files_parallel(paths, a.read, diagnostics), parse_style(a.style).tracks,
+                                               build, diagnostics))
+      served.add(std::move(t));
+    sources.cut_canopy(served);
+  }
+  site.heights = sources.drawn();
   site.imagery = sources.imagery.get();
   if (site.heights != nullptr)
     site.terrain_max_zoom = std::min(site.heights->info().max_zoom, a.terrain.terrain_zoom.value_or(geo::kMaxTileZoom));

@@ -53,6 +53,11 @@ void add_imagery_option(CLI::App& cmd, TerrainOptions& o) {
                  "cloudless)")
       ->type_name("SRC");
   add_scheme_option(cmd, "--imagery-scheme", o.imagery_scheme, "an imagery tile folder");
+  cmd.add_option("--surface", o.surface,
+                 "A surface model beside --terrain (canopy and buildings: a DSM beside a DTM), any source --terrain "
+                 "takes: drawn instead of the terrain, the canopy cut away along the tracks under cover; the tracks "
+                 "still stand on the terrain (--color-by cover: open, under cover, below the ground)")
+      ->type_name("SRC");
   cmd.add_option("--overlay", o.overlay,
                  "Drawn over the imagery, with its legend: a heatmap of `trailray heatmap` (OUT.tif, OUT.mbtiles, "
                  "OUT/), or any imagery source with transparency")

@@ -20,6 +20,9 @@ struct TerrainOptions {
   bool offline = false;
   std::string imagery;  // --imagery, for commands that draw (add_imagery_option)
   std::string imagery_scheme;  // --imagery-scheme
+  // --surface SRC: a surface model (canopy, buildings) drawn instead of the terrain, which the
+  // tracks still stand on; along the tracks under cover the canopy is cut away (scene/canopy_cut).
+  std::string surface;
   // --overlay SRC over the imagery (a heatmap: counts GeoTIFF, .mbtiles or folder `trailray
   // heatmap` wrote; or any imagery with transparency), its opacity and a count raster's colours.
   std::string overlay;
@@ -29,7 +32,7 @@ struct TerrainOptions {
 
 void add_terrain_options(CLI::App& command, TerrainOptions& options);
 // --imagery SRC (same spellings as --terrain), --imagery-scheme and --overlay, --overlay-opacity,
-// --overlay-colormap, for the commands that draw terrain.
+// --overlay-colormap, --surface, for the commands that draw terrain.
 void add_imagery_option(CLI::App& command, TerrainOptions& options);
 
 // The configuration file (if any) with the flags applied. Throws terrain::ConfigError.

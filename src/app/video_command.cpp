@@ -68,9 +68,11 @@ int run_video(const VideoArgs& a) {
   TerminalDiagnostics diagnostics(a.verbose);
 
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
-  scene::TerrainView terrain(sources.heights.get(), sources.imagery.get());
-  SceneTracks loaded = load_scene_tracks(a.tracks, a.read, style.tracks, {sources.heights.get(), 0.0, a.analysis},
-                                         diagnostics, a.waypoints);
+  scene::TerrainView terrain(sources.drawn(), sources.imagery.get());
+  scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.analysis};
+  build.surface = sources.surface.get();
+  SceneTracks loaded = load_scene_tracks(a.tracks, a.read, style.tracks, build, diagnostics, a.waypoints);
+  sources.cut_canopy(loaded.tracks);
   if (sources.heights)  // the markers' stems reach down to the ground
     for (scene::Track& t : loaded.tracks.tracks()) scene::set_ground_heights(t, *sources.heights);
   const double neutral_ground = loaded.recorded.lowest_or_sea_level();

@@ -217,12 +217,23 @@ struct ColormapInfo {
   Colormap map;
   std::string_view name;
 };
-constexpr std::array<ColormapInfo, 6> kColormaps{{{Colormap::turbo, "turbo"},
+constexpr std::array<ColormapInfo, 7> kColormaps{{{Colormap::turbo, "turbo"},
                                                   {Colormap::viridis, "viridis"},
                                                   {Colormap::magma, "magma"},
                                                   {Colormap::cividis, "cividis"},
                                                   {Colormap::diverging, "diverging"},
-                                                  {Colormap::warm, "warm"}}};
+                                                  {Colormap::warm, "warm"},
+                                                  {Colormap::cover, "cover"}}};
+
+// Three flat bands: 0..1/3 open, 1/3..2/3 under cover, 2/3..1 below the ground.
+ColormapTable cover_table() {
+  ColormapTable t{};
+  for (std::size_t i = 0; i < kColormapSize; ++i) {
+    const glm::vec3 c = i < kColormapSize / 3 ? kOpenColorSrgb : i < 2 * kColormapSize / 3 ? kCoveredColorSrgb : kBelowGroundColorSrgb;
+    t[i] = glm::u8vec3(glm::round(c * 255.0f));
+  }
+  return t;
+}
 
 glm::vec3 to_unit(glm::u8vec3 c) { return glm::vec3(c) / 255.0f; }
 
@@ -244,6 +255,7 @@ const ColormapTable& colormap_table(Colormap map) {
   static const ColormapTable cividis = unpack_table(kCividis);
   static const ColormapTable diverging = lab_table(kDivergingKnots);
   static const ColormapTable warm = lab_table(kWarmKnots);
+  static const ColormapTable cover = cover_table();
   switch (map) {
     case Colormap::turbo:
       return turbo;
@@ -257,6 +269,8 @@ const ColormapTable& colormap_table(Colormap map) {
       return diverging;
     case Colormap::warm:
       return warm;
+    case Colormap::cover:
+      return cover;
   }
   return turbo;
 }

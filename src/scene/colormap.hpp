@@ -15,7 +15,8 @@
 
 namespace trailray::scene {
 
-enum class Colormap { turbo, viridis, magma, cividis, diverging, warm };
+// cover: three bands (open, under cover, below the ground: `--color-by cover` over 0..2).
+enum class Colormap { turbo, viridis, magma, cividis, diverging, warm, cover };
 
 inline constexpr std::size_t kColormapSize = 256;
 
@@ -33,6 +34,12 @@ glm::vec3 colormap_color(Colormap map, float position);
 // climb in thermals of `--color-by phase`).
 std::string_view colormap_name(Colormap map);
 std::optional<Colormap> parse_colormap(std::string_view name);  // exact lower-case names
+
+// The classes of `--color-by cover` (sRGB): open sky yellow, under cover forest green, below
+// the ground violet; Colormap::cover's three bands.
+inline constexpr glm::vec3 kOpenColorSrgb{0.95f, 0.76f, 0.18f};
+inline constexpr glm::vec3 kCoveredColorSrgb{0.10f, 0.55f, 0.25f};
+inline constexpr glm::vec3 kBelowGroundColorSrgb{0.52f, 0.27f, 0.68f};
 
 // Points without a value (no time, no heart rate): a neutral mid grey, sRGB.
 inline constexpr glm::vec3 kMissingValueColorSrgb{0.62f, 0.62f, 0.62f};

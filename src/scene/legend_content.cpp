@@ -7,6 +7,7 @@
 #include "scene/airspace_volumes.hpp"
 #include "scene/text_raster.hpp"
 #include "scene/track_density.hpp"
+#include "track/cover.hpp"
 
 namespace trailray::scene {
 namespace {
@@ -31,7 +32,8 @@ PixelRect united(const PixelRect& a, const PixelRect& b) {
 
 std::optional<ColorLegend> color_legend_for(const TrackStyle& style, const std::optional<track::ValueRange>& range) {
   const track::ColorMetric metric = style.color_by;
-  if (metric == track::ColorMetric::solid || !range) return std::nullopt;
+  // Cover's classes are named in the key (track_key_for), not placed on a scale.
+  if (metric == track::ColorMetric::solid || metric == track::ColorMetric::cover || !range) return std::nullopt;
   ColorLegend legend;
   const std::string_view unit =
       metric == track::ColorMetric::time ? std::string_view("h:mm") : track::color_metric_unit(metric);
@@ -52,10 +54,23 @@ std::vector<TrackKeyEntry> track_key_for(const TrackStyle& style, const TrackSet
   // Phase: the colours that are not on the climb's bar.
   if (style.color_by == track::ColorMetric::phase)
     return {{"gliding", kCategoryColorSrgb}, {"ground, gaps", kMissingValueColorSrgb}};
-  if (style.color_by != track::ColorMetric::solid) return key;
-  for (const Track& t : tracks.tracks())
-    if (t.visible) key.push_back({t.name, t.color_srgb, t.is_route});
-  if (key.size() < 2) key.clear();
+  // Cover: its three classes (no colour bar), the canopy cut away along the covered ones.
+  if (style.color_by == track::ColorMetric::cover)
+    return {{"open", kOpenColorSrgb},
+            {"under cover (canopy cut away)", kCoveredColorSrgb},
+            {"below the ground", kBelowGroundColorSrgb}};
+  if (style.color_by == track::ColorMetric::solid) {
+    for (const Track& t : tracks.tracks())
+      if (t.visible) key.push_back({t.name, t.color_srgb, t.is_route});
+    if (key.size() < 2) key.clear();
+  }
+  // With a surface model: what the cut through the canopy is (a track behind a ridge is ghosted).
+  const auto covered = [](const Track& t) {
+    return t.visible && std::find(t.cover.begin(), t.cover.end(), static_cast<std::uint8_t>(track::Cover::covered)) !=
+                            t.cover.end();
+  };
+  if (std::any_of(tracks.tracks().begin(), tracks.tracks().end(), covered))
+    key.push_back({"under cover: canopy cut away", kCoveredColorSrgb, true});
   return key;
 }
 

@@ -10,6 +10,8 @@ namespace trailray::scene {
 std::optional<track::ValueRange> color_range(const TrackSet& tracks, const Style& style) {
   const track::ColorMetric metric = style.tracks.color_by;
   if (metric == track::ColorMetric::solid) return std::nullopt;
+  // Three classes, each always in its own colour (Colormap::cover's bands).
+  if (metric == track::ColorMetric::cover) return track::ValueRange{0.0, 2.0};
   if (style.tracks.range) return style.tracks.range;
   std::vector<std::vector<float>> values;
   for (const Track& t : tracks.tracks()) {

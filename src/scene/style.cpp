@@ -11,6 +11,7 @@ namespace trailray::scene {
 Colormap default_colormap(track::ColorMetric metric) {
   if (metric == track::ColorMetric::phase || metric == track::ColorMetric::thermals) return Colormap::warm;
   if (metric == track::ColorMetric::density) return Colormap::magma;
+  if (metric == track::ColorMetric::cover) return Colormap::cover;
   return track::color_metric_is_signed(metric) ? Colormap::diverging : Colormap::turbo;
 }
 

@@ -15,6 +15,7 @@
 #include "scene/track_density.hpp"
 #include "terrain/height_sampler.hpp"
 #include "track/clean.hpp"
+#include "track/cover.hpp"
 #include "track/flight/phase_values.hpp"
 
 namespace trailray::scene {
@@ -99,6 +100,19 @@ void fill_geometry(Track& t, const std::vector<std::vector<double>>& ground,
 // tracks gives them).
 std::vector<std::vector<float>> values_for(const Track& t, const track::TrackMetrics& metrics,
                                            track::ColorMetric metric, const std::vector<std::vector<double>>* ground) {
+  if (metric == track::ColorMetric::cover) {
+    if (t.cover.empty())
+      throw std::invalid_argument("--color-by cover needs --surface (a surface model beside --terrain)");
+    std::vector<std::vector<float>> values;
+    std::size_t flat = 0;
+    for (const track::Segment& s : t.cleaned.segments) {
+      values.emplace_back();
+      for (std::size_t i = 0; i < s.points.size(); ++i, ++flat)
+        values.back().push_back(t.cover[flat] == Track::kNoCover ? std::numeric_limits<float>::quiet_NaN()
+                                                                  : static_cast<float>(t.cover[flat]));
+    }
+    return values;
+  }
   if (metric != track::ColorMetric::phase) return track::color_values(t.cleaned, metrics, metric, ground);
   if (!t.flights) throw std::invalid_argument("track '" + t.name + "' has no flight analysis to colour by phase");
   return track::flight::phase_color_values(t.cleaned, *t.flights);
@@ -122,6 +136,19 @@ void assign_colors(std::vector<Track>& tracks, const TrackStyle& style, std::siz
                    : colors.size() == 1 ? colors.front()
                                         : colors[i];
     ++i;
+  }
+}
+
+// Each point's class against the terrain (`ground`) and the surface, per segment and point.
+void fill_cover(Track& t, const std::vector<std::vector<double>>& ground,
+                const std::vector<std::vector<double>>& surface) {
+  t.cover.clear();
+  for (std::size_t s = 0; s < t.cleaned.segments.size(); ++s) {
+    const auto& points = t.cleaned.segments[s].points;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const std::optional<track::Cover> c = track::classify_cover(points[i].ele, ground[s][i], surface[s][i]);
+      t.cover.push_back(c ? static_cast<std::uint8_t>(*c) : Track::kNoCover);
+    }
   }
 }
 
@@ -210,6 +237,8 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
                                      const TrackBuildOptions& options) {
   if (style.color_by == track::ColorMetric::agl && options.heights == nullptr)
     throw std::runtime_error("--color-by agl needs terrain heights: give --terrain (a DEM, tiles or a URL)");
+  if (style.color_by == track::ColorMetric::cover && (options.surface == nullptr || options.heights == nullptr))
+    throw std::runtime_error("--color-by cover needs --surface (a surface model beside --terrain)");
   const bool by_value = style.color_by != track::ColorMetric::solid;
   std::vector<Track> tracks;
   for (const NamedTrack& named : tracks_of(loaded)) {
@@ -224,8 +253,10 @@ std::vector<Track> build_file_tracks(const LoadedTrackFile& loaded, const TrackS
     t.metrics_options = options.analysis.metrics;
     const track::TrackMetrics metrics = track::compute_metrics(t.cleaned, t.metrics_options);
     std::vector<std::vector<double>> ground;
-    if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr))
+    const bool with_surface = options.surface != nullptr && options.heights != nullptr;
+    if (needs_ground(t.cleaned, style) || (options.inspect && options.heights != nullptr) || with_surface)
       ground = sample_ground_heights(t.cleaned, options.heights);
+    if (with_surface) fill_cover(t, ground, sample_ground_heights(t.cleaned, options.surface));
     t.is_route = named.is_route();
     t.by_value = !t.is_route;
     if (!t.is_route && (options.analyse_flights || options.inspect || style.color_by == track::ColorMetric::phase ||

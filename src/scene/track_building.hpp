@@ -29,6 +29,9 @@ struct TrackBuildOptions {
   // --color-by phase, which read it.
   // (with the default FlightOptions, as `trailray flight`).
   bool analyse_flights = false;
+  // A surface model beside the terrain (canopy and buildings, --surface): each point's cover
+  // (Track::cover) against the two; nullptr: none. Needs `heights`.
+  terrain::HeightSource* surface = nullptr;
 };
 
 // The tracks of the files, in order (each file's tracks, then its routes), with colours from

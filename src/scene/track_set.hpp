@@ -65,6 +65,10 @@ struct Track {
   std::vector<double> heart_rate_bpm;       // recorded
   std::vector<double> cadence_rpm;          // recorded (revolutions or steps per minute)
   std::vector<double> power_w;              // recorded
+  // With a surface model (TrackBuildOptions::surface): each point's track::Cover (0 open, 1
+  // covered, 2 below the ground; kNoCover where a model has no height there); empty without.
+  std::vector<std::uint8_t> cover;
+  static constexpr std::uint8_t kNoCover = 255;
   std::vector<std::uint32_t> timed_points;  // the flat indices of the points with a time, in order
   double time_origin_s = track::kMissing;    // the first timestamp in file order (NaN: none)
   bool times_rise = true;                   // their times never go back (cleaned tracks' do not)

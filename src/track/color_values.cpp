@@ -24,7 +24,7 @@ struct MetricInfo {
 };
 
 // One row per enum value, in enum order (color_metric_names relies on it).
-constexpr std::array<MetricInfo, 13> kMetrics{{
+constexpr std::array<MetricInfo, 14> kMetrics{{
     {ColorMetric::solid, "solid", "", ""},
     {ColorMetric::speed, "speed", "Speed", "km/h"},
     {ColorMetric::vspeed, "vspeed", "Vertical speed", "m/s"},
@@ -38,6 +38,7 @@ constexpr std::array<MetricInfo, 13> kMetrics{{
     {ColorMetric::phase, "phase", "Climb in thermals", "m/s"},
     {ColorMetric::density, "density", "Tracks nearby", "tracks"},
     {ColorMetric::thermals, "thermals", "Flights climbing nearby", "flights"},
+    {ColorMetric::cover, "cover", "Cover", ""},
 }};
 
 const MetricInfo& info(ColorMetric metric) {
@@ -214,6 +215,7 @@ std::string format_color_value(ColorMetric metric, double value) {
     case ColorMetric::power:
     case ColorMetric::density:
     case ColorMetric::thermals:
+    case ColorMetric::cover:
       return fixed(value, 0);
   }
   return fixed(value, 1);

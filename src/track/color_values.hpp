@@ -31,7 +31,8 @@ enum class ColorMetric {
   time,
   phase,
   density,  // how many tracks pass within a radius (track/density.hpp): needs every track at once
-  thermals  // how many flights climbed in a thermal within a radius: the same, over the climbs
+  thermals,  // how many flights climbed in a thermal within a radius: the same, over the climbs
+  cover      // against a surface model (track/cover.hpp): 0 open, 1 under cover, 2 below the ground
 };
 
 // density and thermals: a count over all the tracks of a scene, not a value of one track's points
@@ -47,7 +48,7 @@ inline constexpr float kCategoryValue = -1.0e30f;
 inline bool is_category_value(float v) { return v <= -1.0e29f && v >= -1.0e31f; }
 
 // "solid", "speed", "vspeed", "slope", "altitude", "agl", "hr", "cadence", "power", "time", "phase",
-// "density", "thermals".
+// "density", "thermals", "cover".
 std::string_view color_metric_name(ColorMetric metric);
 std::optional<ColorMetric> parse_color_metric(std::string_view name);  // exact lower-case names
 std::vector<std::string_view> color_metric_names();                    // every name, in enum order
@@ -77,7 +78,8 @@ std::string format_color_value(ColorMetric metric, double value);
 // (NaN where unknown); agl = ele - ground. solid gives an all-NaN vector per segment.
 // Elapsed time counts from the track's first timestamp. phase needs the flight analysis and
 // gives all-NaN here: its values come from flight::phase_color_values; so do density and thermals
-// (their counts need every track: scene/track_density.hpp).
+// (their counts need every track: scene/track_density.hpp); cover too (the scene's tracks hold
+// their class against the surface model: scene::Track::cover).
 // Throws std::invalid_argument when the shapes do not match the track (metrics only checked for
 // the metrics that read them: speed, vspeed, slope, time), or for agl without ground heights.
 std::vector<std::vector<float>> color_values(const Track& track, const TrackMetrics& metrics, ColorMetric metric,

@@ -61,6 +61,7 @@ LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, con
   if (!files.empty()) {
     scene::TrackBuildOptions options;
     options.heights = inputs.heights;
+    options.surface = inputs.surface;
     options.analysis = inputs.analysis;
     options.inspect = true;
     // The neutral ground (under points without elevation): as given, else the lowest point.

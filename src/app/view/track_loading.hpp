@@ -36,6 +36,7 @@ struct TrackLoadInputs {
   bool thermals = false;  // a marker per thermal of the flights (--thermals) among the waypoints
   // Where the progress line of many files goes (null: nowhere); used from the loading thread only.
   scene::Diagnostics* progress = nullptr;
+  terrain::HeightSource* surface = nullptr;  // --surface: each point's cover (scene::Track::cover)
 };
 
 LoadedViewerTracks load_viewer_tracks(const std::vector<std::string>& paths, const TrackLoadInputs& inputs);

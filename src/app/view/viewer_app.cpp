@@ -61,7 +61,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
       sources_(open_terrain_sources(o.terrain, diagnostics_)),
       window_(window_options(o)),
       imgui_(window_),
-      terrain_(sources_.heights.get(), sources_.imagery.get()),
+      terrain_(sources_.drawn(), sources_.imagery.get()),
       profiler_(window_.capabilities(), 60),
       controller_(scene::LookAt{}, o.lens) {
   for (const std::string& line : window_.describe()) diagnostics_.note(line);
@@ -81,6 +81,9 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.settings.moving_frame = o.moving_frame;
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
+  // --surface: the canopy cut along the first tracks under cover, before any tile is drawn
+  // (tracks opened later keep the canopy over them).
+  sources_.cut_canopy(model_.tracks);
   // Place labels: a file that cannot be read stops the start, as in `render`.
   for (scene::Waypoint& w :
        scene::read_place_labels(o.label_files, o.read, {sources_.heights.get(), neutral_}, diagnostics_))
@@ -110,8 +113,10 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
 }
 
 TrackLoadInputs ViewerApp::load_inputs(double neutral) const {
-  return {options_.read,    options_.analysis, options_.style.tracks, sources_.heights.get(), neutral, 0,
-          options_.thermals};
+  TrackLoadInputs inputs{options_.read,    options_.analysis, options_.style.tracks, sources_.heights.get(), neutral, 0,
+                         options_.thermals};
+  inputs.surface = sources_.surface.get();
+  return inputs;
 }
 
 double ViewerApp::sun_unix_time() const {
