@@ -1,6 +1,7 @@
 """trailray.render: the command's picture as an array, its options in Python spelling, refused
 as the command refuses them; Jupyter's pictures."""
 
+import json
 import warnings
 
 import numpy as np
@@ -51,6 +52,30 @@ def test_terrain_from_a_dem_is_drawn():
     relief = trailray.render(f, terrain=dem, size=(200, 120), legend=False)
     # Hillshaded relief varies where the neutral ground is one grey.
     assert relief[:, :, :3].std() > flat[:, :, :3].std()
+
+
+def test_a_surface_model_is_drawn_and_colours_by_cover(tmp_path):
+    pair_file = shared("dem/SURFACE_PAIR.json")
+    pair = json.loads(pair_file.read_text())
+    dtm, dsm = str(pair_file.parent / pair["dtm"]), str(pair_file.parent / pair["dsm"])
+    (a_lat, a_lon), (b_lat, b_lon) = pair["line"]
+    points = "".join(f'<trkpt lat="{a_lat + (b_lat - a_lat) * i / 40}" lon="{a_lon + (b_lon - a_lon) * i / 40}"/>'
+                     for i in range(41))
+    walk = tmp_path / "walk.gpx"
+    walk.write_text(f'<gpx version="1.1" creator="t"><trk><trkseg>{points}</trkseg></trk></gpx>')
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", trailray.TrailrayWarning)
+        ground = trailray.render(walk, terrain=dtm, size=(320, 180))
+        canopy = trailray.render(walk, terrain=dtm, surface=dsm, size=(320, 180))
+        cover = trailray.render(walk, terrain=dtm, surface=dsm, size=(320, 180), color_by="cover")
+    assert not np.array_equal(ground, canopy)  # the trees are drawn
+    # Under cover in its green, the two open ends in their yellow.
+    rgb = cover[..., :3].astype(int)
+    green = (rgb[..., 1] > rgb[..., 0] + 60) & (rgb[..., 1] > rgb[..., 2] + 40) & (rgb[..., 0] < 80)
+    yellow = (rgb[..., 0] > 200) & (rgb[..., 1] > 150) & (rgb[..., 2] < 90)
+    assert green.sum() > 30 and yellow.sum() > 5
+    with pytest.raises(RuntimeError, match="--surface"):
+        trailray.render(walk, terrain=dtm, color_by="cover", size=(64, 36))
 
 
 def test_a_camera_and_no_tracks():

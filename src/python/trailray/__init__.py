@@ -155,14 +155,15 @@ def render(
     imagery: the ground's colour as ``--imagery`` takes it; None: a tint by height.
     size: (width, height) in pixels.
     color_by: solid, speed, vspeed, slope, altitude, agl, hr, cadence, power, time, phase,
-        density, thermals.
+        density, thermals, cover (with surface=).
     color: '#rrggbb', or a list of them, one per track.
     camera: None frames the tracks; dict(look_at=(lat, lon, alt), distance=m, heading=deg,
         pitch=deg, fov=deg); or (lat, lon, alt, heading, pitch) for the camera itself.
     **style: any other option of ``trailray render``, in Python spelling: width="8m",
         colormap="viridis", shadows=False (--no-shadows), snow=True, legend=False
         (--legend off), curtain=True, time="2024-06-18T12:00:00Z", airspace=[path, ...],
-        min_distance=5, timeout=60, pixel_ratio=2, ...
+        min_distance=5, timeout=60, pixel_ratio=2, surface="dsm.tif" (--surface: the canopy drawn,
+        cut away along the tracks under cover), ...
 
     Returns an (height, width, 4) uint8 array of sRGB pixels, top row first. The renderer's
     warnings are issued as TrailrayWarning. Raises ValueError for an option the command would
