@@ -328,10 +328,10 @@ TEST(ColorValueFormat, ElapsedTimeAsHoursAndWholeMinutes) {
 
 TEST(ColorMetricNames, RoundTripAndLabels) {
   const auto names = color_metric_names();
-  ASSERT_EQ(names.size(), 13u);
+  ASSERT_EQ(names.size(), 14u);
   EXPECT_EQ(names.front(), "solid");
   EXPECT_EQ(names[10], "phase");
-  EXPECT_EQ(names.back(), "thermals");
+  EXPECT_EQ(names.back(), "cover");
   for (std::string_view name : names) {
     const auto m = parse_color_metric(name);
     ASSERT_TRUE(m) << name;
