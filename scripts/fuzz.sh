@@ -7,6 +7,7 @@
 #    runs the test suite under the sanitizers) and builds the fuzz targets in it -> fuzz_gpx,
 #    fuzz_igc, fuzz_tcx, fuzz_fit, fuzz_kml (KML and KMZ), fuzz_geojson, fuzz_airspace,
 #    fuzz_task (XCTrack tasks, XCSoar tasks, IGC C records), fuzz_heatmap (heatmap descriptions, counts tiles), fuzz_tile,
+#    fuzz_quantized_mesh (Cesium terrain tiles),
 #    fuzz_terrain_text (config, URL templates, Cache-Control, disk cache entries)
 #    fuzz_track_text (--range / --occlusion-fade, --color-by names, colour values and ranges, points CSV)
 #    fuzz_film_text (video: --camera-path files, --duration/--speed/--from/--to/--trail)
@@ -18,7 +19,7 @@
 #    (../shared/data/tiles/ for tile; never copied) and from the regression inputs.
 # A crash, hang (-timeout=10) or excess memory (-rss_limit_mb=2048) is copied into
 # tests/fuzz/regressions/<format>/ and makes the script exit 1 after all targets have run.
-# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task heatmap tile terrain_text track_text film_text serve_request" picks targets; FUZZ_MAX_LEN (default 1048576) caps
+# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task heatmap tile quantized_mesh terrain_text track_text film_text serve_request" picks targets; FUZZ_MAX_LEN (default 1048576) caps
 # input size -- the real files make MB-sized inputs, which run at ~20-100 exec/s under
 # ASan, so FUZZ_MAX_LEN=16384 explores much faster.
 set -uo pipefail
@@ -26,7 +27,7 @@ cd "$(dirname "$0")/.." || exit 2
 ROOT=$(pwd)
 
 SECONDS_PER_TARGET=${1:-60}
-TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task heatmap tile terrain_text track_text film_text serve_request}
+TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task heatmap tile quantized_mesh terrain_text track_text film_text serve_request}
 FUZZ_JOBS=${FUZZ_JOBS:-$(nproc)}
 DATA="$ROOT/../shared/data"
 REGRESSIONS="$ROOT/tests/fuzz/regressions"
@@ -111,7 +112,7 @@ fuzz_one() {
   [ "$fmt" = tile ] && seed_dir="$DATA/tiles"
   [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records (XCSoar .tsk: the regressions)
   {
-    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ] || [ "$fmt" = heatmap ]; then
+    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ] || [ "$fmt" = heatmap ] || [ "$fmt" = quantized_mesh ]; then
       :  # seeded by its regression inputs (a config, a template, a header, a cache entry)
     elif [ -d "$seed_dir" ]; then
       seeds+=("$seed_dir")

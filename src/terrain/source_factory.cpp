@@ -20,8 +20,10 @@ SourceKind classify_source(std::string_view spec) {
   if (spec.empty()) throw SourceError("empty terrain/imagery source (give a file, a folder, a URL or `none`)");
   if (spec == "none") return SourceKind::none;
   const std::string l = lower(spec);
-  if (l.starts_with("http://") || l.starts_with("https://"))
+  if (l.starts_with("http://") || l.starts_with("https://")) {
+    if (l.substr(0, l.find('?')).ends_with("/layer.json")) return SourceKind::quantized_mesh;
     return spec.find('{') == std::string_view::npos ? SourceKind::remote_raster : SourceKind::http;
+  }
   // GDAL's virtual file systems: on servers and object stores (even inside /vsizip/) a remote
   // raster; the others (/vsizip/, /vsigzip/, /vsitar/ of a local file) a raster GDAL opens.
   if (l.starts_with("/vsi")) {
@@ -36,7 +38,8 @@ SourceKind classify_source(std::string_view spec) {
   if (!std::filesystem::exists(status))
     throw SourceError(std::string(spec) + ": no such file or folder (a source is a raster file, a tile folder, an " +
                       ".mbtiles file, an http(s) URL template or `none`)");
-  if (std::filesystem::is_directory(status)) return SourceKind::directory;
+  if (std::filesystem::is_directory(status))
+    return std::filesystem::is_regular_file(path / "layer.json", ec) ? SourceKind::quantized_mesh : SourceKind::directory;
   if (l.ends_with(".mbtiles")) return SourceKind::mbtiles;
   return SourceKind::raster;
 }

@@ -8,6 +8,8 @@
 //                               read through GDAL's range requests, only the blocks needed
 //   *.mbtiles                -> MbtilesTileSource + decoder
 //   a folder                 -> DirectoryTileSource ({z}/{x}/{y}.png|webp|jpg) + decoder
+//   a folder with layer.json, or an http(s) URL of a layer.json
+//                            -> QuantizedMeshSource (Cesium quantized-mesh terrain)
 //   any other file           -> a GDAL raster (GeoTIFF, .hgt, VRT, .img, ...; any CRS)
 
 #include <functional>
@@ -20,7 +22,7 @@
 
 namespace trailray::terrain {
 
-enum class SourceKind { none, http, mbtiles, directory, raster, remote_raster };
+enum class SourceKind { none, http, mbtiles, directory, raster, remote_raster, quantized_mesh };
 
 // What `spec` names, from its spelling and (for paths) what is on disk. Throws SourceError for
 // an empty spec or a path that does not exist.

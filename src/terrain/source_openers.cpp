@@ -12,6 +12,7 @@
 #include "terrain/http_source.hpp"
 #include "terrain/image_codec.hpp"
 #include "terrain/mbtiles_source.hpp"
+#include "terrain/quantized_mesh_source.hpp"
 #include "terrain/source_factory.hpp"
 #include "terrain/count_geotiff.hpp"
 
@@ -77,6 +78,7 @@ std::unique_ptr<HeightSource> open_height_source(const SourceSettings& s, const 
   if (kind == SourceKind::none) return nullptr;
   if (kind == SourceKind::raster) return std::make_unique<GdalHeightSource>(s.source);
   if (kind == SourceKind::remote_raster) return open_remote_height_source(s, c.network);
+  if (kind == SourceKind::quantized_mesh) return std::make_unique<QuantizedMeshSource>(s.source, c.network);
 
   // The encoding: said by the user, else by the source's metadata, else by its name, else
   // Terrarium (the most common); a wrong guess shows as implausible heights, and the decoder's
@@ -107,6 +109,8 @@ std::unique_ptr<ImagerySource> open_imagery_source(const SourceSettings& s, cons
   if (kind == SourceKind::none) return nullptr;
   if (kind == SourceKind::raster) return std::make_unique<GdalImagerySource>(s.source);
   if (kind == SourceKind::remote_raster) return open_remote_imagery_source(s, c.network);
+  if (kind == SourceKind::quantized_mesh)
+    throw SourceError(s.source + ": a quantized-mesh layer holds heights, not imagery (give it as --terrain)");
   HttpSourceOptions http = http_options(s, c);
   if (kind == SourceKind::http) {
     http.validate = [](std::span<const unsigned char> bytes) -> std::optional<std::string> {

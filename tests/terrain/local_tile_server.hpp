@@ -444,7 +444,8 @@ class LocalTileServer {
     std::vector<unsigned char> bytes;
     {
       std::lock_guard lock(mutex_);
-      const auto it = files_.find(target.substr(target.find('/', 1) + 1));
+      const std::string path = target.substr(0, target.find('?'));  // a query names no other file
+      const auto it = files_.find(path.substr(path.find('/', 1) + 1));
       if (it == files_.end()) return Response{404, {}, {}};
       bytes = it->second;
     }

@@ -1,0 +1,80 @@
+#pragma once
+// Quantized-mesh terrain as a height source: Cesium's layer.json and its .terrain tiles, from a
+// folder or a server (what cesium-terrain-builder, Cesium ion exports and AlpineMaps' terrain
+// builder write). layer.json gives the tiles' template ("{z}/{x}/{y}.terrain?v={version}"), the
+// scheme (tms, rows from the south, unless "xyz"), the projection (EPSG:4326: two tiles at zoom
+// 0, each 180 degrees square; or EPSG:3857), the zoom range and the bounds.
+//
+// Heights are read off the triangles as they are: sample_native (what `elevation` and every
+// track's ground use) finds the finest level's triangle under a point and weighs its vertices
+// barycentrically, no grid in between. The renderer's tiles are Web Mercator grids: load() fills
+// each grid sample from the mesh the same exact way (so a sample on a vertex is that vertex's
+// height), but the terrain pass draws that grid, not the mesh's own triangles.
+//
+// Tiles missing from the folder or answered 404 are no data; tiles from a server are not kept in
+// the disk cache (the decoded meshes of the last tiles used are kept in memory).
+
+#include <cstdint>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+
+#include "terrain/quantized_mesh.hpp"
+#include "terrain/terrain_config.hpp"
+#include "terrain/tile_source.hpp"
+
+namespace trailray::terrain {
+
+class HttpClient;
+
+// layer.json as read.
+struct QuantizedMeshLayer {
+  std::string tiles;          // the first template, relative to layer.json's folder or URL
+  std::string version = "1.0.0";
+  bool tms = true;            // rows from the south
+  bool geographic = true;     // EPSG:4326 (else EPSG:3857)
+  int min_zoom = 0, max_zoom = 0;
+  std::optional<geo::LatLonBounds> bounds;
+};
+
+// Throws SourceError naming the file for JSON that is not a quantized-mesh layer.
+QuantizedMeshLayer parse_quantized_mesh_layer(const std::string& json_text, const std::string& name);
+
+// Whether `folder` holds a layer.json (the quantized-mesh folder layout), and whether `url` names one.
+bool is_quantized_mesh_folder(const std::string& folder);
+bool is_quantized_mesh_url(const std::string& url);
+
+class QuantizedMeshSource final : public HeightSource {
+ public:
+  // `location`: a folder holding layer.json, or the URL of a layer.json. Throws SourceError when
+  // layer.json cannot be had or read.
+  QuantizedMeshSource(const std::string& location, const NetworkSettings& network = {});
+  ~QuantizedMeshSource() override;
+
+  const SourceInfo& info() const override { return info_; }
+  TileResult<HeightTile> load(const TileId& tile, StopToken stop) override;
+  std::optional<double> sample_native(double lat, double lon) override;
+
+  // The mesh tile (z, x, y in the layer's own numbering: XYZ rows from the north) holding a place.
+  std::optional<geo::TileId> mesh_tile_at(double lat, double lon, int zoom) const;
+
+ private:
+  struct Fetched;
+  std::shared_ptr<const MeshHeights> mesh(const geo::TileId& id, StopToken stop, std::string* error);
+  double height_at(double lat, double lon, int zoom, StopToken stop, std::string* error);
+
+  std::string location_;
+  bool remote_ = false;
+  QuantizedMeshLayer layer_;
+  SourceInfo info_;
+  std::unique_ptr<HttpClient> http_;
+  bool offline_ = false;
+  std::mutex mutex_;
+  std::list<std::pair<std::uint64_t, std::shared_ptr<const MeshHeights>>> recent_;  // most recent first
+  std::unordered_map<std::uint64_t, std::shared_ptr<const MeshHeights>> missing_;   // tiles with no data
+};
+
+}  // namespace trailray::terrain
