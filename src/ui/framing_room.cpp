@@ -10,8 +10,15 @@ FramingRoom panel_framing_room(const ViewerSettings& s, const scene::Lens& lens,
                                double pixel_ratio) {
   const double r = pixel_ratio > 0.0 ? pixel_ratio : 1.0;
   const auto w = static_cast<float>(lens.width_px / r), h = static_cast<float>(lens.height_px / r);
+  return framing_room_beside(default_panel_layout(w, h, s.show_menu ? kPanelTitleBarHeight : 0.0f), s, lens, legend,
+                             pixel_ratio);
+}
+
+FramingRoom framing_room_beside(const PanelLayout& l, const ViewerSettings& s, const scene::Lens& lens,
+                                const scene::KeptClearCorner& legend, double pixel_ratio) {
+  const double r = pixel_ratio > 0.0 ? pixel_ratio : 1.0;
+  const auto w = static_cast<float>(lens.width_px / r);
   const float menu = s.show_menu ? kPanelTitleBarHeight : 0.0f;
-  const PanelLayout l = default_panel_layout(w, h, menu);
   scene::ImageArea area{0.0, menu * r, static_cast<double>(lens.width_px), static_cast<double>(lens.height_px)};
   if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right() * r;
   if (s.show_chart) area.bottom_px = l.chart.y * r;

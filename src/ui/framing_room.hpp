@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "scene/framing.hpp"
+#include "ui/panel_layout.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::ui {
@@ -21,5 +22,9 @@ struct FramingRoom {
 // window too small for the panels and a view gets the legend's corner and no area.
 FramingRoom panel_framing_room(const ViewerSettings& settings, const scene::Lens& lens,
                                const scene::KeptClearCorner& legend, double pixel_ratio = 1.0);
+// The same for panels laid out as `layout` (interface units; the page's folded layout on a small
+// window): the default layout is default_panel_layout's.
+FramingRoom framing_room_beside(const PanelLayout& layout, const ViewerSettings& settings, const scene::Lens& lens,
+                                const scene::KeptClearCorner& legend, double pixel_ratio);
 
 }  // namespace trailray::ui

@@ -45,24 +45,9 @@ ui::FramingRoom page_framing_room(const ui::ViewerSettings& s, const scene::Lens
   const double r = pixel_ratio > 0.0 ? pixel_ratio : 1.0;
   const auto w = static_cast<float>(lens.width_px / r), h = static_cast<float>(lens.height_px / r);
   if (!small_page(w, h)) return ui::panel_framing_room(s, lens, legend, pixel_ratio);
-  // ui::panel_framing_room's reasoning, for the page's folded layout.
+  // The default framing's reasoning, beside the page's folded layout.
   const float menu = s.show_menu ? ui::kPanelTitleBarHeight : 0.0f;
-  const ui::PanelLayout l = page_panel_layout(w, h, menu, ui::kPanelTitleBarHeight);
-  scene::ImageArea area{0.0, menu * r, static_cast<double>(lens.width_px), static_cast<double>(lens.height_px)};
-  if (s.show_tracks || s.show_statistics) area.left_px = l.tracks.right() * r;
-  if (s.show_chart) area.bottom_px = l.chart.y * r;
-  const double margin = scene::FramingOptions{}.margin_fraction;
-  if (!legend.empty() && legend.width_px > area.left_px) {
-    scene::ImageArea above_legend = area;
-    above_legend.bottom_px = std::min(area.bottom_px, static_cast<double>(lens.height_px) - legend.height_px);
-    if (!scene::area_holds_centre(above_legend, lens, margin) && scene::area_holds_centre(area, lens, margin))
-      return {legend, area};
-    area = above_legend;
-  }
-  if (!scene::area_holds_centre(area, lens, margin)) return {legend, std::nullopt};
-  scene::KeptClearCorner replay;
-  if (s.show_replay) replay = {scene::ImageCorner::top_right, (w - l.replay.x) * r, l.replay.bottom() * r};
-  return {replay, area};
+  return ui::framing_room_beside(page_panel_layout(w, h, menu, ui::kPanelTitleBarHeight), s, lens, legend, pixel_ratio);
 }
 
 bool PanelKeeper::keep_in_view(const ui::ViewerModel& model) {

@@ -58,3 +58,17 @@ def cli_json(*args):
     code, out, err = run_cli(*args, check=False)
     assert out, f"trailray {' '.join(map(str, args))} printed nothing ({code}): {err}"
     return json.loads(out)
+
+
+def surface_pair_walk(folder: pathlib.Path, points: int = 41):
+    """The shared lidar pair of one forest (dem/SURFACE_PAIR.json): its terrain and surface models,
+    and a GPX of `points` points without elevations along its line, written into `folder`."""
+    pair_file = shared("dem/SURFACE_PAIR.json")
+    pair = json.loads(pair_file.read_text())
+    (a_lat, a_lon), (b_lat, b_lon) = pair["line"]
+    n = points - 1
+    trkpts = "".join(f'<trkpt lat="{a_lat + (b_lat - a_lat) * i / n}" lon="{a_lon + (b_lon - a_lon) * i / n}"/>'
+                     for i in range(points))
+    walk = folder / "walk.gpx"
+    walk.write_text(f'<gpx version="1.1" creator="t"><trk><trkseg>{trkpts}</trkseg></trk></gpx>')
+    return str(pair_file.parent / pair["dtm"]), str(pair_file.parent / pair["dsm"]), walk

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import trailray
-from conftest import cli_json, shared
+from conftest import cli_json, shared, surface_pair_walk
 
 
 def quietly(function, *args, **kwargs):
@@ -75,14 +75,7 @@ def test_airspaces_are_the_commands():
 
 
 def test_elevation_with_a_surface_model_is_the_commands(tmp_path):
-    pair_file = shared("dem/SURFACE_PAIR.json")
-    pair = json.loads(pair_file.read_text())
-    dtm, dsm = str(pair_file.parent / pair["dtm"]), str(pair_file.parent / pair["dsm"])
-    (a_lat, a_lon), (b_lat, b_lon) = pair["line"]
-    points = "".join(f'<trkpt lat="{a_lat + (b_lat - a_lat) * i / 40}" lon="{a_lon + (b_lon - a_lon) * i / 40}"/>'
-                     for i in range(41))
-    walk = tmp_path / "walk.gpx"
-    walk.write_text(f'<gpx version="1.1" creator="t"><trk><trkseg>{points}</trkseg></trk></gpx>')
+    dtm, dsm, walk = surface_pair_walk(tmp_path)
     expected = cli_json("elevation", "--json", "--terrain", dtm, "--surface", dsm, str(walk))
     got = trailray.elevation(quietly(trailray.read, walk).tracks[0], dtm, surface=dsm)
     assert got["summary"] == expected["summary"]

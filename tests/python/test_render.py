@@ -1,14 +1,13 @@
 """trailray.render: the command's picture as an array, its options in Python spelling, refused
 as the command refuses them; Jupyter's pictures."""
 
-import json
 import warnings
 
 import numpy as np
 import pytest
 
 import trailray
-from conftest import run_cli, shared
+from conftest import run_cli, shared, surface_pair_walk
 
 
 def magenta(picture):
@@ -55,14 +54,7 @@ def test_terrain_from_a_dem_is_drawn():
 
 
 def test_a_surface_model_is_drawn_and_colours_by_cover(tmp_path):
-    pair_file = shared("dem/SURFACE_PAIR.json")
-    pair = json.loads(pair_file.read_text())
-    dtm, dsm = str(pair_file.parent / pair["dtm"]), str(pair_file.parent / pair["dsm"])
-    (a_lat, a_lon), (b_lat, b_lon) = pair["line"]
-    points = "".join(f'<trkpt lat="{a_lat + (b_lat - a_lat) * i / 40}" lon="{a_lon + (b_lon - a_lon) * i / 40}"/>'
-                     for i in range(41))
-    walk = tmp_path / "walk.gpx"
-    walk.write_text(f'<gpx version="1.1" creator="t"><trk><trkseg>{points}</trkseg></trk></gpx>')
+    dtm, dsm, walk = surface_pair_walk(tmp_path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", trailray.TrailrayWarning)
         ground = trailray.render(walk, terrain=dtm, size=(320, 180))
