@@ -1,6 +1,5 @@
 """score, flight, Task, Airspaces and elevation give the numbers of the commands' --json."""
 
-import json
 import warnings
 
 import numpy as np
