@@ -34,6 +34,16 @@ std::optional<double> number_attribute(const char** attrs, std::string_view name
   return x;
 }
 
+// A <Point> being read (outside the handler: clang wants a class with default member
+// initialisers complete before an optional of it is emplaced inside another class).
+struct PendingPoint {
+  SourcePosition where;
+  std::string type, zone;
+  std::optional<double> radius, length;
+  Turnpoint tp;
+  bool located = false;
+};
+
 class XcsoarTaskHandler final : public XmlHandler {
  public:
   XcsoarTaskHandler(Task& task, WarningCollector& warnings) : task_(task), warnings_(warnings) {}
@@ -80,14 +90,6 @@ class XcsoarTaskHandler final : public XmlHandler {
   bool had_start = false;
 
  private:
-  struct PendingPoint {
-    SourcePosition where;
-    std::string type, zone;
-    std::optional<double> radius, length;
-    Turnpoint tp;
-    bool located = false;
-  };
-
   void finish_point() {
     PendingPoint p = std::move(*point_);
     point_.reset();
