@@ -194,6 +194,9 @@ std::vector<unsigned char> encode_quantized_mesh(const QuantizedMesh& m) {
   for (const auto* channel : {&m.u, &m.v, &m.h}) {
     std::int32_t previous = 0;
     for (std::uint16_t value : *channel) {
+      if (value > kQuantizedMax)
+        throw std::invalid_argument("encode_quantized_mesh: a quantized value of " + std::to_string(value) +
+                                    " (0..32767)");
       put(out, zigzag_encode(static_cast<std::int32_t>(value) - previous));
       previous = value;
     }

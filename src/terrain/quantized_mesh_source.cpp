@@ -42,6 +42,39 @@ std::string replace_all(std::string text, const std::string& what, const std::st
   return text;
 }
 
+// A point of a triangle being clipped: its place in the Mercator tile (fractions) and height.
+struct ClipPoint {
+  double x, y, h;
+};
+
+// Sutherland-Hodgman: the polygon's part on the inner side of one border of [0, 1] x [0, 1].
+std::vector<ClipPoint> clip_side(const std::vector<ClipPoint>& in, int side) {
+  const auto inside = [side](const ClipPoint& p) {
+    switch (side) {
+      case 0: return p.x >= 0.0;
+      case 1: return p.x <= 1.0;
+      case 2: return p.y >= 0.0;
+      default: return p.y <= 1.0;
+    }
+  };
+  const auto cross = [side](const ClipPoint& a, const ClipPoint& b) {
+    const double edge = side == 0 ? 0.0 : side == 1 ? 1.0 : side == 2 ? 0.0 : 1.0;
+    const double t = side < 2 ? (edge - a.x) / (b.x - a.x) : (edge - a.y) / (b.y - a.y);
+    return ClipPoint{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.h + t * (b.h - a.h)};
+  };
+  std::vector<ClipPoint> out;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const ClipPoint &a = in[i], &b = in[(i + 1) % in.size()];
+    if (inside(a)) {
+      out.push_back(a);
+      if (!inside(b)) out.push_back(cross(a, b));
+    } else if (inside(b)) {
+      out.push_back(cross(a, b));
+    }
+  }
+  return out;
+}
+
 std::uint64_t key_of(const geo::TileId& t) {
   return (std::uint64_t(t.zoom) << 58) | (std::uint64_t(t.x) << 29) | std::uint64_t(t.y);
 }
@@ -234,6 +267,73 @@ double QuantizedMeshSource::height_at(double lat, double lon, int zoom, StopToke
   return kNaN;
 }
 
+std::shared_ptr<const TileTriangles> QuantizedMeshSource::triangles_over(const TileId& id, int mesh_zoom,
+                                                                         StopToken stop) {
+  const std::optional<geo::LatLonBounds> box = geo::tile_bounds_latlon(id);
+  if (!box) return nullptr;
+  const double inset = 1e-9;
+  const std::optional<geo::TileId> nw = mesh_tile_at(box->max_lat - inset, box->min_lon + inset, mesh_zoom);
+  const std::optional<geo::TileId> se = mesh_tile_at(box->min_lat + inset, box->max_lon - inset, mesh_zoom);
+  if (!nw || !se || se->x < nw->x || se->y < nw->y) return nullptr;
+  // Far coarser than the layer's tiles: the grid alone (the triangles would be too many to draw).
+  if (std::uint64_t{se->x - nw->x + 1} * (se->y - nw->y + 1) > 16) return nullptr;
+  auto out = std::make_shared<TileTriangles>();
+  for (std::uint32_t qy = nw->y; qy <= se->y; ++qy)
+    for (std::uint32_t qx = nw->x; qx <= se->x; ++qx) {
+      const std::shared_ptr<const MeshHeights> heights = mesh({mesh_zoom, qx, qy}, stop, nullptr);
+      if (!heights) continue;
+      const QuantizedMesh& m = heights->mesh();
+      // Each vertex's place in the Mercator tile (fractions from its north-west corner).
+      std::vector<ClipPoint> at(m.vertex_count());
+      for (std::size_t i = 0; i < at.size(); ++i) {
+        const double fu = double(m.u[i]) / kQuantizedMax, fv = double(m.v[i]) / kQuantizedMax;
+        std::optional<geo::TileCoord> c;
+        if (layer_.geographic) {
+          const double size = 180.0 / double(std::uint64_t{1} << mesh_zoom);
+          c = geo::fractional_tile_coord(90.0 - (qy + 1) * size + fv * size, -180.0 + (qx + fu) * size, id.zoom);
+        } else {
+          const double scale = std::ldexp(1.0, id.zoom - mesh_zoom);
+          c = geo::TileCoord{(qx + fu) * scale, (qy + 1.0 - fv) * scale};
+        }
+        at[i] = c ? ClipPoint{c->x - id.x, c->y - id.y, m.height_m(i)} : ClipPoint{-1e9, -1e9, 0.0};
+      }
+      std::vector<std::int64_t> shared(at.size(), -1);  // unclipped vertices, added once
+      const auto add = [&](const ClipPoint& p) {
+        out->u.push_back(static_cast<float>(std::clamp(p.x, 0.0, 1.0)));
+        out->v.push_back(static_cast<float>(std::clamp(p.y, 0.0, 1.0)));
+        out->height_m.push_back(static_cast<float>(p.h));
+        return static_cast<std::uint32_t>(out->u.size() - 1);
+      };
+      const auto inside = [](const ClipPoint& p) { return p.x >= 0.0 && p.x <= 1.0 && p.y >= 0.0 && p.y <= 1.0; };
+      for (std::size_t f = 0; f < m.triangle_count(); ++f) {
+        const std::uint32_t k[3] = {m.triangles[3 * f], m.triangles[3 * f + 1], m.triangles[3 * f + 2]};
+        const ClipPoint &a = at[k[0]], &b = at[k[1]], &c = at[k[2]];
+        if ((a.x < 0 && b.x < 0 && c.x < 0) || (a.x > 1 && b.x > 1 && c.x > 1) || (a.y < 0 && b.y < 0 && c.y < 0) ||
+            (a.y > 1 && b.y > 1 && c.y > 1))
+          continue;
+        if (inside(a) && inside(b) && inside(c)) {
+          for (const std::uint32_t i : k) {
+            if (shared[i] < 0) shared[i] = add(at[i]);
+            out->indices.push_back(static_cast<std::uint32_t>(shared[i]));
+          }
+          continue;
+        }
+        std::vector<ClipPoint> polygon{a, b, c};
+        for (int side = 0; side < 4 && !polygon.empty(); ++side) polygon = clip_side(polygon, side);
+        if (polygon.size() < 3) continue;
+        const std::uint32_t first = add(polygon[0]);
+        std::uint32_t previous = add(polygon[1]);
+        for (std::size_t i = 2; i < polygon.size(); ++i) {
+          const std::uint32_t next = add(polygon[i]);
+          out->indices.insert(out->indices.end(), {first, previous, next});
+          previous = next;
+        }
+      }
+    }
+  if (out->indices.empty()) return nullptr;
+  return out;
+}
+
 std::optional<double> QuantizedMeshSource::sample_native(double lat, double lon) {
   return height_at(lat, lon, layer_.max_zoom, {}, nullptr);
 }
@@ -262,6 +362,8 @@ TileResult<HeightTile> QuantizedMeshSource::load(const TileId& id, StopToken sto
   }
   update_height_range(t);
   if (!t.has_data()) return {TileStatus::no_data, {}, {}};
+  // Drawn as the layer's own triangles, clipped to the tile (the samples stay what sampling reads).
+  t.triangles = triangles_over(id, mesh_zoom, stop);
   return {TileStatus::ok, std::move(t), {}};
 }
 

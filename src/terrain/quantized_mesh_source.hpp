@@ -7,9 +7,10 @@
 //
 // Heights are read off the triangles as they are: sample_native (what `elevation` and every
 // track's ground use) finds the finest level's triangle under a point and weighs its vertices
-// barycentrically, no grid in between. The renderer's tiles are Web Mercator grids: load() fills
-// each grid sample from the mesh the same exact way (so a sample on a vertex is that vertex's
-// height), but the terrain pass draws that grid, not the mesh's own triangles.
+// barycentrically, no grid in between. The renderer's tiles are Web Mercator tiles: load() gives
+// each the layer's own triangles clipped to it (HeightTile::triangles, drawn as they are), and
+// its grid of samples from the mesh the same exact way (what the level of detail and the
+// in-memory sampling read).
 //
 // Tiles missing from the folder or answered 404 are no data; tiles from a server are not kept in
 // the disk cache (the decoded meshes of the last tiles used are kept in memory).
@@ -64,6 +65,8 @@ class QuantizedMeshSource final : public HeightSource {
  private:
   struct Fetched;
   std::shared_ptr<const MeshHeights> mesh(const geo::TileId& id, StopToken stop, std::string* error);
+  // The layer's triangles over a Mercator tile, clipped to it; null when none (or too many tiles).
+  std::shared_ptr<const TileTriangles> triangles_over(const TileId& id, int mesh_zoom, StopToken stop);
   double height_at(double lat, double lon, int zoom, StopToken stop, std::string* error);
 
   std::string location_;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,18 @@ enum class SampleLayout { pixel_is_area, pixel_is_point };
 
 inline constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
 
+// A tile's own triangles, where the source has them (a quantized-mesh layer): drawn as they are
+// instead of a grid over the samples. Vertices at (u, v), fractions of the tile from its
+// north-west corner (v downwards, in the tile's Mercator rows), with their heights in metres.
+struct TileTriangles {
+  std::vector<float> u, v, height_m;
+  std::vector<std::uint32_t> indices;  // three a triangle
+  std::size_t byte_size() const {
+    return sizeof(TileTriangles) + (u.size() + v.size() + height_m.size()) * sizeof(float) +
+           indices.size() * sizeof(std::uint32_t);
+  }
+};
+
 struct HeightTile {
   TileId id;
   std::uint32_t width = 0, height = 0;
@@ -35,10 +48,15 @@ struct HeightTile {
   std::vector<float> heights;
   // Over the valid samples; NaN when the tile has none.
   float min_m = kNoHeight, max_m = kNoHeight;
+  // The source's own triangles over the tile (null: draw a grid over the samples). The samples
+  // stay what sampling and the level of detail read.
+  std::shared_ptr<const TileTriangles> triangles;
 
   float at(std::uint32_t col, std::uint32_t row) const { return heights[std::size_t{row} * width + col]; }
   bool has_data() const { return !std::isnan(min_m); }
-  std::size_t byte_size() const { return sizeof(HeightTile) + heights.size() * sizeof(float); }
+  std::size_t byte_size() const {
+    return sizeof(HeightTile) + heights.size() * sizeof(float) + (triangles ? triangles->byte_size() : 0);
+  }
 };
 
 // Recomputes min_m and max_m from the samples.

@@ -154,3 +154,49 @@ TEST(TerrainMesh, BadTilesAreErrorsNamingTheTile) {
 
 }  // namespace
 }  // namespace trailray::render
+
+namespace trailray::render {
+namespace {
+
+// A tile with its source's own triangles (a quantized-mesh layer's): drawn as they are, each
+// vertex at its place and height, wound as the grid's, skirts under the border edges only.
+TEST(TerrainMesh, TheSourcesOwnTrianglesAreDrawnAsTheyAre) {
+  auto tile = tile_from(kAlpsTile, 2, terrain::SampleLayout::pixel_is_point, [](auto, auto) { return 1000.0f; });
+  auto t = std::make_shared<terrain::TileTriangles>();
+  // The tile's four corners and a peak inside, four triangles around the peak, one wound the other way.
+  t->u = {0.0f, 1.0f, 1.0f, 0.0f, 0.3f};
+  t->v = {0.0f, 0.0f, 1.0f, 1.0f, 0.6f};
+  t->height_m = {1000.0f, 1010.0f, 1020.0f, 1030.0f, 1500.0f};
+  t->indices = {0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 0, 4};
+  tile.triangles = t;
+  const TerrainMesh mesh = build_terrain_mesh(tile, 65, 0.0f);
+  EXPECT_EQ(mesh.grid_vertices, 0u);
+  // Five vertices, then two skirt vertices for each of the four border edges.
+  ASSERT_EQ(mesh.vertices.size(), 5u + 4u * 2u);
+  EXPECT_EQ(mesh.indices.size(), 4u * 3u + 4u * 6u);
+  for (std::size_t k = 0; k < 5; ++k) {
+    const auto ll = geo::latlon_from_tile_pixel(kAlpsTile, t->u[k], t->v[k], 1);
+    const glm::dvec3 at = scene::ecef_from({ll->lat, ll->lon, double{t->height_m[k]}}) - mesh.origin;
+    EXPECT_NEAR(mesh.vertices[k].x, at.x, 0.01) << k;
+    EXPECT_NEAR(mesh.vertices[k].y, at.y, 0.01) << k;
+    EXPECT_NEAR(mesh.vertices[k].z, at.z, 0.01) << k;
+    EXPECT_EQ(mesh.vertices[k].height_m, t->height_m[k]);
+  }
+  // Every triangle faces up (the same winding), whatever order the source gave.
+  for (std::size_t f = 0; f < 12; f += 3) {
+    const auto p = [&](std::uint32_t i) {
+      return glm::dvec3(mesh.vertices[i].x, mesh.vertices[i].y, mesh.vertices[i].z) + mesh.origin;
+    };
+    const glm::dvec3 n = glm::cross(p(mesh.indices[f + 1]) - p(mesh.indices[f]), p(mesh.indices[f + 2]) - p(mesh.indices[f]));
+    EXPECT_GT(glm::dot(n, glm::normalize(p(4))), 0.0) << f;
+  }
+  // The peak's normal leans no way in particular: it points up within the slopes around it.
+  EXPECT_GT(glm::dot(glm::dvec3(mesh.vertices[4].nx, mesh.vertices[4].ny, mesh.vertices[4].nz),
+                     scene::enu_axes_at(geo::latlon_from_tile_pixel(kAlpsTile, 0.3, 0.6, 1)->lat,
+                                        geo::latlon_from_tile_pixel(kAlpsTile, 0.3, 0.6, 1)->lon)
+                         .up),
+            0.5);
+}
+
+}  // namespace
+}  // namespace trailray::render

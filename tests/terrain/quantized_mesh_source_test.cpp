@@ -108,11 +108,29 @@ TEST(QuantizedMeshSource, HeightsOffTheTrianglesFromAFolder) {
   // Through the sampler, as `elevation` reads it: the same.
   std::unique_ptr<HeightSource> opened = open_height_source(SourceSettings{folder, {}, {}, {}, {}, {}, {}, {}}, {});
   EXPECT_NEAR(HeightSampler(*opened).sample(plat, plon), *source.sample_native(plat, plon), 1e-9);
-  // The renderer's Mercator tiles carry the same heights at their samples.
-  const TileResult<HeightTile> tile = source.load(*geo::tile_containing(46.705, 7.87, 13), {});
+  // The renderer's Mercator tiles: the layer's own triangles clipped to the tile, covering it (the
+  // fractions' areas add up to the tile's), every vertex on the mesh.
+  const geo::TileId mercator = *geo::tile_containing(46.705, 7.87, 13);
+  const TileResult<HeightTile> tile = source.load(mercator, {});
   ASSERT_EQ(tile.status, TileStatus::ok);
   EXPECT_GT(tile.tile.max_m, 1100.0f);
   EXPECT_LT(tile.tile.min_m, 1400.0f);
+  ASSERT_NE(tile.tile.triangles, nullptr);
+  const TileTriangles& t = *tile.tile.triangles;
+  double area = 0.0;
+  for (std::size_t f = 0; f < t.indices.size(); f += 3) {
+    const std::uint32_t a = t.indices[f], b = t.indices[f + 1], c = t.indices[f + 2];
+    area += 0.5 * std::abs((t.u[b] - t.u[a]) * (t.v[c] - t.v[a]) - (t.u[c] - t.u[a]) * (t.v[b] - t.v[a]));
+  }
+  EXPECT_NEAR(area, 1.0, 1e-4);
+  for (std::size_t k = 0; k < t.u.size(); k += 7) {
+    ASSERT_TRUE(t.u[k] >= 0.0f && t.u[k] <= 1.0f && t.v[k] >= 0.0f && t.v[k] <= 1.0f) << k;
+    // (The tile's east edge is the written layer's: a point on it belongs to the next column,
+    // which this layer has not.)
+    if (t.u[k] >= 1.0f) continue;
+    const auto ll = geo::latlon_from_tile_pixel(mercator, t.u[k], t.v[k], 1);
+    EXPECT_NEAR(t.height_m[k], *source.sample_native(ll->lat, ll->lon), 0.5) << k;
+  }
 }
 
 TEST(QuantizedMeshSource, FromAServerAndItsErrors) {

@@ -152,10 +152,81 @@ void add_skirts(TerrainMesh& mesh, const terrain::TileId& id, const std::vector<
   }
 }
 
+// The source's own triangles (a quantized-mesh tile's), drawn as they are: each vertex placed at
+// its place and height, its normal the area-weighted mean of its triangles' (so shared vertices
+// shade smoothly), every triangle wound as the grid's; skirts hang from the triangle edges that
+// lie on the tile's border.
+TerrainMesh triangles_mesh(const terrain::HeightTile& tile, const terrain::TileTriangles& t) {
+  const std::size_t n = t.u.size();
+  if (t.v.size() != n || t.height_m.size() != n || t.indices.size() % 3 != 0)
+    throw std::invalid_argument("terrain mesh: tile " + geo::to_string(tile.id) + " has inconsistent triangles");
+  for (std::uint32_t i : t.indices)
+    if (i >= n) throw std::invalid_argument("terrain mesh: tile " + geo::to_string(tile.id) + ": index past the vertices");
+  TerrainMesh mesh;
+  mesh.id = tile.id;
+  mesh.grid_vertices = 0;
+  double min_h = INFINITY, max_h = -INFINITY;
+  for (float h : t.height_m) {
+    min_h = std::min(min_h, double{h});
+    max_h = std::max(max_h, double{h});
+  }
+  if (n == 0) min_h = max_h = 0.0;
+  const auto centre = geo::latlon_from_tile_pixel(tile.id, 0.5, 0.5, 1);
+  mesh.origin = scene::ecef_from({centre->lat, centre->lon, 0.5 * (min_h + max_h)});
+  std::vector<glm::dvec3> positions(n), ups(n), normals(n, glm::dvec3(0.0));
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto ll = geo::latlon_from_tile_pixel(tile.id, t.u[k], t.v[k], 1);
+    positions[k] = scene::ecef_from({ll->lat, ll->lon, double{t.height_m[k]}});
+    ups[k] = scene::enu_axes_at(ll->lat, ll->lon).up;
+  }
+  mesh.indices.reserve(t.indices.size());
+  for (std::size_t f = 0; f + 2 < t.indices.size(); f += 3) {
+    std::uint32_t a = t.indices[f], b = t.indices[f + 1], c = t.indices[f + 2];
+    glm::dvec3 face = glm::cross(positions[b] - positions[a], positions[c] - positions[a]);
+    if (glm::dot(face, ups[a]) < 0.0) {  // the grid's winding: counter-clockwise seen from above
+      std::swap(b, c);
+      face = -face;
+    }
+    for (std::uint32_t k : {a, b, c}) normals[k] += face;
+    mesh.indices.insert(mesh.indices.end(), {a, b, c});
+  }
+  mesh.vertices.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double length = glm::length(normals[k]);
+    const glm::vec3 p = to_vec3(positions[k] - mesh.origin), nn = to_vec3(length > 0.0 ? normals[k] / length : ups[k]);
+    mesh.vertices.push_back({p.x, p.y, p.z, nn.x, nn.y, nn.z, t.height_m[k], t.u[k], t.v[k], 1.0f});
+  }
+  // Skirts under the border edges (both ends on the same side of the tile).
+  const auto side = [&](std::uint32_t k) {
+    constexpr float e = 1e-6f;
+    return (t.u[k] <= e ? 1 : 0) | (t.u[k] >= 1 - e ? 2 : 0) | (t.v[k] <= e ? 4 : 0) | (t.v[k] >= 1 - e ? 8 : 0);
+  };
+  const double depth = terrain::skirt_depth_m(tile.id, 64);
+  const std::size_t surface_indices = mesh.indices.size();  // the skirts' own are not walked
+  for (std::size_t f = 0; f + 2 < surface_indices; f += 3)
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t a = mesh.indices[f + e], b = mesh.indices[f + (e + 1) % 3];
+      if ((side(a) & side(b)) == 0) continue;
+      const auto low = [&](std::uint32_t k) {
+        TerrainVertex v = mesh.vertices[k];
+        const glm::vec3 p = to_vec3(positions[k] - depth * ups[k] - mesh.origin);
+        v.x = p.x;
+        v.y = p.y;
+        v.z = p.z;
+        mesh.vertices.push_back(v);
+        return static_cast<std::uint32_t>(mesh.vertices.size() - 1);
+      };
+      const std::uint32_t a_low = low(a), b_low = low(b);
+      mesh.indices.insert(mesh.indices.end(), {a, b, b_low, a, b_low, a_low});
+    }
+  return mesh;
+}
+
 }  // namespace
 
 TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t grid_vertices, float fill_height_m) {
   check_tile(tile);
+  if (tile.triangles && !tile.triangles->indices.empty()) return triangles_mesh(tile, *tile.triangles);
   if (grid_vertices < 2)
     throw std::invalid_argument("terrain mesh: tile " + geo::to_string(tile.id) +
                                 " needs at least 2 grid vertices, not " + std::to_string(grid_vertices));

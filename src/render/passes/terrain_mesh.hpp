@@ -45,7 +45,9 @@ struct TerrainMesh {
 std::uint32_t full_resolution_grid(const terrain::HeightTile& tile);
 
 // The mesh of `tile` with `grid_vertices` x `grid_vertices` vertices (at least 2) plus skirts of
-// terrain::skirt_depth_m(tile.id, grid_vertices - 1). Throws std::invalid_argument naming the
+// terrain::skirt_depth_m(tile.id, grid_vertices - 1); or, for a tile with its source's own
+// triangles (HeightTile::triangles), those triangles as they are (grid_vertices 0 in the mesh),
+// with skirts under the edges on the tile's border. Throws std::invalid_argument naming the
 // tile for an invalid id, an empty or inconsistent grid, or fewer than 2 grid vertices.
 TerrainMesh build_terrain_mesh(const terrain::HeightTile& tile, std::uint32_t grid_vertices, float fill_height_m);
 
