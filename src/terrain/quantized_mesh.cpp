@@ -156,9 +156,12 @@ QuantizedMesh decode_quantized_mesh(std::span<const unsigned char> bytes) {
   for (double& c : m.center_ecef) c = r.read<double>("the header");
   m.min_height_m = r.read<float>("the header");
   m.max_height_m = r.read<float>("the header");
-  if (!std::isfinite(m.min_height_m) || !std::isfinite(m.max_height_m) || m.min_height_m > m.max_height_m)
+  // Earth's heights lie within a few kilometres of sea level; far beyond is a damaged header.
+  constexpr float kFarthest = 100000.0f;
+  if (!std::isfinite(m.min_height_m) || !std::isfinite(m.max_height_m) || m.min_height_m > m.max_height_m ||
+      std::abs(m.min_height_m) > kFarthest || std::abs(m.max_height_m) > kFarthest)
     throw QuantizedMeshError(24, "the height range " + std::to_string(m.min_height_m) + ".." +
-                                     std::to_string(m.max_height_m) + " is not one");
+                                     std::to_string(m.max_height_m) + " m is not one of the Earth's");
   r.skip(kHeaderBytes - 32, "the header");  // bounding sphere, horizon occlusion point
   const std::size_t count_at = r.at();
   const std::uint32_t n = r.read<std::uint32_t>("vertex count");
@@ -257,7 +260,9 @@ double MeshHeights::at(double x, double y) const {
     const double wc = 1.0 - wa - wb;
     constexpr double eps = -1e-9;  // a point on a shared edge belongs to either triangle
     if (wa < eps || wb < eps || wc < eps) continue;
-    return wa * mesh_.height_m(a) + wb * mesh_.height_m(b) + wc * mesh_.height_m(c);
+    // Within the triangle: weights never below 0, so the height never leaves its vertices' range.
+    const double ua = std::max(wa, 0.0), ub = std::max(wb, 0.0), uc = std::max(wc, 0.0), sum = ua + ub + uc;
+    return (ua * mesh_.height_m(a) + ub * mesh_.height_m(b) + uc * mesh_.height_m(c)) / sum;
   }
   return nan;
 }

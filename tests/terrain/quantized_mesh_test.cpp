@@ -137,6 +137,11 @@ TEST(QuantizedMesh, DamagedTilesAreRefusedNamingTheByte) {
   const float low = 2000.0f;
   std::memcpy(bad.data() + 24, &low, sizeof low);
   EXPECT_THROW(decode_quantized_mesh(bad), QuantizedMeshError);
+  // A height range far from the Earth's (a damaged header).
+  bad = good;
+  const float far = 1.0e20f;
+  std::memcpy(bad.data() + 28, &far, sizeof far);
+  EXPECT_THROW(decode_quantized_mesh(bad), QuantizedMeshError);
   // A damaged gzip stream.
   std::vector<unsigned char> packed = gzip(good);
   packed.resize(packed.size() / 2);
