@@ -230,17 +230,37 @@ std::vector<unsigned char> encode_quantized_mesh(const QuantizedMesh& m) {
 
 MeshHeights::MeshHeights(QuantizedMesh mesh) : mesh_(std::move(mesh)), cells_(kCells * kCells) {
   const auto cell = [](std::uint16_t q) { return std::min(kCells - 1, int(q) * kCells / (kQuantizedMax + 1)); };
-  for (std::uint32_t t = 0; t < mesh_.triangle_count(); ++t) {
-    int x0 = kCells, x1 = -1, y0 = kCells, y1 = -1;
+  struct Bounds {
+    int x0, x1, y0, y1;
+  };
+  const auto bounds = [&](std::uint32_t t) {
+    Bounds b{kCells, -1, kCells, -1};
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = mesh_.triangles[3 * t + k];
-      x0 = std::min(x0, cell(mesh_.u[i]));
-      x1 = std::max(x1, cell(mesh_.u[i]));
-      y0 = std::min(y0, cell(mesh_.v[i]));
-      y1 = std::max(y1, cell(mesh_.v[i]));
+      b.x0 = std::min(b.x0, cell(mesh_.u[i]));
+      b.x1 = std::max(b.x1, cell(mesh_.u[i]));
+      b.y0 = std::min(b.y0, cell(mesh_.v[i]));
+      b.y1 = std::max(b.y1, cell(mesh_.v[i]));
     }
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) cells_[std::size_t(y) * kCells + x].push_back(t);
+    return b;
+  };
+  // Counted first: a fan of long slivers in a flat tile may each span the tile, but only a
+  // mesh of overlapping triangles needs more than this.
+  const std::size_t triangles = mesh_.triangle_count();
+  const std::uint64_t budget = 32 * std::uint64_t{triangles} + 256 * std::uint64_t{kCells * kCells};
+  std::uint64_t entries = 0;
+  for (std::uint32_t t = 0; t < triangles; ++t) {
+    const Bounds b = bounds(t);
+    entries += std::uint64_t(b.x1 - b.x0 + 1) * std::uint64_t(b.y1 - b.y0 + 1);
+  }
+  if (entries > budget)
+    throw QuantizedMeshError(0, "its " + std::to_string(triangles) + " triangles overlap far more than a " +
+                                    "terrain mesh's (they cover the tile " +
+                                    std::to_string(entries / (kCells * kCells)) + " times over)");
+  for (std::uint32_t t = 0; t < triangles; ++t) {
+    const Bounds b = bounds(t);
+    for (int y = b.y0; y <= b.y1; ++y)
+      for (int x = b.x0; x <= b.x1; ++x) cells_[std::size_t(y) * kCells + x].push_back(t);
   }
 }
 

@@ -42,8 +42,10 @@ struct QuantizedMesh {
 
   std::size_t vertex_count() const { return u.size(); }
   std::size_t triangle_count() const { return triangles.size() / 3; }
+  // In double throughout: the range subtracted in float may round past its top (found by fuzzing).
   double height_m(std::size_t vertex) const {
-    return min_height_m + (max_height_m - min_height_m) * (double(h[vertex]) / kQuantizedMax);
+    const double low = min_height_m, high = max_height_m;
+    return low + (high - low) * (double(h[vertex]) / kQuantizedMax);
   }
 };
 
@@ -58,7 +60,10 @@ std::vector<unsigned char> encode_quantized_mesh(const QuantizedMesh& mesh);
 
 // The height at (x, y), fractions of the tile from its south-west corner (0..1), exactly on the
 // mesh: the triangle holding the point, its three vertices' heights weighted barycentrically.
-// NaN outside every triangle. `grid` accelerates repeated queries (built on first use).
+// NaN outside every triangle. A grid of cells, each listing the triangles whose bounds meet it,
+// finds the triangle. Terrain triangles do not overlap, so the lists stay short; a tile whose
+// triangles would fill them far past that (a damaged or hostile tile: 1 MiB of overlapping
+// tile-sized triangles would ask for over a gigabyte) is refused with QuantizedMeshError.
 class MeshHeights {
  public:
   explicit MeshHeights(QuantizedMesh mesh);

@@ -148,5 +148,54 @@ TEST(QuantizedMesh, DamagedTilesAreRefusedNamingTheByte) {
   EXPECT_THROW(decode_quantized_mesh(packed), QuantizedMeshError);
 }
 
+// One triangle over the south-west half of the tile, its three vertices at quantized height q.
+QuantizedMesh half_tile(float low, float high, std::uint16_t q) {
+  QuantizedMesh m;
+  m.min_height_m = low;
+  m.max_height_m = high;
+  m.u = {0, kQuantizedMax, 0};
+  m.v = {0, 0, kQuantizedMax};
+  m.h = {q, q, q};
+  m.triangles = {0, 1, 2};
+  return m;
+}
+
+TEST(QuantizedMesh, TheTopOfTheHeightRangeIsItsHighestHeightExactly) {
+  // Found by fuzz_quantized_mesh: the range subtracted in float rounded 0.0002 m past its top.
+  const QuantizedMesh m = half_tile(-8559.03906f, -0.126182854f, kQuantizedMax);
+  EXPECT_EQ(m.height_m(0), double(m.max_height_m));
+  const MeshHeights heights(m);
+  EXPECT_LE(heights.at(0.2, 0.2), double(m.max_height_m));
+  EXPECT_EQ(half_tile(-8559.03906f, -0.126182854f, 0).height_m(0), double(-8559.03906f));
+}
+
+TEST(QuantizedMesh, OverlappingTrianglesPastATerrainMeshsAreRefused) {
+  // A long fan of slivers from one corner, as a flat tile may hold: each spans most of the
+  // tile's cells, and the index takes them.
+  QuantizedMesh fan = half_tile(0.0f, 100.0f, 0);
+  fan.u = {0};
+  fan.v = {0};
+  fan.h = {0};
+  fan.triangles.clear();
+  for (std::uint16_t k = 0; k <= 200; ++k) {
+    fan.u.push_back(kQuantizedMax);
+    fan.v.push_back(static_cast<std::uint16_t>(k * (kQuantizedMax / 200)));
+    fan.h.push_back(static_cast<std::uint16_t>(k * 100));
+  }
+  for (std::uint32_t k = 1; k <= 200; ++k) fan.triangles.insert(fan.triangles.end(), {0, k, k + 1});
+  const MeshHeights fan_heights(fan);
+  EXPECT_FALSE(std::isnan(fan_heights.at(0.9, 0.5)));
+  // The same tile-sized triangle 50,000 times (a hostile tile: 300 kB that would ask for 200 MB
+  // of index): refused.
+  QuantizedMesh stacked = half_tile(0.0f, 100.0f, 0);
+  for (int k = 1; k < 50000; ++k) stacked.triangles.insert(stacked.triangles.end(), {0, 1, 2});
+  try {
+    const MeshHeights refused(stacked);
+    FAIL() << "50,000 stacked triangles were indexed";
+  } catch (const QuantizedMeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("overlap"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace trailray::terrain
