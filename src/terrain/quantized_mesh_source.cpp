@@ -170,15 +170,28 @@ QuantizedMeshSource::QuantizedMeshSource(const std::string& location, const Netw
 
 QuantizedMeshSource::~QuantizedMeshSource() = default;
 
-std::optional<geo::TileId> QuantizedMeshSource::mesh_tile_at(double lat, double lon, int zoom) const {
+std::optional<QuantizedMeshSource::MeshPlace> QuantizedMeshSource::mesh_place(double lat, double lon, int zoom) const {
   if (!std::isfinite(lat) || !std::isfinite(lon) || zoom < 0 || zoom > 29) return std::nullopt;
-  if (!layer_.geographic) return geo::tile_containing(lat, lon, zoom);
+  if (!layer_.geographic) {
+    const std::optional<geo::TileCoord> c = geo::fractional_tile_coord(lat, lon, zoom);
+    const std::optional<geo::TileId> id = geo::tile_containing(lat, lon, zoom);
+    if (!c || !id) return std::nullopt;
+    return MeshPlace{*id, c->x - id->x, 1.0 - (c->y - id->y)};
+  }
+  // EPSG:4326: two tiles at zoom 0, each 180 degrees square, rows from the north.
   const double size = 180.0 / double(std::uint64_t{1} << zoom);
   const double wrapped = lon - 360.0 * std::floor((lon + 180.0) / 360.0);
+  const double column = (wrapped + 180.0) / size, row = (90.0 - std::clamp(lat, -90.0, 90.0)) / size;
   const auto columns = std::uint32_t(2u << zoom), rows = std::uint32_t(1u << zoom);
-  const auto x = std::min(columns - 1, static_cast<std::uint32_t>(std::floor((wrapped + 180.0) / size)));
-  const auto y = std::min(rows - 1, static_cast<std::uint32_t>(std::floor((90.0 - std::clamp(lat, -90.0, 90.0)) / size)));
-  return geo::TileId{zoom, x, y};
+  const auto x = std::min(columns - 1, static_cast<std::uint32_t>(std::floor(column)));
+  const auto y = std::min(rows - 1, static_cast<std::uint32_t>(std::floor(row)));
+  return MeshPlace{geo::TileId{zoom, x, y}, column - x, 1.0 - (row - y)};
+}
+
+std::optional<geo::TileId> QuantizedMeshSource::mesh_tile_at(double lat, double lon, int zoom) const {
+  const std::optional<MeshPlace> place = mesh_place(lat, lon, zoom);
+  if (!place) return std::nullopt;
+  return place->tile;
 }
 
 std::shared_ptr<const MeshHeights> QuantizedMeshSource::mesh(const geo::TileId& id, StopToken stop,
@@ -186,7 +199,7 @@ std::shared_ptr<const MeshHeights> QuantizedMeshSource::mesh(const geo::TileId& 
   const std::uint64_t key = key_of(id);
   {
     std::lock_guard lock(mutex_);
-    if (missing_.count(key) != 0) return nullptr;
+    if (missing_.contains(key)) return nullptr;
     for (auto it = recent_.begin(); it != recent_.end(); ++it)
       if (it->first == key) {
         recent_.splice(recent_.begin(), recent_, it);
@@ -233,7 +246,7 @@ std::shared_ptr<const MeshHeights> QuantizedMeshSource::mesh(const geo::TileId& 
   }
   std::lock_guard lock(mutex_);
   if (!decoded) {
-    missing_[key] = nullptr;
+    missing_.insert(key);
     return nullptr;
   }
   recent_.emplace_front(key, decoded);
@@ -241,28 +254,21 @@ std::shared_ptr<const MeshHeights> QuantizedMeshSource::mesh(const geo::TileId& 
   return decoded;
 }
 
-double QuantizedMeshSource::height_at(double lat, double lon, int zoom, StopToken stop, std::string* error) {
+double QuantizedMeshSource::height_at(double lat, double lon, int zoom, StopToken stop, std::string* error,
+                                      LastMesh* last) {
   for (int z = std::min(zoom, layer_.max_zoom); z >= layer_.min_zoom; --z) {
-    const std::optional<geo::TileId> id = mesh_tile_at(lat, lon, z);
-    if (!id) return kNaN;
-    const std::shared_ptr<const MeshHeights> m = mesh(*id, stop, error);
-    if (!m) {
-      if (error && !error->empty()) return kNaN;
-      continue;  // no tile at this level: a coarser one may have the place
-    }
-    double x = 0.0, y = 0.0;
-    if (layer_.geographic) {
-      const double size = 180.0 / double(std::uint64_t{1} << z);
-      const double wrapped = lon - 360.0 * std::floor((lon + 180.0) / 360.0);
-      x = (wrapped + 180.0) / size - id->x;
-      y = 1.0 - ((90.0 - lat) / size - id->y);
+    const std::optional<MeshPlace> place = mesh_place(lat, lon, z);
+    if (!place) return kNaN;
+    std::shared_ptr<const MeshHeights> m;
+    if (last && last->key == key_of(place->tile)) {
+      m = last->mesh;
     } else {
-      const std::optional<geo::TileCoord> c = geo::fractional_tile_coord(lat, lon, z);
-      if (!c) return kNaN;
-      x = c->x - id->x;
-      y = 1.0 - (c->y - id->y);
+      m = mesh(place->tile, stop, error);
+      if (error && !error->empty()) return kNaN;
+      if (last) *last = {key_of(place->tile), m};
     }
-    return m->at(std::clamp(x, 0.0, 1.0), std::clamp(y, 0.0, 1.0));
+    if (!m) continue;  // no tile at this level: a coarser one may have the place
+    return m->at(std::clamp(place->x, 0.0, 1.0), std::clamp(place->y, 0.0, 1.0));
   }
   return kNaN;
 }
@@ -350,12 +356,13 @@ TileResult<HeightTile> QuantizedMeshSource::load(const TileId& id, StopToken sto
   t.width = t.height = 256;
   t.heights.assign(256 * 256, kNoHeight);
   std::string error;
+  LastMesh last;
   for (std::uint32_t row = 0; row < 256; ++row) {
     if (stop.stop_requested()) return {TileStatus::cancelled, {}, {}};
     for (std::uint32_t col = 0; col < 256; ++col) {
       const std::optional<geo::LatLon> p = geo::latlon_from_tile_pixel(id, col + 0.5, row + 0.5, 256);
       if (!p) continue;
-      const double h = height_at(p->lat, p->lon, mesh_zoom, stop, &error);
+      const double h = height_at(p->lat, p->lon, mesh_zoom, stop, &error, &last);
       if (!error.empty()) return {TileStatus::failed, {}, location_ + " " + geo::to_string(id) + ": " + error};
       t.heights[std::size_t{row} * 256 + col] = static_cast<float>(h);
     }

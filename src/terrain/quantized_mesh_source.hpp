@@ -21,7 +21,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
-#include <unordered_map>
+#include <unordered_set>
 
 #include "terrain/quantized_mesh.hpp"
 #include "terrain/terrain_config.hpp"
@@ -63,11 +63,22 @@ class QuantizedMeshSource final : public HeightSource {
   std::optional<geo::TileId> mesh_tile_at(double lat, double lon, int zoom) const;
 
  private:
-  struct Fetched;
+  // A place in a mesh tile: the tile, and fractions across it from its south-west corner (the
+  // mesh's u, v), or the inverse: a mesh tile's fractions as a place (lat, lon).
+  struct MeshPlace {
+    geo::TileId tile;
+    double x = 0.0, y = 0.0;
+  };
+  std::optional<MeshPlace> mesh_place(double lat, double lon, int zoom) const;
+  // The mesh last used, so the 65,536 samples of a tile do not each lock and search the kept ones.
+  struct LastMesh {
+    std::optional<std::uint64_t> key;
+    std::shared_ptr<const MeshHeights> mesh;  // null: no tile there
+  };
   std::shared_ptr<const MeshHeights> mesh(const geo::TileId& id, StopToken stop, std::string* error);
   // The layer's triangles over a Mercator tile, clipped to it; null when none (or too many tiles).
   std::shared_ptr<const TileTriangles> triangles_over(const TileId& id, int mesh_zoom, StopToken stop);
-  double height_at(double lat, double lon, int zoom, StopToken stop, std::string* error);
+  double height_at(double lat, double lon, int zoom, StopToken stop, std::string* error, LastMesh* last = nullptr);
 
   std::string location_;
   bool remote_ = false;
@@ -77,7 +88,7 @@ class QuantizedMeshSource final : public HeightSource {
   bool offline_ = false;
   std::mutex mutex_;
   std::list<std::pair<std::uint64_t, std::shared_ptr<const MeshHeights>>> recent_;  // most recent first
-  std::unordered_map<std::uint64_t, std::shared_ptr<const MeshHeights>> missing_;   // tiles with no data
+  std::unordered_set<std::uint64_t> missing_;                                        // tiles with no data
 };
 
 }  // namespace trailray::terrain
