@@ -28,8 +28,7 @@ struct ElevationArgs {
   bool json = false, csv = false, replace = false, force = false, quiet = false;
   std::string output;
   track::ReadOptions read;
-  TerrainOptions terrain;
-  std::string surface;  // --surface: empty without
+  TerrainOptions terrain;  // with --surface (terrain.surface): empty without
 };
 
 // Every point the heights are wanted for, in file order: track points, then route points, then
@@ -125,12 +124,7 @@ int run_elevation(const ElevationArgs& a) {
   }
 
   // The surface model (canopy and buildings) at the same places, from any source --terrain takes.
-  TerrainHeights surface;
-  if (!a.surface.empty()) {
-    TerrainOptions options = a.terrain;
-    options.terrain = a.surface;
-    surface = terrain_heights(where, options, diagnostics, a.file);
-  }
+  const TerrainHeights surface = surface_heights(where, a.terrain, diagnostics, a.file);
   ElevationReport report{a.file == "-" ? "<stdin>" : a.file, source_name, surface.source_name,
                          report_points(file, heights, surface.heights), {}};
   report.summary = summarize(report.points);
@@ -171,7 +165,7 @@ void add_elevation_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--force", args->force, "Let --replace overwrite an existing OUT");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress display");
   add_terrain_options(*cmd, args->terrain);
-  cmd->add_option("--surface", args->surface,
+  cmd->add_option("--surface", args->terrain.surface,
                   "Surface model (canopy and buildings, e.g. a DSM beside a DTM): any source --terrain takes. Adds "
                   "per point surface_m, canopy_m and cover (open, covered, below_ground), and the share under cover")
       ->type_name("SRC")

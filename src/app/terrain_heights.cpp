@@ -43,4 +43,12 @@ TerrainHeights terrain_heights(const std::vector<geo::LatLon>& where, const Terr
   return out;
 }
 
+TerrainHeights surface_heights(const std::vector<geo::LatLon>& where, const TerrainOptions& terrain,
+                               scene::Diagnostics& diagnostics, const std::string& file) {
+  if (terrain.surface.empty()) return {};
+  TerrainOptions surface = terrain;
+  surface.terrain = terrain.surface;
+  return terrain_heights(where, surface, diagnostics, file);
+}
+
 }  // namespace trailray::app

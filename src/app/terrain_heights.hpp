@@ -23,4 +23,10 @@ struct TerrainHeights {
 TerrainHeights terrain_heights(const std::vector<geo::LatLon>& places, const TerrainOptions& terrain,
                                scene::Diagnostics& diagnostics, const std::string& file);
 
+// The surface model's height (`terrain.surface`: canopy and buildings) under the same places,
+// sampled as the terrain is, with the terrain options' settings; empty heights and name without
+// a surface model.
+TerrainHeights surface_heights(const std::vector<geo::LatLon>& places, const TerrainOptions& terrain,
+                               scene::Diagnostics& diagnostics, const std::string& file);
+
 }  // namespace trailray::app

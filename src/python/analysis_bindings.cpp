@@ -203,6 +203,7 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
   app::TerrainOptions options;
   options.terrain = terrain;
   if (zoom) options.terrain_zoom = *zoom;
+  if (surface_source) options.surface = *surface_source;
   scene::CollectedDiagnostics diagnostics;  // handed to Python after the work (no GIL meanwhile)
   app::ElevationReport report;
   {
@@ -212,13 +213,8 @@ py::dict elevation(const Track& t, const std::string& terrain, std::optional<int
     for (const track::Segment& s : t.model().segments)
       for (const track::TrackPoint& p : s.points) where.push_back({p.lat, p.lon});
     const app::TerrainHeights sampled = app::terrain_heights(where, options, diagnostics, t.owner()->path);
-    app::TerrainHeights surface;
-    if (surface_source) {
-      app::TerrainOptions surface_options = options;
-      surface_options.terrain = *surface_source;
-      surface = app::terrain_heights(where, surface_options, diagnostics, t.owner()->path);
-      report.surface = surface.source_name;
-    }
+    const app::TerrainHeights surface = app::surface_heights(where, options, diagnostics, t.owner()->path);
+    report.surface = surface.source_name;
     report.path = t.owner()->path;
     report.terrain = sampled.source_name;
     std::size_t k = 0;
