@@ -41,6 +41,11 @@ packages=(
   libavutil-dev          # `trailray video`: frames, options, errors of the libraries above
   libmicrohttpd-dev      # `trailray serve`: HTTP with epoll, connection limits and timeouts, so slow clients stall nothing
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
+  libosmium2-dev         # --places: OpenStreetMap .osm.pbf/.osm(.gz/.bz2) read streaming (track/places; header-only)
+  libprotozero-dev       # libosmium's protocol buffer decoder for .osm.pbf (header-only)
+  libexpat1-dev          # libosmium's .osm XML parser
+  libbz2-dev             # libosmium's .osm.bz2 input
+  liblz4-dev             # libosmium's PBF blobs compressed with LZ4
   # --- the Python module (src/python/: `import trailray` for /usr/bin/python3) ---
   pybind11-dev           # C++ bindings with NumPy arrays over the track model's memory
   python3-dev            # Python.h and the extension suffix of Debian's python3
@@ -68,6 +73,7 @@ packages=(
   libbenchmark-dev       # micro-benchmarks in bench/
   time                   # /usr/bin/time: peak memory in the benchmark
   hyperfine              # benchmark timings without shell or fork overhead
+  osmium-tool            # benchmark peer of --places: `osmium tags-filter` on the same .osm.pbf (bench/places_read.sh)
 )
 
 missing=()
