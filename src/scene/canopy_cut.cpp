@@ -5,31 +5,13 @@
 
 #include "geo/geodesic.hpp"
 #include "geo/tile_id.hpp"
+#include "terrain/tile_sampling.hpp"
 #include "track/cover.hpp"
 
 namespace trailray::scene {
 namespace {
 
 std::int64_t key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffff); }
-
-// Bilinear in one tile at a continuous sample position (col, row in the tile's own samples),
-// clamped to the tile; NaN samples left out, NaN when all four are.
-double bilinear_in(const terrain::HeightTile& t, double col, double row) {
-  col = std::clamp(col, 0.0, double(t.width - 1));
-  row = std::clamp(row, 0.0, double(t.height - 1));
-  const auto c0 = static_cast<std::uint32_t>(std::floor(col)), r0 = static_cast<std::uint32_t>(std::floor(row));
-  const std::uint32_t c1 = std::min(c0 + 1, t.width - 1), r1 = std::min(r0 + 1, t.height - 1);
-  const double fx = col - c0, fy = row - r0;
-  double sum = 0.0, weight = 0.0;
-  for (const auto& [c, r, w] : {std::tuple{c0, r0, (1 - fx) * (1 - fy)}, std::tuple{c1, r0, fx * (1 - fy)},
-                                std::tuple{c0, r1, (1 - fx) * fy}, std::tuple{c1, r1, fx * fy}}) {
-    const float h = t.at(c, r);
-    if (std::isnan(h) || w <= 0.0) continue;
-    sum += w * h;
-    weight += w;
-  }
-  return weight > 0.0 ? sum / weight : std::nan("");
-}
 
 // Where sample (i, j) of a tile sits, as a fraction of the tile from its north-west corner.
 double fraction(std::uint32_t i, std::uint32_t n, terrain::SampleLayout layout) {
@@ -126,7 +108,7 @@ terrain::TileResult<terrain::HeightTile> CanopyCutHeights::load(const terrain::T
       // The same place in the ground's samples.
       const double gc = g.layout == terrain::SampleLayout::pixel_is_point ? fx * (g.width - 1) : fx * g.width - 0.5;
       const double gr = g.layout == terrain::SampleLayout::pixel_is_point ? fy * (g.height - 1) : fy * g.height - 0.5;
-      const double h = bilinear_in(g, gc, gr);
+      const double h = terrain::bilinear_in_tile(g, gc, gr);
       if (std::isnan(h)) continue;
       tile.heights[std::size_t{row} * tile.width + col] = static_cast<float>(std::min<double>(h, tile.at(col, row)));
       changed = true;

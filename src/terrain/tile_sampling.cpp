@@ -37,20 +37,49 @@ TileSample locate_sample(std::uint64_t col, std::uint64_t row, int zoom, const S
           static_cast<std::uint32_t>(col - tx * step), static_cast<std::uint32_t>(row - ty * step)};
 }
 
+namespace {
+
+// The four samples' weighted mean, nodata samples (and those of no weight) left out.
+class WeightedHeights {
+ public:
+  void add(float h, double w) {
+    if (std::isnan(h) || w <= 0.0) return;
+    sum_ += w * h;
+    weight_ += w;
+  }
+  double mean() const { return weight_ > 0.0 ? sum_ / weight_ : std::numeric_limits<double>::quiet_NaN(); }
+
+ private:
+  double sum_ = 0.0, weight_ = 0.0;
+};
+
+}  // namespace
+
 double bilinear_height(const SampleFootprint& f, int zoom, const SampleGrid& grid, const TileLookup& tile_of) {
-  double sum = 0.0, weight = 0.0;
+  WeightedHeights heights;
   for (int r = 0; r < 2; ++r)
     for (int c = 0; c < 2; ++c) {
-      const double w = (c ? f.tx : 1.0 - f.tx) * (r ? f.ty : 1.0 - f.ty);
       const TileSample s = locate_sample(f.col[c], f.row[r], zoom, grid);
       const HeightTile* tile = tile_of(s.tile);
       if (tile == nullptr || s.col >= tile->width || s.row >= tile->height) continue;
-      const float h = tile->at(s.col, s.row);
-      if (std::isnan(h) || w <= 0.0) continue;
-      sum += w * h;
-      weight += w;
+      heights.add(tile->at(s.col, s.row), (c ? f.tx : 1.0 - f.tx) * (r ? f.ty : 1.0 - f.ty));
     }
-  return weight > 0.0 ? sum / weight : std::numeric_limits<double>::quiet_NaN();
+  return heights.mean();
+}
+
+double bilinear_in_tile(const HeightTile& t, double col, double row) {
+  if (t.width == 0 || t.height == 0) return std::numeric_limits<double>::quiet_NaN();
+  col = std::clamp(col, 0.0, double(t.width - 1));
+  row = std::clamp(row, 0.0, double(t.height - 1));
+  const auto c0 = static_cast<std::uint32_t>(std::floor(col)), r0 = static_cast<std::uint32_t>(std::floor(row));
+  const std::uint32_t c1 = std::min(c0 + 1, t.width - 1), r1 = std::min(r0 + 1, t.height - 1);
+  const double fx = col - c0, fy = row - r0;
+  WeightedHeights heights;
+  heights.add(t.at(c0, r0), (1 - fx) * (1 - fy));
+  heights.add(t.at(c1, r0), fx * (1 - fy));
+  heights.add(t.at(c0, r1), (1 - fx) * fy);
+  heights.add(t.at(c1, r1), fx * fy);
+  return heights.mean();
 }
 
 }  // namespace trailray::terrain

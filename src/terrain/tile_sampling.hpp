@@ -45,4 +45,8 @@ using TileLookup = std::function<const HeightTile*(const TileId&)>;
 // samples are left out and the others' weights renormalised; NaN when none is left.
 double bilinear_height(const SampleFootprint& footprint, int zoom, const SampleGrid& grid, const TileLookup& tile_of);
 
+// The bilinear height inside one tile at a continuous sample position (col, row in the tile's own
+// samples), clamped to the tile; nodata samples left out as above, NaN when all four are.
+double bilinear_in_tile(const HeightTile& tile, double col, double row);
+
 }  // namespace trailray::terrain
