@@ -31,19 +31,21 @@ CapsuleShape ball_shape(double px, double m, double lift_px, double lift_m) {
 PinGeometry pin_geometry(const scene::WaypointSet& set) {
   PinGeometry out;
   for (scene::TrackGeometry* g : {&out.waypoint_stems, &out.waypoint_balls, &out.place_stems, &out.place_balls,
-                                  &out.thermal_stems, &out.thermal_balls})
+                                  &out.thermal_stems, &out.thermal_balls, &out.photo_stems, &out.photo_balls})
     g->segments.resize(1);
   for (const scene::Waypoint& w : set.points) {
     if (!w.visible) continue;
-    const bool place = w.kind == scene::WaypointKind::Place, thermal = w.kind == scene::WaypointKind::Thermal;
-    auto& stems = (place ? out.place_stems : thermal ? out.thermal_stems : out.waypoint_stems).segments.front();
-    stems.points_ecef.push_back(w.ground_ecef);
-    stems.points_ecef.push_back(w.marker_ecef);
-    (place     ? out.place_balls
-     : thermal ? out.thermal_balls
-               : out.waypoint_balls)
-        .segments.front()
-        .points_ecef.push_back(w.marker_ecef);
+    scene::TrackGeometry* stems = &out.waypoint_stems;
+    scene::TrackGeometry* balls = &out.waypoint_balls;
+    switch (w.kind) {
+      case scene::WaypointKind::Place: stems = &out.place_stems, balls = &out.place_balls; break;
+      case scene::WaypointKind::Thermal: stems = &out.thermal_stems, balls = &out.thermal_balls; break;
+      case scene::WaypointKind::Photo: stems = &out.photo_stems, balls = &out.photo_balls; break;
+      case scene::WaypointKind::Waypoint: break;
+    }
+    stems->segments.front().points_ecef.push_back(w.ground_ecef);
+    stems->segments.front().points_ecef.push_back(w.marker_ecef);
+    balls->segments.front().points_ecef.push_back(w.marker_ecef);
   }
   return out;
 }
@@ -59,6 +61,8 @@ std::vector<TrackDraw> PinGpu::draws(const scene::WaypointSet* set, const scene:
     place_balls_ = buffer_of(geometry.place_balls);
     thermal_stems_ = buffer_of(geometry.thermal_stems);
     thermal_balls_ = buffer_of(geometry.thermal_balls);
+    photo_stems_ = buffer_of(geometry.photo_stems);
+    photo_balls_ = buffer_of(geometry.photo_balls);
   }
   std::vector<TrackDraw> out;
   const auto add = [&](const std::optional<TrackBuffer>& buffer, const glm::vec3& color, const CapsuleShape& shape) {
@@ -72,6 +76,9 @@ std::vector<TrackDraw> PinGpu::draws(const scene::WaypointSet* set, const scene:
   // Thermal markers stand on the track in the air: waypoints' sizes, their own colour.
   add(thermal_stems_, style.stem_color, stem_shape(style, style.lift_px, style.lift_m));
   add(thermal_balls_, style.thermal_color, ball_shape(style.marker_px, style.marker_m, style.lift_px, style.lift_m));
+  // Photos' pins: waypoints' sizes, a pale ball under the thumbnail.
+  add(photo_stems_, style.stem_color, stem_shape(style, style.lift_px, style.lift_m));
+  add(photo_balls_, style.photo_color, ball_shape(style.marker_px, style.marker_m, style.lift_px, style.lift_m));
   return out;
 }
 

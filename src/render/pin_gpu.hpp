@@ -4,7 +4,7 @@
 // from the ground to its marker raised by the style's lift, a ball at the marker raised the
 // same), so they are ray traced, lit, shadowed and depth-tested with the terrain like tracks.
 // One buffer of stems and one of balls per kind (waypoints, the smaller place labels, thermal
-// markers in the thermal colour), made
+// markers in the thermal colour, photos' pins under their thumbnails), made
 // again only when the set's revision (or the set) changes.
 
 #include <cstdint>
@@ -23,7 +23,8 @@ namespace trailray::render {
 // as pairs) and one of balls (each marker: drawn as singles), so that all the pins of a kind are
 // one draw however many there are.
 struct PinGeometry {
-  scene::TrackGeometry waypoint_stems, waypoint_balls, place_stems, place_balls, thermal_stems, thermal_balls;
+  scene::TrackGeometry waypoint_stems, waypoint_balls, place_stems, place_balls, thermal_stems, thermal_balls,
+      photo_stems, photo_balls;
 };
 PinGeometry pin_geometry(const scene::WaypointSet& set);
 
@@ -37,7 +38,7 @@ class PinGpu {
   const scene::WaypointSet* set_ = nullptr;
   std::uint64_t revision_ = 0;
   std::optional<TrackBuffer> waypoint_stems_, waypoint_balls_, place_stems_, place_balls_, thermal_stems_,
-      thermal_balls_;
+      thermal_balls_, photo_stems_, photo_balls_;
 };
 
 }  // namespace trailray::render

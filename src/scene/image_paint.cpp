@@ -1,6 +1,7 @@
 #include "scene/image_paint.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace trailray::scene {
@@ -58,6 +59,57 @@ void fill_rounded_rect(RgbaImage& image, const PixelRect& rect, int radius, glm:
       blend_pixel(image, x, y, glm::u8vec3(color), alpha * coverage);
     }
   }
+}
+
+RgbaImage resampled(const RgbaImage& image, int width, int height) {
+  RgbaImage out;
+  if (width <= 0 || height <= 0 || image.width == 0 || image.height == 0) return out;
+  out.width = static_cast<std::uint32_t>(width);
+  out.height = static_cast<std::uint32_t>(height);
+  out.rgba.assign(std::size_t{out.width} * out.height * 4, 0);
+  const double fx = static_cast<double>(image.width) / width, fy = static_cast<double>(image.height) / height;
+  const auto at = [&](int x, int y, int c) {
+    x = std::clamp(x, 0, static_cast<int>(image.width) - 1);
+    y = std::clamp(y, 0, static_cast<int>(image.height) - 1);
+    return static_cast<double>(image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4 + c]);
+  };
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      std::array<double, 4> value{};
+      if (fx > 1.0 || fy > 1.0) {  // the footprint's pixels, averaged
+        const int x0 = static_cast<int>(x * fx), y0 = static_cast<int>(y * fy);
+        const int x1 = std::max(x0 + 1, static_cast<int>(std::ceil((x + 1) * fx)));
+        const int y1 = std::max(y0 + 1, static_cast<int>(std::ceil((y + 1) * fy)));
+        for (int sy = y0; sy < y1; ++sy)
+          for (int sx = x0; sx < x1; ++sx)
+            for (int c = 0; c < 4; ++c) value[c] += at(sx, sy, c);
+        for (double& v : value) v /= static_cast<double>((x1 - x0) * (y1 - y0));
+      } else {  // bilinear
+        const double sx = (x + 0.5) * fx - 0.5, sy = (y + 0.5) * fy - 0.5;
+        const int ix = static_cast<int>(std::floor(sx)), iy = static_cast<int>(std::floor(sy));
+        const double tx = sx - ix, ty = sy - iy;
+        for (int c = 0; c < 4; ++c)
+          value[c] = (at(ix, iy, c) * (1 - tx) + at(ix + 1, iy, c) * tx) * (1 - ty) +
+                     (at(ix, iy + 1, c) * (1 - tx) + at(ix + 1, iy + 1, c) * tx) * ty;
+      }
+      for (int c = 0; c < 4; ++c)
+        out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] =
+            static_cast<std::uint8_t>(std::clamp(std::lround(value[c]), 0L, 255L));
+    }
+  return out;
+}
+
+void paint_framed_photo(RgbaImage& image, const PixelRect& rect, const RgbaImage& photo, int frame,
+                        glm::u8vec4 frame_color) {
+  fill_rect(image, rect, frame_color);
+  const PixelRect inner{rect.x + frame, rect.y + frame, rect.width - 2 * frame, rect.height - 2 * frame};
+  if (inner.empty()) return;
+  const RgbaImage scaled = resampled(photo, inner.width, inner.height);
+  for (int y = 0; y < inner.height; ++y)
+    for (int x = 0; x < inner.width; ++x) {
+      const auto p = scaled.pixel(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+      blend_pixel(image, inner.x + x, inner.y + y, {p[0], p[1], p[2]}, p[3] / 255.0f);
+    }
 }
 
 }  // namespace trailray::scene

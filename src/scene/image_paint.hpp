@@ -42,4 +42,13 @@ void fill_rect(RgbaImage& image, const PixelRect& rect, glm::u8vec4 color);
 // how much of it the arc covers); radius 0 is fill_rect.
 void fill_rounded_rect(RgbaImage& image, const PixelRect& rect, int radius, glm::u8vec4 color);
 
+// `image` resampled to width x height: each output pixel the average of the source pixels under
+// its footprint when shrinking, bilinear between the nearest four when enlarging.
+RgbaImage resampled(const RgbaImage& image, int width, int height);
+
+// A photo in a frame: `photo` resampled into `rect` less `frame` pixels on each side, the frame
+// filled with `frame_color`; clipped to the image.
+void paint_framed_photo(RgbaImage& image, const PixelRect& rect, const RgbaImage& photo, int frame,
+                        glm::u8vec4 frame_color);
+
 }  // namespace trailray::scene

@@ -83,6 +83,17 @@ PinClearance pin_clearance(WaypointKind kind, const PinStyle& pins) {
 
 std::vector<LabelCandidate> label_candidates(const Scene& scene) {
   std::vector<LabelCandidate> out;
+  // Photos' thumbnails whatever --no-labels says: they are not names.
+  if (scene.waypoints != nullptr)
+    for (const Waypoint& w : scene.waypoints->points) {
+      if (!w.visible || w.kind != WaypointKind::Photo || w.thumbnail == nullptr) continue;
+      const PinClearance pin = pin_clearance(w.kind, scene.style.pins);
+      LabelCandidate c{w.name, LabelKind::photo, w.priority, w.marker_ecef, kWaypointColor,
+                       pin.px, pin.m, pin.width_px, pin.width_m};
+      c.image = w.thumbnail.get();
+      c.image_px = scene.style.pins.photo_px;
+      out.push_back(std::move(c));
+    }
   if (!scene.style.labels.enabled) return out;
   if (scene.tracks != nullptr)
     for (const Track& t : scene.tracks->tracks()) {
@@ -94,7 +105,7 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
     }
   if (scene.waypoints != nullptr)
     for (const Waypoint& w : scene.waypoints->points) {
-      if (!w.visible || w.name.empty()) continue;
+      if (!w.visible || w.name.empty() || (w.kind == WaypointKind::Photo && w.thumbnail != nullptr)) continue;
       const bool place = w.kind == WaypointKind::Place, thermal = w.kind == WaypointKind::Thermal;
       const PinClearance pin = pin_clearance(w.kind, scene.style.pins);
       out.push_back({w.name,
@@ -120,6 +131,8 @@ float label_fade_alpha(double distance_m, const LabelFade& fade) {
   if (!(distance_m < fade.zero_m)) return 0.0f;
   return static_cast<float>((fade.zero_m - distance_m) / (fade.zero_m - fade.full_m));
 }
+
+int photo_frame_px(int long_px) { return std::max(2, static_cast<int>(std::lround(long_px / 36.0))); }
 
 int label_halo_px(int font_px) { return std::max(1, static_cast<int>(std::lround(font_px / 7.0))); }
 int label_margin_px(int font_px) { return std::max(1, static_cast<int>(std::lround(font_px / 5.0))); }
@@ -190,10 +203,26 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
   for (const auto& [p, alpha] : shown) {
     const LabelCandidate& c = candidates[p.index];
     const FontWeight weight = c.kind == LabelKind::track ? FontWeight::bold : FontWeight::regular;
-    const TextExtent extent = measure(c.text, font_px, weight);
-    if (extent.width <= 0) continue;
-    const int w = extent.width + 2 * halo, h = extent.height() + 2 * halo;
-    for (const PixelRect& box : boxes_around(p.pixel, w, h, lift, pin_height(c, p.distance_m))) {
+    // A photo: its thumbnail at the style's size in picture pixels, aspect kept, in its frame.
+    const bool photo = c.image != nullptr && c.image->pixels.width > 0 && c.image->pixels.height > 0;
+    TextExtent extent;
+    int frame = 0, w = 0, h = 0;
+    if (photo) {
+      const int long_px = std::clamp(static_cast<int>(std::lround(c.image_px * ratio)), 8, 1024);
+      const double aspect = static_cast<double>(c.image->pixels.width) / c.image->pixels.height;
+      frame = photo_frame_px(long_px);
+      w = (aspect >= 1.0 ? long_px : std::max(1, static_cast<int>(std::lround(long_px * aspect)))) + 2 * frame;
+      h = (aspect >= 1.0 ? std::max(1, static_cast<int>(std::lround(long_px / aspect))) : long_px) + 2 * frame;
+    } else {
+      extent = measure(c.text, font_px, weight);
+      if (extent.width <= 0) continue;
+      w = extent.width + 2 * halo;
+      h = extent.height() + 2 * halo;
+    }
+    const auto boxes = boxes_around(p.pixel, w, h, lift, pin_height(c, p.distance_m));
+    // A thumbnail stays over its pin: the boxes above it only.
+    for (std::size_t b = 0; b < (photo ? 3u : boxes.size()); ++b) {
+      const PixelRect& box = boxes[b];
       if (!picture.contains(box)) continue;
       const auto overlaps = [&](const PixelRect& r) { return r.intersects(box); };
       if (std::any_of(taken.begin(), taken.end(), overlaps)) continue;
@@ -203,6 +232,8 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
       PlacedLabel label;
       label.candidate = p.index;
       label.text = c.text;
+      label.image = photo ? c.image : nullptr;
+      label.frame_px = frame;
       label.kind = c.kind;
       label.color = c.color;
       label.weight = weight;

@@ -34,14 +34,15 @@
 
 #include "scene/camera.hpp"
 #include "scene/image_paint.hpp"
+#include "scene/photo_image.hpp"
 #include "scene/scene.hpp"
 #include "scene/text_raster.hpp"
 
 namespace trailray::scene {
 
-// In priority order: a track's name wins over a waypoint's, which wins over a thermal's, which
-// wins over a place's.
-enum class LabelKind { track, waypoint, thermal, place };
+// In priority order: a track's name wins over a photo's thumbnail, which wins over a waypoint's
+// name, which wins over a thermal's, which wins over a place's.
+enum class LabelKind { track, photo, waypoint, thermal, place };
 
 struct LabelCandidate {
   std::string text;  // UTF-8, one line
@@ -54,6 +55,11 @@ struct LabelCandidate {
   // wide. No label covers it, this one's or another's.
   double clear_px = 0.0, clear_m = 0.0;
   double clear_width_px = 0.0, clear_width_m = 0.0;
+  // A photo's thumbnail drawn in place of the text (kind photo): its long side `image_px` at
+  // pixel ratio 1, in a white frame; it goes above its pin only (above, above right, above left).
+  // The scene owns the image for the frame.
+  const PhotoImage* image = nullptr;
+  double image_px = 0.0;
 };
 
 // How far above a waypoint's (or place's) marker its pin reaches on the picture (the ball's lift
@@ -64,7 +70,8 @@ struct PinClearance {
 PinClearance pin_clearance(WaypointKind kind, const PinStyle& pins);
 
 // The scene's labels: visible named waypoints and places, visible named tracks at their first
-// point (in the track's colour). Empty with style.labels.enabled off.
+// point (in the track's colour), visible photos' thumbnails. With style.labels.enabled off only
+// the thumbnails (`--no-labels` takes the names away, not the photos the user asked for).
 std::vector<LabelCandidate> label_candidates(const Scene& scene);
 
 // Opacity by distance from the camera: 1 up to full_m, 0 from zero_m.
@@ -84,6 +91,8 @@ struct LabelLayoutOptions {
 struct PlacedLabel {
   std::size_t candidate = 0;  // its index in the candidates
   std::string text;
+  const PhotoImage* image = nullptr;  // a photo's thumbnail instead of the text, scaled into `box` inside its frame
+  int frame_px = 0;                   // the photo's white frame, inside `box`
   LabelKind kind = LabelKind::waypoint;
   glm::u8vec3 color{255, 255, 255};
   FontWeight weight = FontWeight::regular;
@@ -98,6 +107,9 @@ struct PlacedLabel {
   double pin_reach_m = 0.0;
   float alpha = 1.0f;  // from the distance fade (the pass adds the terrain's occlusion)
 };
+
+// The white frame around a photo's thumbnail whose long side is `long_px` picture pixels.
+int photo_frame_px(int long_px);
 
 // The halo around glyphs and the gaps around labels at a font size in picture pixels.
 int label_halo_px(int font_px);

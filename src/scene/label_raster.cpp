@@ -37,4 +37,15 @@ LabelBitmap rasterize_label(TextRasterizer& text, const PlacedLabel& label) {
   return out;
 }
 
+RgbaImage rasterize_photo_label(const PlacedLabel& label) {
+  RgbaImage out;
+  out.width = static_cast<std::uint32_t>(std::max(label.box.width, 0));
+  out.height = static_cast<std::uint32_t>(std::max(label.box.height, 0));
+  out.rgba.assign(std::size_t{out.width} * out.height * 4, 0);
+  if (label.image == nullptr || out.rgba.empty()) return out;
+  paint_framed_photo(out, {0, 0, label.box.width, label.box.height}, label.image->pixels, label.frame_px,
+                     kPhotoFrameColor);
+  return out;
+}
+
 }  // namespace trailray::scene

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "scene/image_paint.hpp"
 #include "scene/label_layout.hpp"
 #include "scene/text_raster.hpp"
 
@@ -22,5 +23,10 @@ struct LabelBitmap {
 };
 
 LabelBitmap rasterize_label(TextRasterizer& text, const PlacedLabel& label);
+
+// A photo's placed label (label.image set): its thumbnail resampled into the box inside a white
+// frame, opaque sRGB RGBA the size of the box.
+RgbaImage rasterize_photo_label(const PlacedLabel& label);
+inline constexpr glm::u8vec4 kPhotoFrameColor{250, 250, 247, 255};
 
 }  // namespace trailray::scene

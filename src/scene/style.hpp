@@ -58,7 +58,11 @@ struct PinStyle {
   glm::vec3 waypoint_color{0.89f, 0.0f, 0.17f};  // sRGB: the markers of the files' waypoints
   glm::vec3 place_color{0.96f, 0.96f, 0.96f};    // and of place labels
   glm::vec3 thermal_color{1.0f, 0.55f, 0.1f};    // and of thermal markers (`--thermals`)
+  glm::vec3 photo_color{0.97f, 0.97f, 0.97f};   // and of photos' pins (`--photos`), under their thumbnail
   glm::vec3 stem_color{0.16f, 0.16f, 0.16f};
+  // A photo's thumbnail over its pin: its long side on the picture (pixels at pixel ratio 1), in
+  // a white frame.
+  double photo_px = 72.0;
   double marker_px = 13.0, place_marker_px = 8.0;  // the ball's diameter
   double marker_m = 6.0, place_marker_m = 4.0;     // ... at least
   double stem_px = 2.0, stem_m = 0.6;              // the stem's diameter, at least

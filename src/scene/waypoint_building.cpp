@@ -75,7 +75,7 @@ std::vector<Waypoint> read_place_labels(const std::vector<std::string>& paths, c
 
 void set_waypoints_visible(WaypointSet& set, bool visible) {
   for (Waypoint& w : set.points)
-    if (w.kind != WaypointKind::Thermal) w.visible = visible;
+    if (w.kind != WaypointKind::Thermal && w.kind != WaypointKind::Photo) w.visible = visible;
   ++set.revision;
 }
 

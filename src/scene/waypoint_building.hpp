@@ -44,8 +44,8 @@ std::vector<Waypoint> read_place_labels(const std::vector<std::string>& paths, c
                                         const WaypointBuildOptions& options, Diagnostics& diagnostics);
 
 // Shows or hides the files' waypoints and the place labels (their pins and labels: `--no-waypoints`
-// and the viewer's checkbox) and bumps the set's revision. Thermal markers have an option of their
-// own (`--thermals`) and stay as they are.
+// and the viewer's checkbox) and bumps the set's revision. Thermal markers and photos have options
+// of their own (`--thermals`, `--photos`) and stay as they are.
 void set_waypoints_visible(WaypointSet& set, bool visible);
 
 }  // namespace trailray::scene

@@ -7,8 +7,11 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/photo_image.hpp"
+
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,7 @@ enum class WaypointKind {
   Waypoint,  // carried by a track file: a pin and a label
   Place,     // a place label from a points file (--labels): a label, and a smaller pin
   Thermal,   // a thermal of a flight (--thermals, scene/thermal_markers.hpp): a pin at its top
+  Photo,     // a photo placed on a track (--photos, scene/photo_pins.hpp): a pin topped by its thumbnail
 };
 
 struct Waypoint {
@@ -36,6 +40,10 @@ struct Waypoint {
   // and the stem's foot on the ground below it.
   glm::dvec3 marker_ecef{0.0};
   glm::dvec3 ground_ecef{0.0};
+
+  // A photo's pin: its thumbnail, drawn above the pin in place of the name (nullptr: a photo that
+  // could not be decoded, or not a photo; its name is the label). `source` is the photo's path.
+  std::shared_ptr<const PhotoImage> thumbnail;
 
   // Which label wins where two would overlap: higher first (then the nearer one).
   int priority = 0;

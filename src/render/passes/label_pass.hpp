@@ -7,6 +7,10 @@
 // uploads only names it has not drawn before; one draw call takes them all. The vertex shader
 // reads the G-buffer's distances around each label's anchor: a label whose point the terrain
 // hides is drawn ghosted (LabelStyle::ghost_alpha) or not at all (hide_occluded).
+//
+// Photos' thumbnails (a label whose `image` is set) are drawn the same way from a second atlas of
+// RGBA texels (each thumbnail framed and resampled on the CPU to the size the layout gave it),
+// so they fade, ghost and hide exactly as names do, in one more draw call.
 
 #include <cstddef>
 #include <cstdint>
@@ -24,6 +28,8 @@
 
 namespace trailray::render {
 
+struct LabelVertex;  // one corner of a label's quad (label_pass.cpp)
+
 class LabelPass {
  public:
   // Compiles the shaders (the GL context must be current). Throws ShaderError.
@@ -36,8 +42,8 @@ class LabelPass {
   // The layout's font and measurements, kept with the pass's atlas between frames.
   scene::LabelLayouter& layouter() { return layouter_; }
 
-  // Labels rasterized into the atlas so far (a label drawn again is not rasterized again), and
-  // times the atlas was full and started over.
+  // Labels rasterized into the atlases so far (a label drawn again is not rasterized again), and
+  // times an atlas was full and started over.
   std::size_t rasterized() const { return rasterized_; }
   std::size_t atlas_resets() const { return resets_; }
 
@@ -45,20 +51,34 @@ class LabelPass {
   struct Slot {
     int x = 0, y = 0, width = 0, height = 0;
   };
-  // Rasterizes a label into the atlas's CPU copy; nullptr when it cannot fit even into an empty atlas.
-  const Slot* insert(const std::string& key, const scene::PlacedLabel& label);
-  void upload_changes();
-  void reset_atlas();
+  // Texels packed in shelves (rows of slots from the top, each as tall as its tallest) in a CPU
+  // copy; the rows that changed go to the GPU once per frame: one upload instead of one per
+  // label, which a software driver makes expensive.
+  struct Atlas {
+    int size = 0, texel_bytes = 0;
+    GLenum internal_format = 0, format = 0;
+    Texture texture;
+    std::vector<std::uint8_t> pixels;
+    std::pair<int, int> changed_rows{1 << 30, 0};  // rows [first, second) not uploaded yet
+    int shelf_y = 0, shelf_height = 0, shelf_x = 0;
+    std::unordered_map<std::string, Slot> slots;
 
-  ShaderProgram program_;
+    // Copies `texels` (w x h, rows top-down) into a free slot; nullptr when it cannot fit.
+    const Slot* insert(const std::string& key, int w, int h, const std::uint8_t* texels);
+    void upload_changes();
+    void reset();
+  };
+  // Every label's quad into `quads`, rasterizing what the atlas lacks; an atlas that fills up
+  // starts over once with this frame's labels.
+  std::vector<LabelVertex> quads_of(Atlas& atlas, const std::vector<const scene::PlacedLabel*>& labels, bool photos);
+  void draw_quads(ShaderProgram& program, Atlas& atlas, const std::vector<LabelVertex>& quads, const GBuffer& gbuffer,
+                  const scene::LabelStyle& style);
+
+  ShaderProgram program_, photo_program_;
   VertexArray vertex_array_;
   Buffer vertices_;
-  Texture atlas_;                                 // RG8: text and halo coverage
-  std::vector<std::uint8_t> pixels_;              // its CPU copy
-  std::pair<int, int> changed_rows_{1 << 30, 0};  // rows [first, second) not uploaded yet
-  // Shelf packing: rows of labels from the top, each as tall as its tallest label.
-  int shelf_y_ = 0, shelf_height_ = 0, shelf_x_ = 0;
-  std::unordered_map<std::string, Slot> slots_;
+  Atlas text_atlas_;   // RG8: text and halo coverage
+  Atlas photo_atlas_;  // RGBA8: framed thumbnails
   scene::LabelLayouter layouter_;
   std::size_t rasterized_ = 0, resets_ = 0;
 };
