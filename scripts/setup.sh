@@ -42,6 +42,8 @@ packages=(
   libavutil-dev          # `trailray video`: frames, options, errors of the libraries above
   libmicrohttpd-dev      # `trailray serve`: HTTP with epoll, connection limits and timeouts, so slow clients stall nothing
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
+  libexiv2-dev           # --photos: the photos' EXIF (GPS position, time, offset), JPEG and HEIC/HEIF (track/photos/exif_reader)
+  libheif-dev            # --photos: HEIC photos decoded for their thumbnails in the view
   libosmium2-dev         # --places: OpenStreetMap .osm.pbf/.osm(.gz/.bz2) read streaming (track/places; header-only)
   libprotozero-dev       # libosmium's protocol buffer decoder for .osm.pbf (header-only)
   libexpat1-dev          # libosmium's .osm XML parser
@@ -74,6 +76,7 @@ packages=(
   libbenchmark-dev       # micro-benchmarks in bench/
   time                   # /usr/bin/time: peak memory in the benchmark
   hyperfine              # benchmark timings without shell or fork overhead
+  exiv2                  # the exiv2 tool: looking at the EXIF that the photo tests write into copies of shared photos
   osmium-tool            # benchmark peer of --places: `osmium tags-filter` on the same .osm.pbf (bench/places_read.sh)
 )
 

@@ -27,7 +27,8 @@ struct PhotoMetadata {
   // GPSDateStamp + GPSTimeStamp, UTC (some cameras write it a day off: a hint, never trusted alone).
   double gps_time_utc_s = std::numeric_limits<double>::quiet_NaN();
   int orientation = 1;           // EXIF Orientation, 1..8 (1: as stored)
-  int width = 0, height = 0;     // pixels, when the file says
+  int width = 0, height = 0;     // pixels as stored (before Orientation), when the file says
+  bool has_exif = false;         // the file has an EXIF block at all (a photo without one cannot be placed)
 };
 
 enum class PhotoPlacedBy { gps, time };
@@ -42,6 +43,8 @@ struct PlacedPhoto {
   double lat_deg = 0, lon_deg = 0;
   double ele_m = std::numeric_limits<double>::quiet_NaN();        // the track's altitude there (NaN: none)
   double time_unix_s = std::numeric_limits<double>::quiet_NaN();  // UTC when known
+  // How far its own GPS position is from where it was placed (NaN: it has none).
+  double gps_offset_m = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace trailray::track
