@@ -43,7 +43,6 @@ packages=(
   libmicrohttpd-dev      # `trailray serve`: HTTP with epoll, connection limits and timeouts, so slow clients stall nothing
   libimgui-dev           # Dear ImGui for the viewer's panels (its GLFW and OpenGL3 backends ship as sources)
   libexiv2-dev           # --photos: the photos' EXIF (GPS position, time, offset), JPEG and HEIC/HEIF (track/photos/exif_reader)
-  libheif-dev            # --photos: HEIC photos decoded for their thumbnails in the view
   libosmium2-dev         # --places: OpenStreetMap .osm.pbf/.osm(.gz/.bz2) read streaming (track/places; header-only)
   libprotozero-dev       # libosmium's protocol buffer decoder for .osm.pbf (header-only)
   libexpat1-dev          # libosmium's .osm XML parser
