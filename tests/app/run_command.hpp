@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace trailray::test {
 
@@ -24,6 +25,13 @@ inline CommandResult run_command(const std::string& command) {
   int st = pclose(pipe);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
+}
+
+// A command's standard output into `out`; whether it exited 0.
+inline bool run_command(const std::string& command, std::string& out) {
+  CommandResult r = run_command(command);
+  out = std::move(r.out);
+  return r.status == 0;
 }
 
 inline std::string shell_quote(const std::string& s) {

@@ -42,14 +42,8 @@ namespace trailray::track {
 namespace {
 
 using nlohmann::json;
+using test::run_command;
 using test::shell_quote;
-
-// A command's standard output into `out`; whether it exited 0.
-bool run(const std::string& command, std::string& out) {
-  const test::CommandResult r = test::run_command(command);
-  out = r.out;
-  return r.status == 0;
-}
 
 struct Point {
   double lat = 0.0, lon = 0.0, time = kMissing, ele = kMissing;
@@ -312,7 +306,7 @@ Outcome with_gpsbabel(const std::string& folder, const std::filesystem::path& fi
   const std::filesystem::path out = scratch / "gpsbabel.gpx";
   std::filesystem::remove(out);
   std::string said;
-  const bool ran = run("gpsbabel -t -r -w -i " + kGpsbabelFormat.at(folder) + " -f " + shell_quote(file) +
+  const bool ran = run_command("gpsbabel -t -r -w -i " + kGpsbabelFormat.at(folder) + " -f " + shell_quote(file) +
                                    " -o gpx -F " + shell_quote(out) + " 2>&1",
                                said);
   if (!ran) return {name, "gpsbabel", "cannot read: gpsbabel", last_line(said)};
@@ -348,7 +342,7 @@ std::map<std::string, json> ogr_readings(const std::vector<std::filesystem::path
       "/usr/bin/python3 " + shell_quote(std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/ogr_kml_coordinates.py");
   for (const auto& f : files) command += " " + shell_quote(f.string());
   std::string out;
-  EXPECT_TRUE(run(command + " 2>/dev/null", out))
+  EXPECT_TRUE(run_command(command + " 2>/dev/null", out))
       << "the OGR script failed (is python3-gdal installed? run scripts/setup.sh)";
   std::map<std::string, json> readings;
   std::istringstream lines(out);

@@ -30,14 +30,8 @@ namespace {
 using Position = std::array<double, 2>;  // lon, lat
 using Line = std::vector<Position>;
 
+using trailray::test::run_command;
 using trailray::test::shell_quote;
-
-// A command's standard output into `out`; whether it exited 0.
-bool run(const std::string& command, std::string& out) {
-  const trailray::test::CommandResult r = trailray::test::run_command(command);
-  out = r.out;
-  return r.status == 0;
-}
 
 Position position(const json& j) { return {j[0].get<double>(), j[1].get<double>()}; }
 
@@ -68,7 +62,7 @@ TEST(KmlConformanceOgr, PositionsMatchGdalOnEveryKmlAndKmz) {
       "/usr/bin/python3 " + shell_quote(std::string(TRAILRAY_SOURCE_DIR) + "/tests/conformance/ogr_kml_coordinates.py");
   for (const auto& f : files) command += " " + shell_quote(f);
   std::string out;
-  ASSERT_TRUE(run(command + " 2>/dev/null", out)) << "the OGR script failed (is python3-gdal installed? run "
+  ASSERT_TRUE(run_command(command + " 2>/dev/null", out)) << "the OGR script failed (is python3-gdal installed? run "
                                                      "scripts/setup.sh)";
   std::istringstream lines(out);
   int compared = 0;
@@ -139,7 +133,7 @@ TEST(KmlConformanceGpsbabel, TrackPointsTimesAndWaypointsMatchOnEveryKml) {
     if (e.path().extension() != ".kml") continue;
     const std::string file = e.path().string();
     std::string gpx;
-    ASSERT_TRUE(run("gpsbabel -t -w -i kml -f " + shell_quote(file) + " -o gpx -F - 2>/dev/null", gpx))
+    ASSERT_TRUE(run_command("gpsbabel -t -w -i kml -f " + shell_quote(file) + " -o gpx -F - 2>/dev/null", gpx))
         << file << ": gpsbabel failed (is it installed? run scripts/setup.sh)";
     const ReadResult r = load_track_file(file);
     ASSERT_TRUE(r.ok()) << r.error->to_string();
