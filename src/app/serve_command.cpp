@@ -50,18 +50,21 @@ struct ServeArgs {
 };
 
 // Each TRACK file read once at start: a file that cannot be read is an error here (file and
-// position), not a page that shows nothing.
-std::vector<serve::ServedTrack> read_served_tracks(const ServeArgs& a, TerminalDiagnostics& diagnostics) {
+// position), not a page that shows nothing. The files as read are handed to `keep` when given
+// (--surface finds the tracks under cover from them).
+std::vector<serve::ServedTrack> read_served_tracks(const ServeArgs& a, TerminalDiagnostics& diagnostics,
+                                                   std::vector<scene::LoadedTrackFile>* keep) {
   const std::vector<std::string> paths = expand_track_arguments(a.tracks);
   for (const std::string& path : paths)
     if (path == "-") throw CLI::ValidationError("TRACK", "- (standard input) cannot be served: give files");
-  const std::vector<TrackFileOutcome> outcomes = read_track_file_outcomes(paths, a.read, {}, &diagnostics);
+  std::vector<TrackFileOutcome> outcomes = read_track_file_outcomes(paths, a.read, {}, &diagnostics);
   diagnostics.progress_done();
   std::vector<serve::ServedTrack> tracks;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     for (const std::string& w : outcomes[i].warnings) diagnostics.warning(w);
     if (outcomes[i].error) throw std::runtime_error(*outcomes[i].error);
     tracks.push_back({paths[i], std::filesystem::path(paths[i]).filename().string()});
+    if (keep && outcomes[i].loaded) keep->push_back(std::move(*outcomes[i].loaded));
   }
   return tracks;
 }
@@ -92,20 +95,18 @@ int run_serve(const ServeArgs& a) {
   TerminalDiagnostics diagnostics;
 
   serve::ServeSite site;
-  site.tracks = read_served_tracks(a, diagnostics);
+  std::vector<scene::LoadedTrackFile> files;  // kept only for --surface
+  site.tracks = read_served_tracks(a, diagnostics, a.terrain.surface.empty() ? nullptr : &files);
   site.web_root = serve::WebRoot(a.web_root);
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics, /*imagery_without_terrain=*/true);
   if (sources.drawn_surface) {
     // --surface: the page draws what it is served as terrain, the surface with the canopy cut
     // along the tracks under cover (found here, as `render` finds them); points without an
     // elevation then stand on the ground there, and the open needs no cut.
-    std::vector<std::string> paths;
-    for (const serve::ServedTrack& t : site.tracks) paths.push_back(t.path);
     scene::TrackBuildOptions build{sources.heights.get(), 0.0, {}};
     build.surface = sources.surface.get();
     scene::TrackSet served;
-    for (scene::Track& t : scene::build_tracks(read_track_files_parallel(paths, a.read, diagnostics), parse_style(a.style).tracks,
-                                               build, diagnostics))
+    for (scene::Track& t : scene::build_tracks(files, parse_style(a.style).tracks, build, diagnostics))
       served.add(std::move(t));
     sources.cut_canopy(served);
   }
