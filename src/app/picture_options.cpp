@@ -21,6 +21,7 @@ void add_picture_options(CLI::App& cmd, PictureArgs& args, const PictureHelp& he
   add_imagery_option(cmd, args.terrain);
   add_track_style_options(cmd, args.style);
   add_waypoint_options(cmd, args.waypoints);
+  add_photo_options(cmd, args.photos);
   add_airspace_options(cmd, args.airspace);
   add_label_options(cmd, args.style);
   add_read_options(cmd, args.read);

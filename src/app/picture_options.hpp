@@ -14,6 +14,7 @@
 
 #include "app/airspace_options.hpp"
 #include "app/camera_options.hpp"
+#include "app/photo_options.hpp"
 #include "app/style_options.hpp"
 #include "app/terrain_options.hpp"
 #include "app/waypoint_options.hpp"
@@ -36,6 +37,7 @@ struct PictureArgs {
   TerrainOptions terrain;
   WaypointArgs waypoints;
   AirspaceArgs airspace;
+  PhotoArgs photos;  // --photos, --photo-tz, --photo-time-offset
 };
 
 // What the help says where the commands differ.

@@ -1,6 +1,7 @@
 #include "app/render_picture.hpp"
 
 #include "app/camera_options.hpp"
+#include "app/photo_drawing.hpp"
 #include "app/render_report.hpp"
 #include "app/scene_setup.hpp"
 #include "app/track_reading.hpp"
@@ -28,9 +29,12 @@ scene::RgbaImage render_picture(const RenderArgs& a, scene::Diagnostics& diagnos
   for (scene::LoadedTrackFile& f : more) files.push_back(std::move(f));
   scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.analysis};
   build.surface = sources.surface.get();
-  const SceneTracks tracks =
+  SceneTracks tracks =
       build_scene_tracks(std::move(files), a.tracks, a.read, style.tracks, build, diagnostics, a.waypoints);
   sources.cut_canopy(tracks.tracks);
+  // --photos: pins with thumbnails on the tracks.
+  add_scene_photos(a.photos, tracks.tracks, tracks.waypoints,
+                   {sources.heights.get(), tracks.recorded.lowest_or_sea_level()}, diagnostics);
   // The task's cylinders (--task) and the airspaces of --airspace, on the terrain.
   scene::VolumeSet volumes = tracks.volumes;
   add_airspace_volumes(volumes, a.airspace.files, airspace_region(tracks.tracks, tracks.waypoints, camera_request),

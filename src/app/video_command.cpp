@@ -2,14 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "app/airspace_options.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/output_file.hpp"
+#include "app/photo_drawing.hpp"
 #include "app/render_report.hpp"
 #include "app/scene_setup.hpp"
 #include "app/terminal_diagnostics.hpp"
@@ -19,6 +22,7 @@
 #include "app/video_options.hpp"
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
+#include "scene/photo_decode.hpp"
 #include "scene/terrain_view.hpp"
 
 namespace trailray::app {
@@ -76,6 +80,9 @@ int run_video(const VideoArgs& a) {
   if (sources.heights)  // the markers' stems reach down to the ground
     for (scene::Track& t : loaded.tracks.tracks()) scene::set_ground_heights(t, *sources.heights);
   const double neutral_ground = loaded.recorded.lowest_or_sea_level();
+  // --photos: pins with thumbnails, and the film stops at each (--photo-seconds).
+  const ScenePhotos photos =
+      add_scene_photos(a.photos, loaded.tracks, loaded.waypoints, {sources.heights.get(), neutral_ground}, diagnostics);
   // The task's cylinders (--task) and the airspaces of --airspace, as `render` draws them; a film
   // always has tracks, so the region never comes from the camera.
   scene::VolumeSet volumes = loaded.volumes;
@@ -105,13 +112,31 @@ int run_video(const VideoArgs& a) {
   setup.gauged = gauged_tracks(loaded.tracks, mode, a.follow);
   setup.attribution = map_attribution(sources);
   setup.pixel_ratio = a.pixel_ratio;
+  if (!photos.placed.empty() && a.photo_seconds > 0.0) {
+    // Each photo shown large, decoded again at the size it is shown; its time on the film's clock
+    // (a track's time is the clock's plus its offset, --align start).
+    const int long_side = static_cast<int>(std::max(lens.width_px, lens.height_px) * 0.8);
+    const std::optional<int> zone = photo_placement_options(a.photos).default_offset_s;
+    std::vector<double> times;
+    for (const track::PlacedPhoto& p : photos.placed) {
+      std::shared_ptr<const scene::PhotoImage> large;
+      try {
+        large = scene::make_photo_image(scene::decode_photo(p.photo.path, long_side, p.photo.orientation));
+      } catch (const scene::PhotoDecodeError&) {
+        // Warned about with its thumbnail: no pause shows it.
+      }
+      setup.photos.push_back({large, photo_caption(p, zone)});
+      times.push_back(large ? p.time_unix_s - clock.offsets.at(p.track) : track::kMissing);
+    }
+    setup.frames = scene::film_frames_with_photos(clock.timing, times, a.photo_seconds);
+  }
 
   render::GlContext gl = render::GlContext::create_headless();
   for (const std::string& line : gl.describe()) diagnostics.note(line);
   render::Renderer renderer;
-  const std::size_t frames = clock.timing.frames;
-  diagnostics.note(
-      fmt::format("film: {} frames at {} fps, replay {:.1f}x", frames, clock.timing.fps, clock.timing.speed()));
+  const std::size_t frames = setup.frame_count();
+  diagnostics.note(fmt::format("film: {} frames at {} fps, replay {:.1f}x ({} frames of stops at photos)", frames,
+                               clock.timing.fps, clock.timing.speed(), frames - clock.timing.frames));
 
   FilmRecorder recorder(std::move(setup), a.output.empty() ? open_frames_folder(a.frames_dir)
                                                            : open_video_file(a.output, {lens.width_px, lens.height_px,
@@ -133,7 +158,8 @@ int run_video(const VideoArgs& a) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   diagnostics.info(fmt::format("wrote {} ({} frames {}x{} at {} fps, {:.1f} s of film; {:.2f} frames/s)",
                                a.output.empty() ? a.frames_dir : a.output, frames, lens.width_px, lens.height_px,
-                               clock.timing.fps, clock.timing.film_seconds(), static_cast<double>(frames) / elapsed));
+                               clock.timing.fps, static_cast<double>(frames) / clock.timing.fps,
+                               static_cast<double>(frames) / elapsed));
   return 0;
 }
 

@@ -46,6 +46,11 @@ void add_video_options(CLI::App& cmd, VideoArgs& args) {
          "the followed track: altitude, height above ground, speed, vario, glide; heart rate, cadence and power "
          "when recorded; default)")
       ->type_name("none|minimal|full");
+  cmd.add_option("--photo-seconds", args.photo_seconds,
+                 "With --photos: the film stops this many seconds at each photo's time and shows the photo "
+                 "(default 2; 0: no stops, the photos stay pins)")
+      ->type_name("S")
+      ->check(CLI::Range(0.0, 60.0));
   cmd.add_flag("--fast", args.fast,
                "About 3x faster on a CPU: no sun shadows and no ambient occlusion (as --no-shadows --no-ssao); "
                "the relief then reads from the shading of the slopes alone");

@@ -29,6 +29,7 @@ struct VideoArgs : PictureArgs {
   std::string gauges = "full";  // --gauges none|minimal|full (was --overlay: that is now the map's)
   int crf = 20;
   bool fast = false;  // --fast: no shadows, no SSAO
+  double photo_seconds = 2.0;  // --photo-seconds: the film stops this long at each photo (0: never)
 };
 
 void add_video_options(CLI::App& command, VideoArgs& args);

@@ -35,6 +35,9 @@ FilmSetup checked(FilmSetup setup) {
   if (setup.cameras.empty() || setup.cameras.size() != setup.clock.timing.frames)
     throw std::invalid_argument(fmt::format("a film of {} frames needs as many cameras, not {}",
                                             setup.clock.timing.frames, setup.cameras.size()));
+  for (const scene::FilmFrame& f : setup.frames)
+    if (f.clock_frame >= setup.cameras.size() || (f.photo && *f.photo >= setup.photos.size()))
+      throw std::invalid_argument("a film frame past the clock's frames or the photos");
   return setup;
 }
 
@@ -106,7 +109,9 @@ void FilmRecorder::draw_next(render::Renderer& renderer) {
   if (writer_ == nullptr) throw std::logic_error("the film was cancelled");
   const auto start = std::chrono::steady_clock::now();
   if (!started_) started_ = start;
-  const std::size_t i = next_, frames = setup_.cameras.size();
+  // The clock's frame this one shows (held during a photo's pause), and the photo over it.
+  const scene::FilmFrame shown = setup_.frames.empty() ? scene::FilmFrame{next_, std::nullopt} : setup_.frames[next_];
+  const std::size_t i = shown.clock_frame, frames = setup_.cameras.size();
   const scene::Lens& lens = setup_.cameras[i].lens();
   const double time = setup_.clock.timing.time_of(i);
   film_.set_time(time);
@@ -126,6 +131,9 @@ void FilmRecorder::draw_next(render::Renderer& renderer) {
   scene::draw_film_overlay(picture_.image, text_, setup_.overlay, time, gauges, setup_.attribution);
   if (!setup_.gauged.empty())
     scene::draw_film_profile(picture_.image, profile_, time + setup_.clock.offsets[setup_.gauged.front()]);
+  if (shown.photo && setup_.photos[*shown.photo].image)
+    scene::draw_film_photo(picture_.image, text_, setup_.photos[*shown.photo].image->pixels,
+                           setup_.photos[*shown.photo].caption);
   writer_->add(picture_.image);
   ++next_;
   elapsed_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - *started_).count();
@@ -134,7 +142,7 @@ void FilmRecorder::draw_next(render::Renderer& renderer) {
 FilmProgress FilmRecorder::progress() const {
   FilmProgress p;
   p.done = next_;
-  p.total = setup_.cameras.size();
+  p.total = setup_.frame_count();
   if (next_ > 0) {
     p.frames_per_s = static_cast<double>(next_) / std::max(elapsed_s_, 1e-9);
     p.seconds_left = static_cast<double>(p.total - p.done) / p.frames_per_s;

@@ -17,8 +17,10 @@
 #include "app/video/film_writer.hpp"
 #include "render/renderer.hpp"
 #include "scene/film/film_overlay.hpp"
+#include "scene/film/film_photos.hpp"
 #include "scene/film/film_profile.hpp"
 #include "scene/film/film_tracks.hpp"
+#include "scene/photo_image.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
 
@@ -44,6 +46,16 @@ struct FilmSetup {
   std::vector<std::size_t> gauged;     // the tracks with a panel of gauges (the first: the profile's)
   std::string attribution;             // the map data's credits ("" : none)
   double pixel_ratio = 1.0;            // the labels' device pixels per pixel
+  // --photos with --photo-seconds: the film's frames (the clock's, and pauses at the photos:
+  // scene::film_frames_with_photos) and each photo shown large with its caption. No frames: the
+  // clock's frames as they are.
+  struct Photo {
+    std::shared_ptr<const scene::PhotoImage> image;  // nullptr: it could not be decoded (not shown)
+    std::string caption;
+  };
+  std::vector<scene::FilmFrame> frames;
+  std::vector<Photo> photos;
+  std::size_t frame_count() const { return frames.empty() ? cameras.size() : frames.size(); }
 };
 
 // The tracks with gauges: the followed one (a follow camera), else every recorded track with
@@ -75,7 +87,7 @@ class FilmRecorder {
   // Draws the next frame with `renderer` (its GL context current) and hands it to the writer.
   // Throws RenderError and the writer's errors.
   void draw_next(render::Renderer& renderer);
-  bool done() const { return next_ == setup_.cameras.size(); }
+  bool done() const { return next_ == setup_.frame_count(); }
   FilmProgress progress() const;
   // After the last frame: the film put in place. Throws the writer's errors.
   void finish();
