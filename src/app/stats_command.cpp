@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "app/ordered_jobs.hpp"
+#include "app/places_options.hpp"
 #include "app/stats_report.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
@@ -19,6 +20,7 @@ namespace {
 struct StatsArgs {
   std::vector<std::string> files;
   bool json = false;
+  std::string places_file;  // --places
   TrackOptions track;
 };
 
@@ -29,7 +31,12 @@ int run_stats(const StatsArgs& a) {
   nlohmann::json doc;
   doc["files"] = nlohmann::json::array();
   int failed = 0;
-  const auto compute = [&](std::size_t i) { return compute_file_stats(a.files[i], a.track.read, a.track.analysis); };
+  // --places: read once, before the tracks (an unreadable file fails here, naming it).
+  std::vector<track::places::Place> places;
+  if (!a.places_file.empty()) places = read_visit_places(a.places_file);
+  const auto compute = [&](std::size_t i) {
+    return compute_file_stats(a.files[i], a.track.read, a.track.analysis, a.places_file.empty() ? nullptr : &places);
+  };
   const auto consume = [&](std::size_t i, FileStats& f) {
     diagnostics.progress_done();
     for (const auto& w : f.warnings) diagnostics.warning(w);
@@ -72,6 +79,7 @@ void add_stats_command(CLI::App& app, int& exit_code) {
       ->required()
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of tables");
+  add_places_option(*cmd, args->places_file, PlacesUse::visits);
   add_track_options(*cmd, args->track);
   cmd->callback([args, &exit_code] {
     args->files = expand_track_arguments(args->files);

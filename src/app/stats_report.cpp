@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "app/places_report.hpp"
 #include "track/io/load.hpp"
 
 namespace trailray::app {
@@ -29,8 +30,10 @@ std::string num(const std::optional<double>& v, int decimals, const char* prefix
 }  // namespace
 
 FileStats compute_file_stats(const std::string& path, const track::ReadOptions& read,
-                             const track::AnalysisOptions& analysis) {
+                             const track::AnalysisOptions& analysis,
+                             const std::vector<track::places::Place>* places) {
   FileStats f;
+  f.with_places = places != nullptr;
   f.path = path;
   track::ReadResult r = track::load_track_file(path, read);
   for (const auto& w : r.warnings) f.warnings.push_back(w.to_string());
@@ -44,6 +47,7 @@ FileStats compute_file_stats(const std::string& path, const track::ReadOptions& 
   for (std::size_t i = 0; i < r.file.tracks.size(); ++i) {
     const track::Track& t = r.file.tracks[i];
     f.tracks.push_back(track::summarize_track(t, analysis));
+    if (places != nullptr) f.places_visited.push_back(track::places::places_visited(t, *places));
     const track::CleanReport& c = f.tracks.back().cleaning;
     const std::string display = path == "-" ? "<stdin>" : path;
     const std::string which = t.name.empty() ? fmt::format("track {}", i + 1) : fmt::format("track '{}'", t.name);
@@ -88,7 +92,8 @@ nlohmann::json file_stats_json(const FileStats& f) {
   j["path"] = f.path;
   j["format"] = f.format ? nlohmann::json(track::format_name(*f.format)) : nlohmann::json(nullptr);
   nlohmann::json tracks = nlohmann::json::array();
-  for (const auto& t : f.tracks) {
+  for (std::size_t i = 0; i < f.tracks.size(); ++i) {
+    const auto& t = f.tracks[i];
     nlohmann::json segments = nlohmann::json::array();
     for (const auto& s : t.segments)
       segments.push_back({{"raw", statistics_json(s.raw)}, {"clean", statistics_json(s.clean)}});
@@ -96,6 +101,10 @@ nlohmann::json file_stats_json(const FileStats& f) {
                       {"raw", statistics_json(t.raw)},
                       {"clean", statistics_json(t.clean)},
                       {"segments", std::move(segments)}});
+    if (f.with_places && i < f.places_visited.size()) {
+      tracks.back()["summits"] = place_visits_json(f.places_visited[i].summits);
+      tracks.back()["huts"] = place_visits_json(f.places_visited[i].huts);
+    }
   }
   j["tracks"] = std::move(tracks);
   j["routes"] = f.routes;
@@ -128,6 +137,10 @@ std::string file_stats_table(const FileStats& f) {
                        num(s.elevation_gain_m, 0, "+"), num(s.elevation_loss_m, 0, "-"), num(s.min_elevation_m, 0),
                        num(s.max_elevation_m, 0), num(s.avg_speed_kmh, 1), num(s.max_speed_kmh, 1));
   }
+  // --places: the summits and huts of each track, under the table.
+  for (std::size_t i = 0; i < f.places_visited.size() && i < f.tracks.size(); ++i)
+    out += places_visited_lines(f.tracks[i].name.empty() ? fmt::format("#{}", i + 1) : f.tracks[i].name,
+                                f.places_visited[i]);
   // The figures are the cleaned tracks': say so, and how many points the files recorded.
   std::size_t recorded = 0, kept = 0;
   for (const auto& t : f.tracks) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "track/diagnostics.hpp"
+#include "track/places/summits.hpp"
 #include "track/summary.hpp"
 
 namespace trailray::app {
@@ -20,11 +21,17 @@ struct FileStats {
   std::size_t waypoints = 0;
   std::vector<std::string> warnings;  // "file:line:col: message"
   std::optional<std::string> error;   // set when the file could not be read
+  // --places: per track (parallel to `tracks`), the summits reached and the huts passed, of the
+  // track as recorded; empty without --places.
+  bool with_places = false;
+  std::vector<track::places::PlacesVisited> places_visited;
 };
 
-// Reads, cleans and measures one file.
+// Reads, cleans and measures one file; with `places` (--places: summits and huts), the ones each
+// track reached.
 FileStats compute_file_stats(const std::string& path, const track::ReadOptions& read,
-                             const track::AnalysisOptions& analysis);
+                             const track::AnalysisOptions& analysis,
+                             const std::vector<track::places::Place>* places = nullptr);
 
 nlohmann::json statistics_json(const track::Statistics& s);
 nlohmann::json file_stats_json(const FileStats& f);
