@@ -2,6 +2,7 @@
 
 #include <exiv2/exiv2.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -226,6 +227,21 @@ class PhotoParse {
 
 bool is_photo_type(int type) { return type == Exiv2::ImageType::jpeg || type == Exiv2::ImageType::bmff; }
 
+// What the first bytes say, before exiv2 sees them: only JPEG and ISO BMFF (HEIC, HEIF) go on, so
+// exiv2's other parsers (and their bugs) are never reached from a photo argument.
+enum class Magic { jpeg, bmff, other_image, none };
+Magic magic_of(const std::uint8_t* d, std::size_t n) {
+  auto starts = [&](const char* m, std::size_t len, std::size_t at = 0) {
+    return n >= at + len && std::equal(d + at, d + at + len, reinterpret_cast<const std::uint8_t*>(m));
+  };
+  if (starts("\xFF\xD8\xFF", 3)) return Magic::jpeg;
+  if (starts("ftyp", 4, 4)) return Magic::bmff;
+  if (starts("\x89PNG", 4) || starts("GIF8", 4) || starts("II*\0", 4) || starts("MM\0*", 4) || starts("BM", 2) ||
+      (starts("RIFF", 4) && starts("WEBP", 4, 8)))
+    return Magic::other_image;
+  return Magic::none;
+}
+
 std::string size_text(std::int64_t bytes) {
   return bytes >= (std::int64_t{1} << 20) ? fmt::format("{:.0f} MiB", static_cast<double>(bytes) / (1 << 20))
                                           : fmt::format("{} bytes", bytes);
@@ -245,6 +261,14 @@ PhotoReadResult read_photo_bytes(const std::uint8_t* data, std::size_t size, con
     return fail(fmt::format("the photo is {}, over the {} a photo may have: skipped", size_text(static_cast<std::int64_t>(size)),
                             size_text(options.max_bytes)));
   if (size == 0) return fail("the file is empty, not a photo");
+  switch (magic_of(data, size)) {
+    case Magic::none:
+      return fail("not an image (JPEG or HEIC expected)");
+    case Magic::other_image:
+      return fail("an image, but not JPEG or HEIC: photos are read from those only");
+    default:
+      break;
+  }
   WarningCollector warnings(display_name);
   std::vector<std::string> messages;
   {
