@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "app/ordered_jobs.hpp"
+#include "app/photo_options.hpp"
 #include "app/places_options.hpp"
 #include "app/stats_report.hpp"
 #include "app/track_arguments.hpp"
@@ -21,6 +22,7 @@ struct StatsArgs {
   std::vector<std::string> files;
   bool json = false;
   std::string places_file;  // --places
+  PhotoArgs photos;         // --photos, --photo-tz, --photo-time-offset
   TrackOptions track;
 };
 
@@ -34,12 +36,21 @@ int run_stats(const StatsArgs& a) {
   // --places: read once, before the tracks (an unreadable file fails here, naming it).
   std::vector<track::places::Place> places;
   if (!a.places_file.empty()) places = read_visit_places(a.places_file);
+  // --photos: read once (a photo that cannot be read is a warning), placed on each file's tracks.
+  StatsPhotos photos;
+  if (a.photos.any()) {
+    photos.photos = read_photo_files(expand_photo_arguments(a.photos.paths), diagnostics);
+    photos.options = photo_placement_options(a.photos);
+  }
+  UnplacedPhotos unplaced(photos.photos.size());
   const auto compute = [&](std::size_t i) {
-    return compute_file_stats(a.files[i], a.track.read, a.track.analysis, a.places_file.empty() ? nullptr : &places);
+    return compute_file_stats(a.files[i], a.track.read, a.track.analysis, a.places_file.empty() ? nullptr : &places,
+                              a.photos.any() ? &photos : nullptr);
   };
   const auto consume = [&](std::size_t i, FileStats& f) {
     diagnostics.progress_done();
     for (const auto& w : f.warnings) diagnostics.warning(w);
+    if (f.photos) unplaced.add_file(*f.photos);
     if (f.error) {
       diagnostics.error(*f.error);
       ++failed;
@@ -58,6 +69,7 @@ int run_stats(const StatsArgs& a) {
   };
   run_ordered_jobs<FileStats>(a.files.size(), compute, consume, jobs);
   if (a.json) std::cout << doc.dump(2) << '\n';
+  if (a.photos.any()) unplaced.report(photos.photos, diagnostics);
   if (failed > 0 && a.files.size() > 1)
     diagnostics.error(fmt::format("{} of {} files could not be read", failed, a.files.size()));
   return failed > 0 ? 1 : 0;
@@ -80,6 +92,7 @@ void add_stats_command(CLI::App& app, int& exit_code) {
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print one JSON document instead of tables");
   add_places_option(*cmd, args->places_file, PlacesUse::visits);
+  add_photo_options(*cmd, args->photos);
   add_track_options(*cmd, args->track);
   cmd->callback([args, &exit_code] {
     args->files = expand_track_arguments(args->files);

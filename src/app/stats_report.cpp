@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/places_report.hpp"
+#include "track/clean.hpp"
 #include "track/io/load.hpp"
 
 namespace trailray::app {
@@ -31,7 +32,7 @@ std::string num(const std::optional<double>& v, int decimals, const char* prefix
 
 FileStats compute_file_stats(const std::string& path, const track::ReadOptions& read,
                              const track::AnalysisOptions& analysis,
-                             const std::vector<track::places::Place>* places) {
+                             const std::vector<track::places::Place>* places, const StatsPhotos* photos) {
   FileStats f;
   f.with_places = places != nullptr;
   f.path = path;
@@ -44,9 +45,18 @@ FileStats compute_file_stats(const std::string& path, const track::ReadOptions& 
   f.format = r.file.format;
   f.routes = r.file.routes.size();
   f.waypoints = r.file.waypoints.size();
+  std::vector<track::Track> cleaned;  // --photos only
   for (std::size_t i = 0; i < r.file.tracks.size(); ++i) {
     const track::Track& t = r.file.tracks[i];
-    f.tracks.push_back(track::summarize_track(t, analysis));
+    if (photos != nullptr) {
+      // --photos: the cleaned track kept to place the photos on, so their distances are the table's.
+      track::CleanReport cleaning;
+      cleaned.push_back(track::clean_track(t, analysis.clean, cleaning));
+      const track::TrackMetrics metrics = track::compute_metrics(cleaned.back(), analysis.metrics);
+      f.tracks.push_back(track::summarize_cleaned_track(t, cleaned.back(), cleaning, metrics, analysis));
+    } else {
+      f.tracks.push_back(track::summarize_track(t, analysis));
+    }
     if (places != nullptr) f.places_visited.push_back(track::places::places_visited(t, *places));
     const track::CleanReport& c = f.tracks.back().cleaning;
     const std::string display = path == "-" ? "<stdin>" : path;
@@ -59,6 +69,13 @@ FileStats compute_file_stats(const std::string& path, const track::ReadOptions& 
     warn(c.non_increasing_time, "with a backward timestamp dropped by cleaning");
     warn(c.frozen_time, "with a placeholder timestamp (the clock never advances) kept without time");
     warn(c.invalid_coordinates, "with invalid coordinates dropped by cleaning");
+  }
+  if (photos != nullptr) {
+    std::vector<const track::Track*> on;
+    for (const track::Track& t : cleaned) on.push_back(&t);
+    f.photos = track::place_photos(photos->photos, on, photos->options);
+    f.photo_count = photos->photos.size();
+    for (const auto& w : f.photos->warnings) f.warnings.push_back(w.to_string());
   }
   return f;
 }
@@ -107,6 +124,7 @@ nlohmann::json file_stats_json(const FileStats& f) {
     }
   }
   j["tracks"] = std::move(tracks);
+  if (f.photos) j["photos"] = placed_photos_json(*f.photos);
   j["routes"] = f.routes;
   j["waypoints"] = f.waypoints;
   j["warnings"] = f.warnings;
@@ -141,6 +159,13 @@ std::string file_stats_table(const FileStats& f) {
   for (std::size_t i = 0; i < f.places_visited.size() && i < f.tracks.size(); ++i)
     out += places_visited_lines(f.tracks[i].name.empty() ? fmt::format("#{}", i + 1) : f.tracks[i].name,
                                 f.places_visited[i]);
+  // --photos: where they were taken, under the table.
+  if (f.photos) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < f.tracks.size(); ++i)
+      names.push_back(f.tracks[i].name.empty() ? fmt::format("#{}", i + 1) : f.tracks[i].name);
+    out += placed_photos_lines(*f.photos, f.photo_count, names);
+  }
   // The figures are the cleaned tracks': say so, and how many points the files recorded.
   std::size_t recorded = 0, kept = 0;
   for (const auto& t : f.tracks) {

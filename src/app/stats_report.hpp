@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/stats_photos.hpp"
 #include "track/diagnostics.hpp"
 #include "track/places/summits.hpp"
 #include "track/summary.hpp"
@@ -25,13 +26,18 @@ struct FileStats {
   // track as recorded; empty without --places.
   bool with_places = false;
   std::vector<track::places::PlacesVisited> places_visited;
+  // --photos: the photos placed on this file's cleaned tracks (PlacedPhoto::track: the track's
+  // index in the file) and the others' reasons; absent without --photos or when not read.
+  std::optional<track::PhotoPlacement> photos;
+  std::size_t photo_count = 0;  // photos read (placed here or not)
 };
 
 // Reads, cleans and measures one file; with `places` (--places: summits and huts), the ones each
-// track reached.
+// track reached; with `photos` (--photos), where they were taken on its cleaned tracks.
 FileStats compute_file_stats(const std::string& path, const track::ReadOptions& read,
                              const track::AnalysisOptions& analysis,
-                             const std::vector<track::places::Place>* places = nullptr);
+                             const std::vector<track::places::Place>* places = nullptr,
+                             const StatsPhotos* photos = nullptr);
 
 nlohmann::json statistics_json(const track::Statistics& s);
 nlohmann::json file_stats_json(const FileStats& f);
