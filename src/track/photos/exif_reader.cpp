@@ -136,7 +136,9 @@ class PhotoParse {
     const std::optional<double> lat = degrees("Exif.GPSInfo.GPSLatitude", "GPSLatitude");
     const std::optional<double> lon = degrees("Exif.GPSInfo.GPSLongitude", "GPSLongitude");
     if (!lat || !lon) {
-      if (lat.has_value() != lon.has_value()) warn("a GPS latitude without a longitude (or the other way): no GPS position");
+      const bool has_lat = find(exif_, "Exif.GPSInfo.GPSLatitude") != nullptr;
+      const bool has_lon = find(exif_, "Exif.GPSInfo.GPSLongitude") != nullptr;
+      if (has_lat != has_lon) warn("a GPS latitude without a longitude (or the other way): no GPS position");
       return;
     }
     double la = *lat, lo = *lon;
@@ -284,7 +286,7 @@ PhotoReadResult read_photo_bytes(const std::uint8_t* data, std::size_t size, con
       const int type = Exiv2::ImageFactory::getType(bytes, length);
       if (type == Exiv2::ImageType::none) return fail("not an image (JPEG or HEIC expected)");
       if (!is_photo_type(type)) return fail("an image, but not JPEG or HEIC: photos are read from those only");
-      Exiv2::Image::AutoPtr image = Exiv2::ImageFactory::open(bytes, length);
+      auto image = Exiv2::ImageFactory::open(bytes, length);  // exiv2 0.27: a std::auto_ptr, named by auto (deprecated)
       if (image.get() == nullptr) return fail("not an image (JPEG or HEIC expected)");
       image->readMetadata();
       const Exiv2::ExifData& exif = image->exifData();

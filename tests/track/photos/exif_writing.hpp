@@ -17,7 +17,7 @@ inline void write_exif_copy(const std::filesystem::path& source, const std::file
                             const std::map<std::string, std::string>& values, bool clear_first = true) {
   std::filesystem::copy_file(source, target, std::filesystem::copy_options::overwrite_existing);
   std::filesystem::permissions(target, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
-  Exiv2::Image::AutoPtr image = Exiv2::ImageFactory::open(target.string());
+  auto image = Exiv2::ImageFactory::open(target.string());  // exiv2 0.27: a std::auto_ptr, named by auto (deprecated)
   image->readMetadata();
   Exiv2::ExifData exif = clear_first ? Exiv2::ExifData() : image->exifData();
   for (const auto& [key, value] : values) exif[key] = value;
