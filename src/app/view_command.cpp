@@ -27,6 +27,7 @@ struct ViewArgs {
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
   WaypointArgs waypoints;
+  PhotoArgs photos;
   AirspaceArgs airspace;
   bool verbose = false;
   int frames = 0;
@@ -58,6 +59,7 @@ int run_view(const ViewArgs& a) {
   o.score = a.waypoints.score;
   o.score_rules = a.waypoints.score_rules;
   o.task_file = a.waypoints.task_file;
+  o.photos = a.photos;
   o.airspace_files = a.airspace.files;
   o.thermals = a.waypoints.thermals_for(o.style.tracks.color_by);
   o.moving_frame = !a.no_moving_frame;
@@ -106,6 +108,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
   add_imagery_option(*cmd, args->terrain);
   add_track_style_options(*cmd, args->style);
   add_waypoint_options(*cmd, args->waypoints);
+  add_photo_options(*cmd, args->photos);
   add_airspace_options(*cmd, args->airspace);
   add_label_options(*cmd, args->style);
   add_read_options(*cmd, args->read);

@@ -88,10 +88,10 @@ std::vector<LabelCandidate> label_candidates(const Scene& scene) {
     for (const Waypoint& w : scene.waypoints->points) {
       if (!w.visible || w.kind != WaypointKind::Photo || w.thumbnail == nullptr) continue;
       const PinClearance pin = pin_clearance(w.kind, scene.style.pins);
-      LabelCandidate c{w.name, LabelKind::photo, w.priority, w.marker_ecef, kWaypointColor,
-                       pin.px, pin.m, pin.width_px, pin.width_m};
+      LabelCandidate c{w.name, LabelKind::photo, w.enlarged ? w.priority + 1000 : w.priority, w.marker_ecef,
+                       kWaypointColor, pin.px, pin.m, pin.width_px, pin.width_m};
       c.image = w.thumbnail.get();
-      c.image_px = scene.style.pins.photo_px;
+      c.image_px = scene.style.pins.photo_px * (w.enlarged ? kEnlargedPhotoScale : 1.0);
       out.push_back(std::move(c));
     }
   if (!scene.style.labels.enabled) return out;
@@ -208,7 +208,9 @@ std::vector<PlacedLabel> LabelLayouter::layout(const std::vector<LabelCandidate>
     TextExtent extent;
     int frame = 0, w = 0, h = 0;
     if (photo) {
-      const int long_px = std::clamp(static_cast<int>(std::lround(c.image_px * ratio)), 8, 1024);
+      // An enlarged photo still fits above its pin: at most 45 % of the picture's short side.
+      const int most = std::max(8, static_cast<int>(0.45 * std::min(width, height)));
+      const int long_px = std::clamp(static_cast<int>(std::lround(c.image_px * ratio)), 8, std::min(1024, most));
       const double aspect = static_cast<double>(c.image->pixels.width) / c.image->pixels.height;
       frame = photo_frame_px(long_px);
       w = (aspect >= 1.0 ? long_px : std::max(1, static_cast<int>(std::lround(long_px * aspect)))) + 2 * frame;

@@ -24,6 +24,8 @@ enum class WaypointKind {
   Photo,     // a photo placed on a track (--photos, scene/photo_pins.hpp): a pin topped by its thumbnail
 };
 
+inline constexpr double kEnlargedPhotoScale = 4.0;
+
 struct Waypoint {
   std::string name;
   std::string description;
@@ -44,6 +46,9 @@ struct Waypoint {
   // A photo's pin: its thumbnail, drawn above the pin in place of the name (nullptr: a photo that
   // could not be decoded, or not a photo; its name is the label). `source` is the photo's path.
   std::shared_ptr<const PhotoImage> thumbnail;
+  // The photo the viewer shows larger (clicked in its list or on its pin): drawn
+  // kEnlargedPhotoScale times the style's size, before every other photo.
+  bool enlarged = false;
 
   // Which label wins where two would overlap: higher first (then the nearer one).
   int priority = 0;

@@ -167,6 +167,38 @@ void waypoint_list(const ViewerModel& model, const std::string& source, scene::W
   ImGui::PopID();
 }
 
+// The photos of --photos, in the order they were taken, under a line saying how many: each
+// its file's name and time (UTC); a click flies to it and shows it larger (the shell's fly-to).
+void photo_list(const ViewerModel& model, PanelActions& actions) {
+  std::vector<std::size_t> photos;
+  for (std::size_t w = 0; w < model.waypoints.points.size(); ++w)
+    if (model.waypoints.points[w].kind == scene::WaypointKind::Photo) photos.push_back(w);
+  if (photos.empty()) return;
+  std::stable_sort(photos.begin(), photos.end(), [&](std::size_t a, std::size_t b) {
+    return model.waypoints.points[a].time_unix_s < model.waypoints.points[b].time_unix_s;
+  });
+  ImGui::PushID("photos");
+  if (ImGui::TreeNodeEx("##photos", ImGuiTreeNodeFlags_DefaultOpen, "%zu photo%s", photos.size(),
+                        photos.size() == 1 ? "" : "s")) {
+    for (const std::size_t w : photos) {
+      const scene::Waypoint& p = model.waypoints.points[w];
+      ImGui::PushID(static_cast<int>(w));
+      std::string label = p.name;
+      if (std::isfinite(p.time_unix_s)) {
+        const auto day = static_cast<long long>(std::floor(p.time_unix_s)) % 86400;
+        label += fmt::format("  {:02d}:{:02d}:{:02d} UTC", day / 3600, day / 60 % 60, day % 60);
+      }
+      if (p.thumbnail == nullptr) label += " (not decoded)";
+      if (ImGui::Selectable(label.c_str(), p.enlarged || model.hover.waypoint == static_cast<int>(w)))
+        actions.fly_to_waypoint = static_cast<int>(w);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.source.c_str());
+      ImGui::PopID();
+    }
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+}
+
 bool contains_any_case(std::string_view text, std::string_view part) {
   const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
   return std::search(text.begin(), text.end(), part.begin(), part.end(),
@@ -244,11 +276,13 @@ void track_list_window(ViewerModel& model, PanelActions& actions) {
   std::unordered_set<std::string_view> track_sources;
   for (const scene::Track& t : model.tracks.tracks()) track_sources.insert(t.source);
   for (const scene::Waypoint& w : model.waypoints.points) {
+    if (w.kind == scene::WaypointKind::Photo) continue;  // listed together below
     const bool under_a_track = w.kind != scene::WaypointKind::Place && track_sources.count(w.source) > 0;
     const std::pair<std::string, scene::WaypointKind> file{w.source, w.kind};
     if (!under_a_track && std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
   }
   for (const auto& [file, kind] : files) waypoint_list(model, file, kind, true, actions);
+  photo_list(model, actions);
   ImGui::Separator();
   scene::TrackStyle& s = model.settings.style.tracks;
   width_controls(s);
@@ -286,6 +320,12 @@ void statistics_window(ViewerModel& model, PanelActions& actions) {
     ImGui::TextDisabled("%s", t.source.c_str());
     for (const std::string& line : statistics_lines(t.summary.clean)) ImGui::TextUnformatted(line.c_str());
     flight_statistics(t, actions);
+    if (!model.visit_places.empty()) {  // --places
+      const std::vector<std::string> lines =
+          places_visited_panel_lines(model.places_visited.of(t, model.visit_places));
+      if (lines.empty()) ImGui::TextDisabled("No summit reached, no hut passed.");
+      for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
+    }
   }
   ImGui::End();
 }

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
 #include "scene/camera.hpp"
 #include "track_cli_support.hpp"
+#include "xvfb_command.hpp"
 
 namespace trailray::test {
 namespace {
@@ -77,7 +79,7 @@ Box red_box(const Picture& picture) {
 }
 
 TEST(PhotoCli, TheOptionsAreInTheHelpOfRenderVideoAndView) {
-  for (const std::string command : {"render", "video"}) {
+  for (const std::string command : {"render", "video", "view"}) {
     const auto r = run_command(shell_quote(TRAILRAY_BINARY) + " " + command + " --help 2>&1");
     ASSERT_EQ(r.status, 0) << r.out;
     for (const char* option : {"--photos", "--photo-tz", "--photo-time-offset"})
@@ -174,6 +176,36 @@ TEST(PhotoCli, TheFilmStopsAtThePhotoAndShowsIt) {
                   " --photo-seconds 0 --frames-dir " + shell_quote(env.file("none")) + " 2>&1");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_EQ(png_count(env.file("none")), 20u) << "--photo-seconds 0: no stop";
+}
+
+TEST(PhotoCli, TheViewerListsThePhotoShowsItLargerAndFliesToIt) {
+  RenderEnv env;
+  const std::string gpx = env.write_gpx("walk.gpx", {GpxTrack{"Walk", {walk()}}});
+  const GpxPoint at = walk()[30];
+  const std::string photo = write_photo(env, "red.jpg", at.lat, at.lon, {255, 0, 0});
+  const std::string script = env.file("photo.txt"), small = env.file("small.png"), large = env.file("large.png");
+  std::ofstream(script) << "print-waypoints\nscreenshot " << small << "\nselect-waypoint 0\nprint-camera\nscreenshot "
+                        << large << "\n";
+  std::string view = env.prefix();
+  view.replace(view.find(" render "), 8, " view ");
+  std::string big = kPlain;
+  big.replace(big.find("480x270"), 7, "960x720");
+  // A window tall enough for the photo four times larger above its pin (a photo takes at most 45 %
+  // of the short side).
+  const auto r = run_command(xvfb_command_prefix(env.file("Xauthority")) + view + shell_quote(gpx) + big +
+                             " --photos " + shell_quote(photo) + " --script " + shell_quote(script) + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("'red.jpg'"), std::string::npos) << r.out;
+  // The flight ends looking at the photo's point.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(camera: pivot ([-\d.]+),([-\d.]+),)"))) << r.out;
+  EXPECT_NEAR(std::stod(m[1]), at.lat, 1e-5);
+  EXPECT_NEAR(std::stod(m[2]), at.lon, 1e-5);
+  // The thumbnail (72 px wide) before; the photo four times larger once selected.
+  const Box before = red_box(read_picture(small)), after = red_box(read_picture(large));
+  EXPECT_NEAR(before.x1 - before.x0 + 1, 72, 2);
+  EXPECT_NEAR(after.x1 - after.x0 + 1, 4 * 72, 4);
+  EXPECT_NEAR(after.y1 - after.y0 + 1, 4 * 54, 4);
 }
 
 }  // namespace

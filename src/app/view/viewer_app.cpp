@@ -12,6 +12,7 @@
 
 #include "app/interrupt_guard.hpp"
 #include "app/parallel_jobs.hpp"
+#include "app/photo_drawing.hpp"
 #include "app/view/film_panel.hpp"
 #include "app/view/legend_overlay.hpp"
 #include "app/view/profiler_table.hpp"
@@ -104,6 +105,10 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
     for (scene::Waypoint& w : drawing.waypoints) model_.waypoints.points.push_back(std::move(w));
     model_.volumes = std::move(drawing.volumes);
   }
+  // --photos: placed on the first tracks, their pins with thumbnails.
+  for (const track::PlacedPhoto& p :
+       add_scene_photos(o.photos, model_.tracks, model_.waypoints, {sources_.heights.get(), neutral_}, diagnostics_).placed)
+    photo_orientations_[p.photo.path] = p.photo.orientation;
   // The task's cylinders, then the airspaces; every volume placed on the terrain.
   add_airspace_volumes(model_.volumes, o.airspace_files, airspace_region(model_.tracks, model_.waypoints, o.camera),
                        sources_.heights.get(), diagnostics_);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/camera_options.hpp"
+#include "app/photo_options.hpp"
 #include "app/terrain_options.hpp"
 #include "scene/camera.hpp"
 #include "scene/style.hpp"
@@ -44,6 +45,7 @@ struct ViewerOptions {
   std::vector<std::string> airspace_files;  // --airspace: OpenAir files drawn as volumes
   bool thermals = false;                    // --thermals (resolved: on by default with --color-by phase)
   bool moving_frame = true;                 // false (--no-moving-frame): the full frame while the camera moves too
+  PhotoArgs photos;                         // --photos: pins with thumbnails; a click shows one larger
 };
 
 // Opens the window and runs until it is closed (or the script ends). Throws RenderError when

@@ -6,6 +6,7 @@
 
 #include "app/view/legend_overlay.hpp"
 #include "app/view/viewer_shell.hpp"
+#include "scene/photo_decode.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "scene/legend_content.hpp"
 #include "ui/framing_room.hpp"
@@ -52,9 +53,31 @@ void ViewerApp::fly_to_track(int index) {
 
 void ViewerApp::fly_to_waypoint(int index) {
   if (index < 0 || index >= static_cast<int>(model_.waypoints.points.size())) return;
+  if (model_.waypoints.points[static_cast<std::size_t>(index)].kind == scene::WaypointKind::Photo) enlarge_photo(index);
   const scene::LookAt& now = controller_.view();
   controller_.fly_to(
       look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(index)], now.heading_deg, now.pitch_deg));
+}
+
+void ViewerApp::enlarge_photo(int index) {
+  for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
+    scene::Waypoint& w = model_.waypoints.points[i];
+    w.enlarged = static_cast<int>(i) == index && w.kind == scene::WaypointKind::Photo && w.thumbnail != nullptr;
+    if (!w.enlarged) continue;
+    // The thumbnail has 128 texels on its long side; drawn four times larger it wants more.
+    const int long_side = static_cast<int>(model_.settings.style.pins.photo_px * scene::kEnlargedPhotoScale * 2.0);
+    if (std::max(w.thumbnail->pixels.width, w.thumbnail->pixels.height) >= static_cast<std::uint32_t>(long_side / 2))
+      continue;
+    try {
+      // The orientation is in the pixels already: the file's own, read again with them.
+      const auto orientation = photo_orientations_.find(w.source);
+      w.thumbnail = scene::make_photo_image(scene::decode_photo(
+          w.source, long_side, orientation != photo_orientations_.end() ? orientation->second : 1));
+    } catch (const scene::PhotoDecodeError& e) {
+      diagnostics_.warning(e.what());
+    }
+  }
+  ++model_.waypoints.revision;
 }
 
 void ViewerApp::follow_replay() { ui::follow_replay(model_, controller_); }

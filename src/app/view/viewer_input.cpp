@@ -77,6 +77,11 @@ void ViewerApp::handle_mouse(const scene::Camera& camera) {
   const double x = io.MousePos.x * io.DisplayFramebufferScale.x, y = io.MousePos.y * io.DisplayFramebufferScale.y;
   const glm::dvec2 delta(io.MouseDelta.x * io.DisplayFramebufferScale.x,
                          io.MouseDelta.y * io.DisplayFramebufferScale.y);
+  // A click on a photo's pin shows the photo larger and flies to it.
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && model_.hover.waypoint >= 0 &&
+      static_cast<std::size_t>(model_.hover.waypoint) < model_.waypoints.points.size() &&
+      model_.waypoints.points[static_cast<std::size_t>(model_.hover.waypoint)].kind == scene::WaypointKind::Photo)
+    fly_to_waypoint(model_.hover.waypoint);
   if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     if (const auto ground = controller_.ground_point_at(x, y)) {
       scene::LookAt to = controller_.view();

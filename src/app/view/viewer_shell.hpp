@@ -7,6 +7,7 @@
 #include <future>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "app/airspace_options.hpp"
@@ -56,7 +57,10 @@ class ViewerApp {
   int pick_airspace(double x_px, double y_px, const scene::Camera& camera, double ground_m);
   std::vector<scene::TrackKeyEntry> legend_key(const scene::TrackStyle& style) const;
   void fly_to_track(int index);
-  void fly_to_waypoint(int index);  // index into model_.waypoints
+  void fly_to_waypoint(int index);  // index into model_.waypoints (a photo's: also shown larger)
+  // The photo of waypoint `index` shown larger over its pin (decoded again at the size it is
+  // drawn), every other photo at its thumbnail's size.
+  void enlarge_photo(int index);
   void follow_replay();             // the replay's camera follow (chase, or orbit round the marker)
   // `status`: say so in the window too (the P key; not scripted pictures).
   void screenshot(const std::string& path, bool status = false);
@@ -106,6 +110,7 @@ class ViewerApp {
   bool panels_ = true;                       // false: `hide-panels`
   std::string window_grab_;                  // `window-screenshot PATH`: after the next frame's UI
   std::string film_error_;                   // why the last film stopped ("" : it did not fail)
+  std::unordered_map<std::string, int> photo_orientations_;  // --photos: each placed photo's EXIF orientation
   std::unique_ptr<FilmSession> film_;        // a film recording; last: destroyed with the context current
 };
 
