@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "track/io/text_output.hpp"
+#include "track/places/place_tags.hpp"
 
 namespace trailray::app {
 
@@ -16,7 +17,7 @@ std::string list_of(const std::vector<track::places::PlaceVisit>& visits) {
   std::string out;
   for (const track::places::PlaceVisit& v : visits) {
     if (!out.empty()) out += ", ";
-    out += place_label(v.place);
+    out += track::places::place_label(v.place);
     if (std::isfinite(v.time_unix_s)) {
       // The time of day, UTC, from the ISO text ("2024-06-18T10:32:05Z").
       const std::string iso = track::format_iso_time(v.time_unix_s);
@@ -27,11 +28,6 @@ std::string list_of(const std::vector<track::places::PlaceVisit>& visits) {
 }
 
 }  // namespace
-
-std::string place_label(const track::places::Place& place) {
-  const std::string name = track::valid_utf8(place.name);
-  return std::isfinite(place.ele_m) ? fmt::format("{} {:.0f} m", name, place.ele_m) : name;
-}
 
 nlohmann::json place_visits_json(const std::vector<track::places::PlaceVisit>& visits) {
   nlohmann::json out = nlohmann::json::array();

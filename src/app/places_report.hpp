@@ -20,7 +20,4 @@ nlohmann::json place_visits_json(const std::vector<track::places::PlaceVisit>& v
 // alike, for the track called `name`; nothing when it reached none of either.
 std::string places_visited_lines(const std::string& name, const track::places::PlacesVisited& visited);
 
-// "Eiger 3967 m", or the name alone without an elevation: the label of a place.
-std::string place_label(const track::places::Place& place);
-
 }  // namespace trailray::app

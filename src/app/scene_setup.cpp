@@ -8,9 +8,12 @@
 
 #include <fmt/format.h>
 
+#include "app/airspace_options.hpp"
 #include "app/overlay_source.hpp"
+#include "app/places_options.hpp"
 #include "app/track_reading.hpp"
 #include "scene/overlaid_imagery.hpp"
+#include "scene/place_labels.hpp"
 #include "scene/scored_route.hpp"
 #include "scene/thermal_markers.hpp"
 #include "scene/waypoint_building.hpp"
@@ -30,6 +33,22 @@ bool is_igc_path(const std::string& path) {
 }
 
 }  // namespace
+
+std::vector<track::places::Place> places_around(const std::string& file, const scene::TrackSet& tracks,
+                                                const scene::WaypointSet& waypoints, scene::Diagnostics& diagnostics) {
+  // Only the places around what is drawn: a country's extract holds tens of thousands.
+  const AirspaceRegion region = airspace_region(tracks, waypoints, CameraRequest{});
+  std::vector<track::places::Place> places = read_label_places(file, region.bounds.value_or(geo::LatLonBounds{}));
+  diagnostics.note(fmt::format("{} place{} from {}", places.size(), places.size() == 1 ? "" : "s", file));
+  return places;
+}
+
+std::vector<scene::Waypoint> osm_place_labels(const std::string& file, const scene::TrackSet& tracks,
+                                              const scene::WaypointSet& waypoints,
+                                              const scene::WaypointBuildOptions& placing,
+                                              scene::Diagnostics& diagnostics) {
+  return scene::osm_place_waypoints(places_around(file, tracks, waypoints, diagnostics), file, placing);
+}
 
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
@@ -53,6 +72,9 @@ SceneTracks build_scene_tracks(std::vector<scene::LoadedTrackFile> files, const 
   out.waypoints.points = scene::file_waypoints(files, placing);
   for (scene::Waypoint& w : scene::read_place_labels(waypoints.label_files, read, placing, diagnostics))
     out.waypoints.points.push_back(std::move(w));
+  if (!waypoints.places_file.empty())
+    for (scene::Waypoint& w : osm_place_labels(waypoints.places_file, out.tracks, out.waypoints, placing, diagnostics))
+      out.waypoints.points.push_back(std::move(w));
   if (waypoints.no_waypoints) scene::set_waypoints_visible(out.waypoints, false);
   // After --no-waypoints: the thermals and the score's turnpoints have options of their own.
   if (thermals) {

@@ -22,6 +22,7 @@
 #include "scene/track_set.hpp"
 #include "scene/waypoints.hpp"
 #include "terrain/tile_source.hpp"
+#include "track/places/place.hpp"
 
 namespace trailray::app {
 
@@ -62,7 +63,8 @@ struct SceneTracks {
 // Reads every file (the first that cannot be read throws, naming it) and builds its tracks
 // (build_tracks' errors), both on all cores with a progress line (app/track_reading), points without an elevation on
 // the lowest recorded height where there is no terrain (options.neutral_ground_m is not read); the files' waypoints and
-// the places of `waypoints.label_files` (read_place_labels' errors), hidden with --no-waypoints.
+// the places of `waypoints.label_files` (read_place_labels' errors) and of `waypoints.places_file`
+// (osm_place_labels), hidden with --no-waypoints.
 SceneTracks load_scene_tracks(const std::vector<std::string>& paths, const track::ReadOptions& read,
                               const scene::TrackStyle& style, const scene::TrackBuildOptions& options,
                               scene::Diagnostics& diagnostics, const WaypointArgs& waypoints = {});
@@ -73,6 +75,17 @@ SceneTracks build_scene_tracks(std::vector<scene::LoadedTrackFile> files, const 
                                const track::ReadOptions& read, const scene::TrackStyle& style,
                                const scene::TrackBuildOptions& options, scene::Diagnostics& diagnostics,
                                const WaypointArgs& waypoints = {});
+
+// --places: the places of the OpenStreetMap `file` around the visible tracks (else the waypoints;
+// app/places_options: their bounds and 5 km) as place labels (scene/place_labels), with a note
+// saying how many. Throws std::runtime_error naming the file when it cannot be read.
+// The places themselves (the viewer also lists the summits and huts the tracks reached).
+std::vector<track::places::Place> places_around(const std::string& file, const scene::TrackSet& tracks,
+                                                const scene::WaypointSet& waypoints, scene::Diagnostics& diagnostics);
+std::vector<scene::Waypoint> osm_place_labels(const std::string& file, const scene::TrackSet& tracks,
+                                              const scene::WaypointSet& waypoints,
+                                              const scene::WaypointBuildOptions& placing,
+                                              scene::Diagnostics& diagnostics);
 
 // --score: the first IGC file of `paths` scored under the rule set `rules_name` and its best route
 // built for the scene (nothing, after a warning, when no route scores). Throws std::runtime_error

@@ -55,6 +55,7 @@ int run_view(const ViewArgs& a) {
   o.screenshot = a.screenshot;
   o.timeout_s = a.timeout_s;
   o.label_files = a.waypoints.label_files;
+  o.places_file = a.waypoints.places_file;
   o.no_waypoints = a.waypoints.no_waypoints;
   o.score = a.waypoints.score;
   o.score_rules = a.waypoints.score_rules;

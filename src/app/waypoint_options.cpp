@@ -1,5 +1,7 @@
 #include "app/waypoint_options.hpp"
 
+#include "app/places_options.hpp"
+
 #include "track/scoring/rules.hpp"
 
 namespace trailray::app {
@@ -12,6 +14,7 @@ void add_waypoint_options(CLI::App& command, WaypointArgs& args) {
                   "or the waypoints of a GPX or GeoJSON file. Repeatable")
       ->type_name("FILE")
       ->allow_extra_args(false);  // one file per --labels: the words after it are tracks
+  add_places_option(command, args.places_file, PlacesUse::labels);
   command.add_flag("--no-waypoints", args.no_waypoints,
                    "No pins or labels for the files' waypoints (GPX wpt, KML points, FIT course points) or places");
   command.add_flag("--score", args.score,

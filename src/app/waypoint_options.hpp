@@ -5,7 +5,8 @@
 // first IGC track drawn: turnpoint pins, the legs on the ground, the closing gap); --task FILE (a
 // competition task: its cylinders, the optimised route on the ground, the turnpoints as pins);
 // --thermals / --no-thermals (a pin at the top of each thermal of the flights, labelled with its
-// climb: on by default with --color-by phase, off otherwise).
+// climb: on by default with --color-by phase, off otherwise); --places FILE (OpenStreetMap places
+// labelled around the tracks: app/places_options).
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,7 @@ namespace trailray::app {
 
 struct WaypointArgs {
   std::vector<std::string> label_files;  // --labels
+  std::string places_file;               // --places: an OpenStreetMap file (empty: none)
   bool no_waypoints = false;
   bool score = false;                          // --score: the first IGC track's XC score drawn
   std::string score_rules = "xcontest";        // --score-rules

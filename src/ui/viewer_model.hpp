@@ -18,6 +18,7 @@
 #include "track/color_values.hpp"
 #include "track/density.hpp"
 #include "track/statistics.hpp"
+#include "ui/places_statistics.hpp"
 #include "track/summary.hpp"
 #include "ui/film_state.hpp"
 #include "ui/replay.hpp"
@@ -96,6 +97,10 @@ struct ViewerModel {
   HoverState hover;
   ChartSelection selection;
   int selected_track = -1;  // the statistics panel's track (-1: none)
+  // --places: the summits and huts around the tracks; the statistics panel lists those the
+  // selected track reached (worked out once per track revision).
+  std::vector<track::places::Place> visit_places;
+  PlacesVisitCache places_visited;
   ReplayClock clock;
   FilmSettings film;       // the replay panel's "record film" (the desktop's; the page has none)
   FilmStatus film_status;  // the recording (the shell updates it)

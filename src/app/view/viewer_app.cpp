@@ -19,6 +19,7 @@
 #include "app/view/viewer_shell.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "scene/legend_content.hpp"
+#include "scene/place_labels.hpp"
 #include "scene/waypoint_building.hpp"
 #include "ui/viewer_overlay.hpp"
 #include "ui/viewer_panels.hpp"
@@ -89,6 +90,15 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   for (scene::Waypoint& w :
        scene::read_place_labels(o.label_files, o.read, {sources_.heights.get(), neutral_}, diagnostics_))
     model_.waypoints.points.push_back(std::move(w));
+  if (!o.places_file.empty()) {  // --places: labels around the first tracks, their summits and huts
+    std::vector<track::places::Place> places = places_around(o.places_file, model_.tracks, model_.waypoints, diagnostics_);
+    for (scene::Waypoint& w : scene::osm_place_waypoints(places, o.places_file, {sources_.heights.get(), neutral_}))
+      model_.waypoints.points.push_back(std::move(w));
+    std::erase_if(places, [](const track::places::Place& p) {
+      return !track::places::is_summit(p.kind) && !track::places::is_hut(p.kind);
+    });
+    model_.visit_places = std::move(places);
+  }
   scene::set_waypoints_visible(model_.waypoints, model_.settings.show_waypoints);
   if (o.score) {  // after the visibility: the turnpoints were asked for explicitly
     scene::ScoredRouteDrawing drawing =

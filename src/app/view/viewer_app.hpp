@@ -38,6 +38,7 @@ struct ViewerOptions {
   std::string screenshot;                   // written at the end of a scripted run
   double timeout_s = 120.0;                 // for a scripted picture's tiles
   std::vector<std::string> label_files;     // --labels: place labels
+  std::string places_file;                  // --places: OpenStreetMap places labelled, summits listed
   bool no_waypoints = false;                // --no-waypoints: pins and labels hidden (the panel shows them again)
   bool score = false;                       // --score: the first IGC track's XC score drawn
   std::string score_rules = "xcontest";     // --score-rules

@@ -7,6 +7,8 @@
 
 #include <fast_float/fast_float.h>
 
+#include "track/io/text_output.hpp"
+
 namespace trailray::track::places {
 
 std::string_view kind_name(PlaceKind kind) {
@@ -45,6 +47,14 @@ std::optional<PlaceKind> classify_place(const PlaceTags& t, bool area) {
   if (t.place == "village") return PlaceKind::Village;
   if (t.place == "hamlet") return PlaceKind::Hamlet;
   return std::nullopt;
+}
+
+std::string place_label(const Place& place) {
+  std::string name = valid_utf8(place.name);
+  const bool with_ele = is_summit(place.kind) || is_hut(place.kind) || place.kind == PlaceKind::Saddle ||
+                        place.kind == PlaceKind::Pass;
+  if (!with_ele || !std::isfinite(place.ele_m)) return name;
+  return name + " " + std::to_string(static_cast<long long>(std::llround(place.ele_m))) + " m";
 }
 
 namespace {

@@ -4,6 +4,7 @@
 // reach them without an OSM file.
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "track/places/place.hpp"
@@ -24,5 +25,10 @@ std::optional<PlaceKind> classify_place(const PlaceTags& tags, bool area);
 // "8000 ft", "8000'", "8000 feet", "-12"; surrounding spaces allowed. NaN for anything else
 // ("unknown", "2317;2320", "", a value beyond +-12000 m).
 double parse_ele(std::string_view text);
+
+// A place's label: "Eiger 3967 m" (its name and `ele` rounded to the metre) for peaks, volcanoes,
+// saddles, passes and huts with an elevation; the name alone for the others (a village's or a
+// lake's elevation is no part of its name). Bytes that are not UTF-8 replaced by U+FFFD.
+std::string place_label(const Place& place);
 
 }  // namespace trailray::track::places
