@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "track/io/parse_util.hpp"
+
 namespace trailray::track {
 namespace {
 
@@ -28,15 +30,6 @@ int digits_at(std::string_view s, std::size_t pos, std::size_t count) {
 constexpr int kMaxOffsetS = 14 * 3600;
 
 }  // namespace
-
-long long days_from_civil(int year, unsigned month, unsigned day) {
-  const long long y = static_cast<long long>(year) - (month <= 2 ? 1 : 0);
-  const long long era = (y >= 0 ? y : y - 399) / 400;
-  const unsigned yoe = static_cast<unsigned>(y - era * 400);
-  const unsigned doy = (153 * (month + (month > 2 ? -3 : 9)) + 2) / 5 + day - 1;
-  const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  return era * 146097 + static_cast<long long>(doe) - 719468;
-}
 
 std::optional<int> parse_utc_offset(std::string_view text) {
   const std::string_view s = trimmed(text);

@@ -33,7 +33,4 @@ std::optional<int> parse_utc_offset(std::string_view text);
 // "+02:00", "-05:30" for an offset in seconds (rounded to minutes).
 std::string format_utc_offset(int offset_s);
 
-// Days since 1970-01-01 of a proleptic Gregorian date (Howard Hinnant's days_from_civil).
-long long days_from_civil(int year, unsigned month, unsigned day);
-
 }  // namespace trailray::track

@@ -1,6 +1,7 @@
 #include "track/scoring/fixes.hpp"
 
 #include "track/io/load.hpp"
+#include "track/io/parse_util.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -35,16 +36,6 @@ bool signed_altitude(const std::string& s, std::size_t pos, int& out) {
   return true;
 }
 
-// Days since 1970-01-01 of a proleptic Gregorian date (Howard Hinnant's algorithm).
-long days_from_civil(long y, long m, long d) {
-  y -= m <= 2;
-  const long era = (y >= 0 ? y : y - 399) / 400;
-  const long yoe = y - era * 400;
-  const long doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-  const long doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  return era * 146097 + doe - 719468;
-}
-
 }  // namespace
 
 FixList parse_scoring_fixes(const std::string& text, const std::string& name) {
@@ -65,7 +56,8 @@ FixList parse_scoring_fixes(const std::string& text, const std::string& name) {
       long dd = 0, mm = 0, yy = 0;
       if (digits(line, pos, 2, dd) && digits(line, pos + 2, 2, mm) && digits(line, pos + 4, 2, yy) && mm >= 1 &&
           mm <= 12 && dd >= 1 && dd <= 31)
-        day0 = 86400.0 * static_cast<double>(days_from_civil(yy < 80 ? 2000 + yy : 1900 + yy, mm, dd));
+        day0 = 86400.0 * static_cast<double>(days_from_civil(yy < 80 ? 2000 + yy : 1900 + yy,
+                                                             static_cast<unsigned>(mm), static_cast<unsigned>(dd)));
       continue;
     }
     if (line.empty() || line[0] != 'B') continue;

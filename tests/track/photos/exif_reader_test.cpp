@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "test_support.hpp"
+#include "track/io/parse_util.hpp"
 #include "track/photos/exif_reader.hpp"
 #include "track/photos/exif_time.hpp"
 
