@@ -6,6 +6,7 @@
 //   a parsed path's segments are names: non-empty, no '/', '\', NUL or control byte, not . or ..
 //   a number parses only in its one spelling (its decimal text is the segment)
 //   a resolved file is a regular file inside the root, reached through no hidden name
+//   a photo's path (parse_photo_path) names one of the photos served, never one past them
 
 #include <unistd.h>
 
@@ -67,6 +68,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto byte = static_cast<unsigned char>(c);
       check(c != '/' && c != '\\' && byte >= 0x20 && byte != 0x7f, "no separator or control byte in a segment");
     }
+  }
+
+  // Three photos served: an index at or past them is no photo (a 404, never a read out of bounds).
+  if (const auto photo = parse_photo_path(parsed.path, 3)) {
+    check(photo->index < 3, "a photo's index names a photo served");
+    check(parsed.path.segments.size() == (photo->large ? 4u : 3u), "a photo's path has its one shape");
   }
 
   static const WebRoot root(scratch() / "web");

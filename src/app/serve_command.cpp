@@ -15,16 +15,23 @@
 #include "app/camera_options.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/parallel_jobs.hpp"
+#include "app/photo_drawing.hpp"
+#include "app/photo_options.hpp"
+#include "app/places_options.hpp"
 #include "app/scene_setup.hpp"
 #include "app/serve/http_server.hpp"
 #include "app/serve/serve_config.hpp"
 #include "app/serve/serve_site.hpp"
+#include "app/serve/served_pins.hpp"
 #include "app/style_options.hpp"
 #include "app/terminal_diagnostics.hpp"
 #include "app/terrain_options.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 #include "app/track_reading.hpp"
+#include "scene/photo_decode.hpp"
+#include "scene/photo_pins.hpp"
+#include "scene/place_labels.hpp"
 
 #ifndef TRAILRAY_WEB_ROOT
 #define TRAILRAY_WEB_ROOT "web"
@@ -46,6 +53,8 @@ struct ServeArgs {
   track::ReadOptions read;
   track::AnalysisOptions analysis;
   TerrainOptions terrain;
+  PhotoArgs photos;         // --photos: pins with thumbnails on the page
+  std::string places_file;  // --places: labels on the page
   std::vector<const CLI::Option*> page_options;  // those the page takes, told in /api/config.json
 };
 
@@ -67,6 +76,29 @@ std::vector<serve::ServedTrack> read_served_tracks(const ServeArgs& a, TerminalD
     if (keep && outcomes[i].loaded) keep->push_back(std::move(*outcomes[i].loaded));
   }
   return tracks;
+}
+
+// --photos and --places for the page: the photos placed on the served tracks (a warning for each
+// one that is not), their thumbnails decoded once; the places read around the tracks. Their pins
+// described in `photos` and `places` (serve/served_pins.hpp), the thumbnails kept in the site.
+void serve_photos_and_places(const ServeArgs& a, const scene::TrackSet& tracks,
+                             const scene::WaypointBuildOptions& placing, serve::ServeSite& site,
+                             nlohmann::json& photos, nlohmann::json& places, TerminalDiagnostics& diagnostics) {
+  if (a.photos.any()) {
+    const std::vector<track::PlacedPhoto> placed = read_and_place_photos(a.photos, photo_tracks(tracks), diagnostics);
+    const auto thumbnails = scene::decode_thumbnails(placed, scene::kThumbnailLongSidePx, diagnostics);
+    const std::vector<scene::Waypoint> pins = scene::photo_waypoints(placed, {}, placing);
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+      serve::ServedPhoto& p = site.photos.emplace_back();
+      p.path = placed[i].photo.path;
+      p.orientation = placed[i].photo.orientation;
+      if (thumbnails[i]) p.thumbnail = serve::encode_photo_jpeg(thumbnails[i]->pixels);
+    }
+    photos = serve::photos_json(pins, site.photos);
+    diagnostics.note(fmt::format("{} photo{} placed on the tracks", placed.size(), placed.size() == 1 ? "" : "s"));
+  }
+  if (!a.places_file.empty())
+    places = serve::places_json(osm_place_labels(a.places_file, tracks, scene::WaypointSet{}, placing, diagnostics));
 }
 
 // Each connection holds a socket: make room for the limit when the soft limit is lower.
@@ -95,20 +127,30 @@ int run_serve(const ServeArgs& a) {
   TerminalDiagnostics diagnostics;
 
   serve::ServeSite site;
-  std::vector<scene::LoadedTrackFile> files;  // kept only for --surface
-  site.tracks = read_served_tracks(a, diagnostics, a.terrain.surface.empty() ? nullptr : &files);
+  // The files are kept when the tracks are built here too: --surface, --photos, --places.
+  const bool build_here = !a.terrain.surface.empty() || a.photos.any() || !a.places_file.empty();
+  std::vector<scene::LoadedTrackFile> files;
+  site.tracks = read_served_tracks(a, diagnostics, build_here ? &files : nullptr);
   site.web_root = serve::WebRoot(a.web_root);
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics, /*imagery_without_terrain=*/true);
-  if (sources.drawn_surface) {
-    // --surface: the page draws what it is served as terrain, the surface with the canopy cut
-    // along the tracks under cover (found here, as `render` finds them); points without an
-    // elevation then stand on the ground there, and the open needs no cut.
+  nlohmann::json photos = nlohmann::json::array(), places = nlohmann::json::array();
+  if (build_here) {
+    // The tracks as `render` builds them: --surface's cut follows them, the photos are placed on
+    // them and the places read around them.
+    const scene::RecordedPoints recorded = scene::recorded_points(files);
     scene::TrackBuildOptions build{sources.heights.get(), 0.0, {}};
     build.surface = sources.surface.get();
+    build.analysis = a.analysis;
+    build.neutral_ground_m = recorded.lowest_or_sea_level();
     scene::TrackSet served;
     for (scene::Track& t : scene::build_tracks(files, parse_style(a.style).tracks, build, diagnostics))
       served.add(std::move(t));
-    sources.cut_canopy(served);
+    // --surface: the page draws what it is served as terrain, the surface with the canopy cut
+    // along the tracks under cover (found here, as `render` finds them); points without an
+    // elevation then stand on the ground there, and the open needs no cut.
+    if (sources.drawn_surface) sources.cut_canopy(served);
+    const scene::WaypointBuildOptions placing{sources.drawn(), build.neutral_ground_m};
+    serve_photos_and_places(a, served, placing, site, photos, places, diagnostics);
   }
   site.heights = sources.drawn();
   site.imagery = sources.imagery.get();
@@ -121,7 +163,8 @@ int run_serve(const ServeArgs& a) {
                                             "/tiles/terrain/{z}/{x}/{y}.png", site.terrain_max_zoom, true),
                           serve::tile_layer(site.imagery ? &site.imagery->info() : nullptr,
                                             "/tiles/imagery/{z}/{x}/{y}", site.imagery_max_zoom, false),
-                          serve::given_options(a.page_options), sources.overlay_legend)
+                          serve::given_options(a.page_options), sources.overlay_legend,
+                          std::move(photos), std::move(places))
           .dump(2);
   const bool loopback = serve::is_loopback_address(a.bind);
   site.loopback_hosts_only = loopback;
@@ -171,6 +214,8 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       "  /                                 the web app (--web-root)\n"
       "  /api/config.json                  tracks, tile URLs and options for the page\n"
       "  /tracks/N/NAME                    the N-th TRACK file as it is on disk\n"
+      "  /api/photos/N.jpg                 the N-th placed photo's thumbnail (--photos)\n"
+      "  /api/photos/N/large.jpg           the same photo larger, shown when its pin is clicked\n"
       "  /tiles/terrain/{z}/{x}/{y}.png    heights from --terrain as Terrarium PNG\n"
       "  /tiles/imagery/{z}/{x}/{y}        imagery tiles from --imagery (PNG, JPEG or WebP)\n"
       "Only 127.0.0.1 by default; --bind 0.0.0.0 opens it to the network. Stops on Ctrl-C or SIGTERM.\n"
@@ -201,6 +246,8 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->type_name("S");
   add_terrain_options(*cmd, args->terrain);
   add_imagery_option(*cmd, args->terrain);
+  add_photo_options(*cmd, args->photos);
+  add_places_option(*cmd, args->places_file, PlacesUse::labels);
   // Everything added from here on is an option of the page, told to it in /api/config.json.
   const std::size_t before_page_options = cmd->get_options().size();
   add_camera_options(*cmd, args->camera);

@@ -77,4 +77,22 @@ std::optional<std::uint32_t> parse_segment_number(std::string_view segment) {
   return static_cast<std::uint32_t>(value);
 }
 
+std::optional<PhotoRequest> parse_photo_path(const RequestPath& path, std::size_t count) {
+  const auto& s = path.segments;
+  if (path.trailing_slash || s.size() < 3 || s.size() > 4 || s[0] != "api" || s[1] != "photos") return std::nullopt;
+  std::optional<std::uint32_t> index;
+  bool large = false;
+  if (s.size() == 3) {
+    const std::string_view file = s[2];
+    if (!file.ends_with(".jpg")) return std::nullopt;
+    index = parse_segment_number(file.substr(0, file.size() - 4));
+  } else {
+    if (s[3] != "large.jpg") return std::nullopt;
+    index = parse_segment_number(s[2]);
+    large = true;
+  }
+  if (!index || *index >= count) return std::nullopt;
+  return PhotoRequest{*index, large};
+}
+
 }  // namespace trailray::app::serve

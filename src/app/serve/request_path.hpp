@@ -33,4 +33,13 @@ ParsedTarget parse_request_target(std::string_view target);
 // "01" or "+1" can never name what "1" names.
 std::optional<std::uint32_t> parse_segment_number(std::string_view segment);
 
+// A photo's picture asked for: "/api/photos/<N>.jpg" its thumbnail, "/api/photos/<N>/large.jpg"
+// the larger one the page shows when its pin is clicked. nullopt for any other path, and for an
+// index N that is not below `count` (the photos served), so a request names only what exists.
+struct PhotoRequest {
+  std::uint32_t index = 0;
+  bool large = false;
+};
+std::optional<PhotoRequest> parse_photo_path(const RequestPath& path, std::size_t count);
+
 }  // namespace trailray::app::serve

@@ -36,7 +36,8 @@ nlohmann::json tile_layer(const terrain::SourceInfo* info, const std::string& ur
 }
 
 nlohmann::json serve_config(const std::vector<ServedTrack>& tracks, nlohmann::json terrain, nlohmann::json imagery,
-                            nlohmann::json options, const std::optional<scene::ColorLegend>& overlay_legend) {
+                            nlohmann::json options, const std::optional<scene::ColorLegend>& overlay_legend,
+                            nlohmann::json photos, nlohmann::json places) {
   if (overlay_legend && imagery.is_object()) {
     nlohmann::json ticks = nlohmann::json::array();
     for (const scene::LegendTick& t : overlay_legend->ticks) ticks.push_back({t.position, t.label});
@@ -52,7 +53,9 @@ nlohmann::json serve_config(const std::vector<ServedTrack>& tracks, nlohmann::js
   return {{"tracks", std::move(list)},
           {"terrain", std::move(terrain)},
           {"imagery", std::move(imagery)},
-          {"options", std::move(options)}};
+          {"options", std::move(options)},
+          {"photos", std::move(photos)},
+          {"places", std::move(places)}};
 }
 
 }  // namespace trailray::app::serve

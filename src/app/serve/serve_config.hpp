@@ -4,7 +4,8 @@
 //    "terrain": {"url": "/tiles/terrain/{z}/{x}/{y}.png", "encoding": "terrarium", "min_zoom": 0,
 //                "max_zoom": 14, "bounds": [west, south, east, north], "attribution": "..."} or null,
 //    "imagery": {"url": "/tiles/imagery/{z}/{x}/{y}", "min_zoom": 0, "max_zoom": 17, ...} or null,
-//    "options": {"color": "#ff00ff", "color-by": "vspeed", "no-ssao": true, ...}}
+//    "options": {"color": "#ff00ff", "color-by": "vspeed", "no-ssao": true, ...},
+//    "photos": [...], "places": [...]}  (--photos and --places: served_pins.hpp; [] without them)
 // "bounds" and "attribution" only when the source says; "options" holds the style, camera, read
 // and cleaning options given on the command line, by their long names, exactly as given: a
 // string, an array of strings for an option given several times, true for a flag.
@@ -35,6 +36,8 @@ nlohmann::json tile_layer(const terrain::SourceInfo* info, const std::string& ur
 // `overlay_legend`: --overlay's colour bar, told as the imagery's "legend" ({"title", "colormap",
 // "min", "max", "ticks": [[position, label], ...]}) for the page's `overlay-legend` option.
 nlohmann::json serve_config(const std::vector<ServedTrack>& tracks, nlohmann::json terrain, nlohmann::json imagery,
-                            nlohmann::json options, const std::optional<scene::ColorLegend>& overlay_legend = {});
+                            nlohmann::json options, const std::optional<scene::ColorLegend>& overlay_legend = {},
+                            nlohmann::json photos = nlohmann::json::array(),
+                            nlohmann::json places = nlohmann::json::array());
 
 }  // namespace trailray::app::serve

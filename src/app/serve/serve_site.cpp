@@ -140,6 +140,13 @@ HttpAnswer answer_request(const ServeSite& site, const HttpRequest& request) {
   const RequestPath& path = target.path;
   const auto& s = path.segments;
   if (!s.empty() && s[0] == "api") {
+    if (s.size() >= 2 && s[1] == "photos") {
+      const auto photo = parse_photo_path(path, site.photos.size());
+      if (!photo) return not_found();
+      const ServedPhoto& p = site.photos[photo->index];  // the site outlives its server's jobs
+      if (!photo->large) return now(photo_thumbnail_response(p));
+      return {std::nullopt, [&p](std::stop_token stop) { return large_photo_response(p, stop); }};
+    }
     if (s.size() != 2 || s[1] != "config.json" || path.trailing_slash) return not_found();
     HttpResponse r;
     r.content_type = "application/json";

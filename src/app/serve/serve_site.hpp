@@ -2,7 +2,9 @@
 // What `trailray serve` answers, path by path (the HTTP contract the web page reads):
 //   GET /, /<file>                       the web app's files from the web root (a page that says
 //                                        how to build the app where the root has no index.html)
-//   GET /api/config.json                 what the page shows: tracks, tile URLs, options
+//   GET /api/config.json                 what the page shows: tracks, tile URLs, options, photos, places
+//   GET /api/photos/<index>.jpg          a --photos photo's thumbnail (served_pins.hpp)
+//   GET /api/photos/<index>/large.jpg    the same photo larger, for the page's enlarged view
 //   GET /tracks/<index>/<name>           the index-th TRACK file, its bytes as on disk
 //   GET /tiles/terrain/{z}/{x}/{y}.png   heights as Terrarium PNG (tile_answers.hpp)
 //   GET /tiles/imagery/{z}/{x}/{y}       imagery tiles
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "app/serve/http_server.hpp"
+#include "app/serve/served_pins.hpp"
 #include "app/serve/web_root.hpp"
 #include "terrain/tile_source.hpp"
 
@@ -31,6 +34,7 @@ struct ServeSite {
   int terrain_max_zoom = 0;
   terrain::ImagerySource* imagery = nullptr;  // nullptr: --imagery none
   int imagery_max_zoom = 0;
+  std::vector<ServedPhoto> photos;  // --photos, in the order of config.json's "photos"
   std::string config_json;  // the body of /api/config.json
   bool loopback_hosts_only = true;
 };
