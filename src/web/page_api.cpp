@@ -58,6 +58,17 @@ EMSCRIPTEN_KEEPALIVE const char* trailray_set_option(const char* name, const cha
   return kept(viewer->set_option(name, value));
 }
 
+// serve's photos and places (the JSON of its /api/config.json), and a photo's picture as it
+// arrives (`large` 1: the larger one, asked for in trailray_status()'s "photos"."wanted").
+EMSCRIPTEN_KEEPALIVE const char* trailray_set_served_pins(const char* json) {
+  if (!viewer) return kept("not started");
+  return kept(viewer->set_served_pins(json));
+}
+EMSCRIPTEN_KEEPALIVE const char* trailray_photo_picture(int index, int large, const char* bytes, int length) {
+  if (!viewer) return kept("not started");
+  return kept(viewer->set_photo_picture(index, large != 0, std::string_view(bytes, static_cast<std::size_t>(length))));
+}
+
 EMSCRIPTEN_KEEPALIVE void trailray_orbit(double dx, double dy) {
   if (viewer) viewer->orbit(dx, dy);
 }

@@ -30,6 +30,7 @@
 #include "ui/viewer_overlay.hpp"
 #include "ui/viewer_panels.hpp"
 #include "ui/waypoint_view.hpp"
+#include "terrain/image_codec.hpp"
 #include "web/fetched_tiles.hpp"
 #include "web/page_panels.hpp"
 
@@ -184,6 +185,50 @@ std::string PageViewer::set_option(std::string_view name, std::string_view value
   model_.settings.style = options_.style;
   dirty_ = true;
   return {};
+}
+
+std::string PageViewer::set_served_pins(std::string_view json) {
+  try {
+    ServedPins pins = served_pins(json, recorded_.lowest_or_sea_level());
+    model_.waypoints.points = std::move(pins.points);
+    ++model_.waypoints.revision;
+    first_photo_ = pins.first_photo;
+    large_urls_ = std::move(pins.large_urls);
+    large_in_.assign(large_urls_.size(), false);
+    photos_in_ = 0;
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  dirty_ = true;
+  return {};
+}
+
+std::string PageViewer::set_photo_picture(int index, bool large, std::string_view bytes) {
+  if (index < 0 || static_cast<std::size_t>(index) >= large_urls_.size())
+    return fmt::format("photo {}: there are {} photos", index, large_urls_.size());
+  scene::Waypoint& w = model_.waypoints.points[first_photo_ + static_cast<std::size_t>(index)];
+  try {
+    // The larger picture stands in for the thumbnail from then on: the atlas keeps it by its id.
+    w.thumbnail = decode_photo_bytes(bytes);
+  } catch (const terrain::TileDecodeError& e) {
+    return fmt::format("{}: {}", w.name, e.what());
+  }
+  if (large)
+    large_in_[static_cast<std::size_t>(index)] = true;
+  else
+    ++photos_in_;
+  ++model_.waypoints.revision;
+  dirty_ = true;
+  return {};
+}
+
+void PageViewer::enlarge_photo(int waypoint) {
+  for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
+    scene::Waypoint& w = model_.waypoints.points[i];
+    w.enlarged = static_cast<int>(i) == waypoint && w.kind == scene::WaypointKind::Photo && w.thumbnail != nullptr;
+  }
+  ++model_.waypoints.revision;
+  dirty_ = true;
 }
 
 void PageViewer::rebuild_tracks() {
@@ -344,10 +389,22 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
     }
   }
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
-  if (camera_ && actions.fly_to_waypoint >= 0 &&
-      actions.fly_to_waypoint < static_cast<int>(model_.waypoints.points.size())) {
+  // A click on a photo's pin in the picture (not on a panel) shows it larger and flies to it, as
+  // its line in the Tracks panel does.
+  int fly_to_waypoint = actions.fly_to_waypoint;
+  if (camera_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse)
+    if (const auto at = input_.position()) {
+      const int pin = ui::pick_waypoint(model_.waypoints, camera_->camera(), model_.settings.style.pins, at->x * ratio,
+                                        at->y * ratio, ui::kPickRadiusPx);
+      if (pin >= 0 && model_.waypoints.points[static_cast<std::size_t>(pin)].kind == scene::WaypointKind::Photo)
+        fly_to_waypoint = pin;
+    }
+  if (fly_to_waypoint >= 0 && fly_to_waypoint < static_cast<int>(model_.waypoints.points.size()) &&
+      model_.waypoints.points[static_cast<std::size_t>(fly_to_waypoint)].kind == scene::WaypointKind::Photo)
+    enlarge_photo(fly_to_waypoint);
+  if (camera_ && fly_to_waypoint >= 0 && fly_to_waypoint < static_cast<int>(model_.waypoints.points.size())) {
     const scene::LookAt& now = camera_->view();
-    camera_->fly_to(ui::look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(actions.fly_to_waypoint)],
+    camera_->fly_to(ui::look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(fly_to_waypoint)],
                                          now.heading_deg, now.pitch_deg));
   }
   if (camera_ && actions.fly_to_point) {
@@ -468,6 +525,7 @@ void PageViewer::draw_scene(std::uint32_t width_px, std::uint32_t height_px, dou
   scene.overlay_legend = options_.overlay_legend;
   scene.sun_time_unix_s = sun_time();
   scene.terrain = terrain_view_.get();
+  if (!model_.waypoints.points.empty()) scene.waypoints = &model_.waypoints;
   // Where the terrain has no tiles the ground lies at the lowest terrain loaded; before any has
   // come (or without terrain, or offline), at the tracks' lowest point.
   const bool terrain_came = terrain_view_ && terrain_report_.progress.loaded > 0;
@@ -543,6 +601,27 @@ std::string PageViewer::status_json() const {
   static const PageOptions defaults;
   j["default_sources"] = sources(defaults);
   j["frames_drawn"] = frames_drawn_;
+  // serve's pins: the photos (their thumbnails in, the one enlarged, the larger picture it wants:
+  // the page fetches it) and the place labels.
+  nlohmann::json photos = {{"count", large_urls_.size()}, {"thumbnails", photos_in_}, {"enlarged", -1},
+                           {"wanted", nullptr}, {"names", nlohmann::json::array()}};
+  std::size_t places = 0;
+  nlohmann::json place_names = nlohmann::json::array();
+  for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
+    const scene::Waypoint& w = model_.waypoints.points[i];
+    if (w.kind == scene::WaypointKind::Place) {
+      ++places;
+      if (place_names.size() < 50) place_names.push_back(w.name);
+    }
+    if (w.kind != scene::WaypointKind::Photo || i < first_photo_ || i - first_photo_ >= large_urls_.size()) continue;
+    const std::size_t photo = i - first_photo_;
+    photos["names"].push_back(w.name);
+    if (!w.enlarged) continue;
+    photos["enlarged"] = photo;
+    if (!large_in_[photo] && !large_urls_[photo].empty()) photos["wanted"] = {{"index", photo}, {"url", large_urls_[photo]}};
+  }
+  j["photos"] = photos;
+  j["places"] = {{"count", places}, {"names", place_names}};
   // What the pointer is over: a track point (its tooltip's lines) or a panel.
   nlohmann::json hover = {{"track", model_.hover.track}};
   if (model_.hover.track >= 0 && model_.hover.track < static_cast<int>(model_.tracks.size())) {

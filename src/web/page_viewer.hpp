@@ -26,6 +26,7 @@
 #include "web/page_legend.hpp"
 #include "web/page_options.hpp"
 #include "web/page_panels.hpp"
+#include "web/page_pins.hpp"
 
 namespace trailray::web {
 
@@ -39,6 +40,12 @@ class PageViewer {
   std::string open_track(const std::string& name, std::string_view bytes);
   // An option by the command line's name (page_options.hpp); "" or the error.
   std::string set_option(std::string_view name, std::string_view value);
+  // `trailray serve`'s photos and places (its /api/config.json: page_pins.hpp) as the scene's
+  // pins, replacing any given before; "" or the error.
+  std::string set_served_pins(std::string_view json);
+  // Photo `index`'s picture (JPEG, PNG or WebP bytes) for its pin: its thumbnail, or (`large`)
+  // the larger one shown while it is enlarged; "" or the error.
+  std::string set_photo_picture(int index, bool large, std::string_view bytes);
 
   // Gestures, in canvas pixels (device pixels, y down).
   void orbit(double dx_px, double dy_px);
@@ -91,6 +98,10 @@ class PageViewer {
   // today's noon where the page looks before any track is open.
   double sun_time() const;
   void fly_to_track(int index);
+  // A photo's pin (index into the model's waypoints) shown larger (the others back to their
+  // size), as the desktop viewer's click on it; its larger picture is asked for (status_json's
+  // "photos"."wanted") until it arrives.
+  void enlarge_photo(int waypoint);
   void draw_scene(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio);
 
   // Frames of the interface drawn after an input (ImGui settles hover and active items over a
@@ -116,6 +127,12 @@ class PageViewer {
   std::vector<std::pair<std::string, std::string>> given_options_;  // as given, for view_state
   std::vector<scene::LoadedTrackFile> files_;
   ui::ViewerModel model_;  // the tracks, the panels' settings, hover, selection, replay
+  // serve's photos: photo i is waypoint first_photo_ + i; its larger picture's URL, and whether
+  // it is in (the thumbnail replaced by it).
+  std::size_t first_photo_ = 0;
+  std::vector<std::string> large_urls_;
+  std::vector<bool> large_in_;
+  int photos_in_ = 0;  // thumbnails arrived
   scene::RecordedPoints recorded_;
   std::optional<scene::CameraController> camera_;
   bool camera_moved_ = false;  // by a gesture or an option: opening another track keeps the view

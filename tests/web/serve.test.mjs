@@ -213,3 +213,59 @@ test('serve --terrain DEM: once every tile is in and the view rests, "Loading te
   assert.ok(mean < 1, `no text drawn at the bottom left (mean difference ${mean.toFixed(2)})`);
   await page.close();
 });
+
+test('serve --photos --places: the photo\'s thumbnail above its point on the track, the places\' labels', async () => {
+  const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'trailray-serve-photos-'));
+  // A walk east along 46.6° N at 2000 m, a point every 0.0005° and 10 s.
+  let gpx = '<gpx version="1.1"><trk><name>Walk</name><trkseg>\n';
+  for (let i = 0; i <= 40; ++i) {
+    const time = new Date(Date.UTC(2024, 6, 1, 9, 0, i * 10)).toISOString().replace('.000', '');
+    gpx += `<trkpt lat="46.6" lon="${(8 + i * 0.0005).toFixed(4)}"><ele>2000</ele><time>${time}</time></trkpt>\n`;
+  }
+  fs.writeFileSync(path.join(scratch, 'walk.gpx'), `${gpx}</trkseg></trk></gpx>\n`);
+  // A flat red photo (made by the browser's canvas) taken at the walk's middle point (exiv2 writes its GPS).
+  const maker = await browser.newPage();
+  const jpeg = await maker.evaluate(() => {
+    const c = document.createElement('canvas');
+    c.width = 400; c.height = 300;
+    const g = c.getContext('2d');
+    g.fillStyle = '#ff0000';
+    g.fillRect(0, 0, 400, 300);
+    return c.toDataURL('image/jpeg', 0.95).split(',')[1];
+  });
+  await maker.close();
+  const photo = path.join(scratch, 'red.jpg');
+  fs.writeFileSync(photo, Buffer.from(jpeg, 'base64'));
+  const exiv2 = spawnSync('exiv2', ['-M', 'set Exif.GPSInfo.GPSLatitude 46/1 36/1 0/1', '-M', 'set Exif.GPSInfo.GPSLatitudeRef N',
+    '-M', 'set Exif.GPSInfo.GPSLongitude 8/1 0/1 36/1', '-M', 'set Exif.GPSInfo.GPSLongitudeRef E', photo]);
+  assert.equal(exiv2.status, 0, `exiv2: ${exiv2.stderr}`);
+  // A peak north of the walk and a village without an elevation, as OpenStreetMap XML.
+  fs.writeFileSync(path.join(scratch, 'places.osm'), `<?xml version="1.0" encoding="UTF-8"?>
+<osm version="0.6">
+ <node id="1" lat="46.604" lon="8.01" version="1"><tag k="natural" v="peak"/><tag k="name" v="Testhorn"/><tag k="ele" v="2500"/></node>
+ <node id="2" lat="46.596" lon="8.005" version="1"><tag k="place" v="village"/><tag k="name" v="Testdorf"/></node>
+</osm>
+`);
+  const url = await serve(['--terrain', 'none', '--imagery', 'none', '--color', '#0000ff', '--photos', photo,
+    '--places', path.join(scratch, 'places.osm'), path.join(scratch, 'walk.gpx')]);
+  const page = await openPage(browser, `${url}?no-panels`);
+  await page.waitForFunction(() => window.trailray.photosLoaded, { timeout: 60000 });
+  await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).photos.thumbnails === 1, { timeout: 60000 });
+  await framesDrawn(page);
+  const s = await status(page);
+  assert.deepEqual(s.photos.names, ['red.jpg']);
+  assert.equal(s.places.count, 2);
+  assert.deepEqual([...s.places.names].sort(), ['Testdorf', 'Testhorn 2500 m']);
+  const image = await canvasPixels(page);
+  const red = pixelsOfColor(image, [255, 0, 0], 60);
+  const track = pixelsOfColor(image, [0, 0, 255], 60);
+  // The thumbnail (72 px on its long side: 72 x 54) stands above the middle of the track.
+  assert.ok(track.count > 200, `the track (${track.count} blue pixels)`);
+  assert.ok(red.count > 1500 && red.count < 8000, `the thumbnail: ${red.count} red pixels`);
+  assert.ok(Math.abs(red.x - track.x) < 40, `above the track's middle (x ${red.x.toFixed(0)} vs ${track.x.toFixed(0)})`);
+  assert.ok(red.y < track.y - 20, `above the track (y ${red.y.toFixed(0)} vs ${track.y.toFixed(0)})`);
+  assert.deepEqual(await page.evaluate(() => window.trailray.messages), []);
+  if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-photos.png` });
+  await page.close();
+  fs.rmSync(scratch, { recursive: true, force: true });
+});

@@ -11,6 +11,7 @@ const page = {
   failed: null,      // why the viewer cannot run
   messages: [],      // every error and note shown, for tests
   openedFiles: 0,
+  photosLoaded: false,  // serve's photo thumbnails fetched (tests wait on it)
 };
 window.trailray = page;
 
@@ -56,6 +57,8 @@ function bindApi() {
     key: c('trailray_key', 'number', ['number', 'number', 'number']),
     char: c('trailray_char', null, ['number']),
     picture: c('trailray_picture', 'number', []),
+    setServedPins: c('trailray_set_served_pins', 'string', ['string']),
+    photoPicture: c('trailray_photo_picture', 'string', ['number', 'number', 'number', 'number']),
   };
 }
 
@@ -76,6 +79,45 @@ function openBytes(name, bytes) {
     updateTrackList();
   }
   return error;
+}
+
+// A photo's picture (serve's JPEG) into the viewer for its pin: the thumbnail, or the larger one
+// of the photo shown enlarged.
+async function loadPhotoPicture(index, url, large) {
+  try {
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`${response.status} ${response.statusText}`);
+    const bytes = new Uint8Array(await response.arrayBuffer());
+    const pointer = Module._malloc(Math.max(bytes.length, 1));
+    Module.HEAPU8.set(bytes, pointer);
+    let error;
+    try {
+      error = page.api.photoPicture(index, large ? 1 : 0, pointer, bytes.length);
+    } finally {
+      Module._free(pointer);
+    }
+    if (error) showMessage(error, 'note');
+  } catch (e) {
+    showMessage(`${url}: cannot be loaded (${e.message})`, 'note');
+  }
+}
+
+// serve's photos (pins, plain until their thumbnails come) and places (labels).
+async function openServedPins(served) {
+  const error = page.api.setServedPins(JSON.stringify({ photos: served.photos || [], places: served.places || [] }));
+  if (error) { showMessage(error); return; }
+  const thumbnails = (served.photos || []).map((p, i) => (p.thumbnail ? loadPhotoPicture(i, new URL(p.thumbnail, location.href).href, false) : null));
+  await Promise.all(thumbnails.filter(Boolean));
+  page.photosLoaded = true;
+}
+
+// The larger picture of the photo shown enlarged, asked for once.
+const largePhotosAsked = new Set();
+function loadWantedPhoto(status) {
+  const wanted = status.photos && status.photos.wanted;
+  if (!wanted || largePhotosAsked.has(wanted.index)) return;
+  largePhotosAsked.add(wanted.index);
+  loadPhotoPicture(wanted.index, new URL(wanted.url, location.href).href, true);
 }
 
 async function openFiles(files) {
@@ -348,6 +390,7 @@ function runFrames(canvas) {
       const status = JSON.parse(page.api.status());
       showTileProgress(status);
       showLegend(status.legend, ratio);
+      loadWantedPhoto(status);
       const state = page.api.viewState();
       if (state !== lastState) {
         lastState = state;
@@ -383,6 +426,9 @@ async function start() {
   for (const [name, value] of query.options) setOption(name, value);
   for (const url of (served && served.tracks ? served.tracks.map((t) => t.url) : [])) await openUrl(url);
   for (const url of query.tracks) await openUrl(url);
+  if (served && ((served.photos && served.photos.length) || (served.places && served.places.length))) {
+    await openServedPins(served);
+  }
   for (const [name, value] of fragment.options) setOption(name, value);
   runFrames(canvas);
   page.started = true;
