@@ -222,6 +222,16 @@ std::string PageViewer::set_photo_picture(int index, bool large, std::string_vie
   return {};
 }
 
+void PageViewer::fly_to_waypoint(int index) {
+  if (index < 0 || index >= static_cast<int>(model_.waypoints.points.size())) return;
+  const scene::Waypoint& w = model_.waypoints.points[static_cast<std::size_t>(index)];
+  if (w.kind == scene::WaypointKind::Photo) enlarge_photo(index);
+  if (!camera_) return;
+  const scene::LookAt& now = camera_->view();
+  camera_->fly_to(ui::look_at_waypoint(w, now.heading_deg, now.pitch_deg));
+  camera_moved_ = dirty_ = true;
+}
+
 void PageViewer::enlarge_photo(int waypoint) {
   for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
     scene::Waypoint& w = model_.waypoints.points[i];
@@ -358,6 +368,15 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   model_.settings.sun_time_unix = sun_time();  // what the shading panel starts from
   imgui_.begin_frame();
   if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
+  // A click on a photo's pin in the picture (not on a panel; with or without the panels) shows it
+  // larger and flies to it, as its line in the Tracks panel does.
+  if (camera_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse)
+    if (const auto at = input_.position()) {
+      const int pin = ui::pick_waypoint(model_.waypoints, camera_->camera(), model_.settings.style.pins, at->x * ratio,
+                                        at->y * ratio, ui::kPickRadiusPx);
+      if (pin >= 0 && model_.waypoints.points[static_cast<std::size_t>(pin)].kind == scene::WaypointKind::Photo)
+        fly_to_waypoint(pin);
+    }
   if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
   if (!panels_placed_) {
     // Their first places for the window's size (page_panels: folded on a small window).
@@ -389,24 +408,7 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
     }
   }
   if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
-  // A click on a photo's pin in the picture (not on a panel) shows it larger and flies to it, as
-  // its line in the Tracks panel does.
-  int fly_to_waypoint = actions.fly_to_waypoint;
-  if (camera_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse)
-    if (const auto at = input_.position()) {
-      const int pin = ui::pick_waypoint(model_.waypoints, camera_->camera(), model_.settings.style.pins, at->x * ratio,
-                                        at->y * ratio, ui::kPickRadiusPx);
-      if (pin >= 0 && model_.waypoints.points[static_cast<std::size_t>(pin)].kind == scene::WaypointKind::Photo)
-        fly_to_waypoint = pin;
-    }
-  if (fly_to_waypoint >= 0 && fly_to_waypoint < static_cast<int>(model_.waypoints.points.size()) &&
-      model_.waypoints.points[static_cast<std::size_t>(fly_to_waypoint)].kind == scene::WaypointKind::Photo)
-    enlarge_photo(fly_to_waypoint);
-  if (camera_ && fly_to_waypoint >= 0 && fly_to_waypoint < static_cast<int>(model_.waypoints.points.size())) {
-    const scene::LookAt& now = camera_->view();
-    camera_->fly_to(ui::look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(fly_to_waypoint)],
-                                         now.heading_deg, now.pitch_deg));
-  }
+  fly_to_waypoint(actions.fly_to_waypoint);
   if (camera_ && actions.fly_to_point) {
     const scene::LookAt& now = camera_->view();
     camera_->fly_to(ui::look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));

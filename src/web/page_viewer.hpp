@@ -98,6 +98,9 @@ class PageViewer {
   // today's noon where the page looks before any track is open.
   double sun_time() const;
   void fly_to_track(int index);
+  // A waypoint clicked (its pin, or its line in the Tracks panel): the camera flies to it; a
+  // photo is shown larger too.
+  void fly_to_waypoint(int index);
   // A photo's pin (index into the model's waypoints) shown larger (the others back to their
   // size), as the desktop viewer's click on it; its larger picture is asked for (status_json's
   // "photos"."wanted") until it arrives.

@@ -266,6 +266,16 @@ test('serve --photos --places: the photo\'s thumbnail above its point on the tra
   assert.ok(red.y < track.y - 20, `above the track (y ${red.y.toFixed(0)} vs ${track.y.toFixed(0)})`);
   assert.deepEqual(await page.evaluate(() => window.trailray.messages), []);
   if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-photos.png` });
+  // A click on the photo's pin (its ball stands on the track's line, just above it) shows it
+  // larger, from the larger picture the page fetches then.
+  await page.mouse.click(red.x, track.y - 12);
+  await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).photos.enlarged === 0, { timeout: 30000 });
+  await page.waitForFunction(() => JSON.parse(window.trailray.api.status()).photos.wanted === null, { timeout: 30000 });
+  await new Promise((r) => setTimeout(r, 3000));  // the flight to it
+  await framesDrawn(page);
+  const enlarged = pixelsOfColor(await canvasPixels(page), [255, 0, 0], 60);
+  assert.ok(enlarged.count > 4 * red.count, `shown larger: ${enlarged.count} red pixels, ${red.count} before`);
+  if (process.env.TRAILRAY_SCREENSHOT) await page.screenshot({ path: `${process.env.TRAILRAY_SCREENSHOT}-photo-enlarged.png` });
   await page.close();
   fs.rmSync(scratch, { recursive: true, force: true });
 });
