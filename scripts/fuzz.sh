@@ -13,6 +13,7 @@
 #    fuzz_film_text (video: --camera-path files, --duration/--speed/--from/--to/--trail)
 #    fuzz_serve_request (serve: request targets, path segments as numbers, the web root's answers)
 #    fuzz_exif (photos: JPEG and HEIC bytes through the EXIF reader, exiv2 underneath; seeds ../shared/data/photos/)
+#    fuzz_places (--places: ele text, tag values, .osm XML through the libosmium reader)
 # 2. regressions: runs each fuzzer once over every file in tests/fuzz/regressions/<format>/
 # 3. fuzzes each target for SECONDS_PER_TARGET, FUZZ_JOBS targets at a time (default: one per
 #    core; each libFuzzer process uses one). The corpus lives in fuzz-corpus/<format>/
@@ -20,7 +21,7 @@
 #    (../shared/data/tiles/ for tile; never copied) and from the regression inputs.
 # A crash, hang (-timeout=10) or excess memory (-rss_limit_mb=2048) is copied into
 # tests/fuzz/regressions/<format>/ and makes the script exit 1 after all targets have run.
-# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task heatmap tile quantized_mesh terrain_text track_text film_text serve_request exif" picks targets; FUZZ_MAX_LEN (default 1048576) caps
+# Environment: FUZZ_TARGETS="gpx igc tcx fit kml geojson airspace task heatmap tile quantized_mesh terrain_text track_text film_text serve_request exif places" picks targets; FUZZ_MAX_LEN (default 1048576) caps
 # input size -- the real files make MB-sized inputs, which run at ~20-100 exec/s under
 # ASan, so FUZZ_MAX_LEN=16384 explores much faster.
 set -uo pipefail
@@ -28,7 +29,7 @@ cd "$(dirname "$0")/.." || exit 2
 ROOT=$(pwd)
 
 SECONDS_PER_TARGET=${1:-60}
-TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task heatmap tile quantized_mesh terrain_text track_text film_text serve_request exif}
+TARGETS=${FUZZ_TARGETS:-gpx igc tcx fit kml geojson airspace task heatmap tile quantized_mesh terrain_text track_text film_text serve_request exif places}
 FUZZ_JOBS=${FUZZ_JOBS:-$(nproc)}
 DATA="$ROOT/../shared/data"
 REGRESSIONS="$ROOT/tests/fuzz/regressions"
@@ -114,7 +115,7 @@ fuzz_one() {
   [ "$fmt" = exif ] && seed_dir="$DATA/photos"  # real JPEG and HEIC photos (those over FUZZ_MAX_LEN are cut)
   [ "$fmt" = task ] && seed_dir="$DATA/tasks"  # .xctsk, XCTSK: texts, IGC files with C records (XCSoar .tsk: the regressions)
   {
-    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ] || [ "$fmt" = heatmap ] || [ "$fmt" = quantized_mesh ]; then
+    if [ "$fmt" = terrain_text ] || [ "$fmt" = track_text ] || [ "$fmt" = film_text ] || [ "$fmt" = serve_request ] || [ "$fmt" = heatmap ] || [ "$fmt" = quantized_mesh ] || [ "$fmt" = places ]; then
       :  # seeded by its regression inputs (a config, a template, a header, a cache entry)
     elif [ -d "$seed_dir" ]; then
       seeds+=("$seed_dir")
