@@ -59,7 +59,7 @@ TEST(PlacesRenderCli, PlacesAroundTheTrackAreDrawnTheRestLeftOut) {
 }
 
 TEST(PlacesRenderCli, TheOptionIsInEveryDrawingCommandAndABadFileIsAnError) {
-  for (const std::string command : {"render", "view", "video", "stats"}) {
+  for (const std::string command : {"render", "view", "video", "serve", "stats"}) {
     const auto r = run_command(shell_quote(TRAILRAY_BINARY) + " " + command + " --help 2>&1");
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("--places"), std::string::npos) << command << " --help lacks --places";
