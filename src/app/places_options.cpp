@@ -19,12 +19,15 @@ void add_places_option(CLI::App& command, std::string& file, PlacesUse use) {
   command.add_option("--places", file, what)->type_name("FILE")->check(CLI::ExistingFile);
 }
 
-std::vector<track::places::Place> read_visit_places(const std::string& file) {
-  std::vector<track::places::Place> places = track::places::read_osm_places(file);
+std::vector<track::places::Place> visit_places(std::vector<track::places::Place> places) {
   std::erase_if(places, [](const track::places::Place& p) {
     return !track::places::is_summit(p.kind) && !track::places::is_hut(p.kind);
   });
   return places;
+}
+
+std::vector<track::places::Place> read_visit_places(const std::string& file) {
+  return visit_places(track::places::read_osm_places(file));
 }
 
 std::vector<track::places::Place> read_label_places(const std::string& file, const geo::LatLonBounds& bounds) {

@@ -21,6 +21,9 @@ void add_places_option(CLI::App& command, std::string& file, PlacesUse use);
 // How far around the tracks' bounds places are labelled: the view reaches a little past them.
 inline constexpr double kPlacesMarginM = 5000.0;
 
+// Only the summits and huts of `places`: what track::places::places_visited looks for.
+std::vector<track::places::Place> visit_places(std::vector<track::places::Place> places);
+
 // The summits and huts of `file` (all of it: a country's peaks are a few thousand). Throws
 // std::runtime_error naming the file when it cannot be read.
 std::vector<track::places::Place> read_visit_places(const std::string& file);

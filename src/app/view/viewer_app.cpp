@@ -13,6 +13,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/parallel_jobs.hpp"
 #include "app/photo_drawing.hpp"
+#include "app/places_options.hpp"
 #include "app/view/film_panel.hpp"
 #include "app/view/legend_overlay.hpp"
 #include "app/view/profiler_table.hpp"
@@ -94,10 +95,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
     std::vector<track::places::Place> places = places_around(o.places_file, model_.tracks, model_.waypoints, diagnostics_);
     for (scene::Waypoint& w : scene::osm_place_waypoints(places, o.places_file, {sources_.heights.get(), neutral_}))
       model_.waypoints.points.push_back(std::move(w));
-    std::erase_if(places, [](const track::places::Place& p) {
-      return !track::places::is_summit(p.kind) && !track::places::is_hut(p.kind);
-    });
-    model_.visit_places = std::move(places);
+    model_.visit_places = visit_places(std::move(places));
   }
   scene::set_waypoints_visible(model_.waypoints, model_.settings.show_waypoints);
   if (o.score) {  // after the visibility: the turnpoints were asked for explicitly
