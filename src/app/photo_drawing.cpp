@@ -6,6 +6,7 @@
 
 #include "scene/photo_decode.hpp"
 #include "scene/photo_pins.hpp"
+#include "track/photos/exif_time.hpp"
 
 namespace trailray::app {
 
@@ -35,9 +36,7 @@ std::string photo_caption(const track::PlacedPhoto& photo, std::optional<int> de
   const int offset = zone_s.value_or(0);
   const auto local = static_cast<long long>(std::floor(photo.time_unix_s)) + offset;
   const long long day = ((local % 86400) + 86400) % 86400;
-  const std::string zone = zone_s ? fmt::format("{}{:02d}:{:02d}", offset < 0 ? '-' : '+',
-                                                              std::abs(offset) / 3600, std::abs(offset) / 60 % 60)
-                                                : std::string("UTC");
+  const std::string zone = zone_s ? track::format_utc_offset(offset) : std::string("UTC");
   return fmt::format("{} \u00b7 {:02d}:{:02d}:{:02d} {}", name, day / 3600, day / 60 % 60, day % 60, zone);
 }
 
