@@ -29,8 +29,6 @@
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 #include "app/track_reading.hpp"
-#include "scene/photo_decode.hpp"
-#include "scene/photo_pins.hpp"
 #include "scene/place_labels.hpp"
 
 #ifndef TRAILRAY_WEB_ROOT
@@ -85,17 +83,15 @@ void serve_photos_and_places(const ServeArgs& a, const scene::TrackSet& tracks,
                              const scene::WaypointBuildOptions& placing, serve::ServeSite& site,
                              nlohmann::json& photos, nlohmann::json& places, TerminalDiagnostics& diagnostics) {
   if (a.photos.any()) {
-    const std::vector<track::PlacedPhoto> placed = read_and_place_photos(a.photos, photo_tracks(tracks), diagnostics);
-    const auto thumbnails = scene::decode_thumbnails(placed, scene::kThumbnailLongSidePx, diagnostics);
-    const std::vector<scene::Waypoint> pins = scene::photo_waypoints(placed, {}, placing);
-    for (std::size_t i = 0; i < placed.size(); ++i) {
+    scene::WaypointSet pins;  // the page makes its own pins from the JSON
+    const ScenePhotos scene_photos = add_scene_photos(a.photos, tracks, pins, placing, diagnostics);
+    for (std::size_t i = 0; i < scene_photos.placed.size(); ++i) {
       serve::ServedPhoto& p = site.photos.emplace_back();
-      p.path = placed[i].photo.path;
-      p.orientation = placed[i].photo.orientation;
-      if (thumbnails[i]) p.thumbnail = serve::encode_photo_jpeg(thumbnails[i]->pixels);
+      p.path = scene_photos.placed[i].photo.path;
+      p.orientation = scene_photos.placed[i].photo.orientation;
+      if (scene_photos.thumbnails[i]) p.thumbnail = serve::encode_photo_jpeg(scene_photos.thumbnails[i]->pixels);
     }
-    photos = serve::photos_json(pins, site.photos);
-    diagnostics.note(fmt::format("{} photo{} placed on the tracks", placed.size(), placed.size() == 1 ? "" : "s"));
+    photos = serve::photos_json(pins.points, site.photos);
   }
   if (!a.places_file.empty())
     places = serve::places_json(osm_place_labels(a.places_file, tracks, scene::WaypointSet{}, placing, diagnostics));
