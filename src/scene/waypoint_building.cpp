@@ -12,6 +12,13 @@
 
 namespace trailray::scene {
 
+void place_on_ground(Waypoint& w, double neutral_ground_m) {
+  const double foot = std::isnan(w.ground_m) ? neutral_ground_m : w.ground_m;
+  const double marker = std::isnan(w.ele_m) ? foot : std::max(w.ele_m, foot);
+  w.ground_ecef = ecef_from({w.lat_deg, w.lon_deg, foot});
+  w.marker_ecef = ecef_from({w.lat_deg, w.lon_deg, marker});
+}
+
 std::vector<Waypoint> build_waypoints(const std::vector<track::Waypoint>& points, const std::string& source,
                                       WaypointKind kind, const WaypointBuildOptions& options) {
   std::vector<const track::Waypoint*> kept;
@@ -39,10 +46,7 @@ std::vector<Waypoint> build_waypoints(const std::vector<track::Waypoint>& points
     w.ele_m = p.point.ele;
     w.ground_m = ground[i];
     w.time_unix_s = p.point.time;
-    const double foot = std::isnan(w.ground_m) ? options.neutral_ground_m : w.ground_m;
-    const double marker = std::isnan(w.ele_m) ? foot : std::max(w.ele_m, foot);
-    w.ground_ecef = ecef_from({w.lat_deg, w.lon_deg, foot});
-    w.marker_ecef = ecef_from({w.lat_deg, w.lon_deg, marker});
+    place_on_ground(w, options.neutral_ground_m);
     out.push_back(std::move(w));
   }
   return out;

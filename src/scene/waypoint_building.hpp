@@ -26,6 +26,11 @@ struct WaypointBuildOptions {
 inline constexpr int kWaypointPriority = 2;
 inline constexpr int kPlacePriority = 1;
 
+// Where a waypoint with its place, elevation and ground (NaN: unknown) is drawn: the stem's foot
+// on the ground, else on the neutral ground; the marker at the elevation but never below the
+// foot (a GPS height under the ground would bury the pin), else on the foot.
+void place_on_ground(Waypoint& waypoint, double neutral_ground_m);
+
 // One scene waypoint per point with valid coordinates, in order: the ground below it sampled
 // from the terrain (NaN without), the stem's foot on it (else on the neutral ground), the marker
 // at the recorded elevation but never below the foot (a GPS height under the ground would bury

@@ -6,8 +6,8 @@
 #include <span>
 #include <stdexcept>
 
-#include "scene/camera.hpp"
 #include "scene/photo_pins.hpp"
+#include "scene/waypoint_building.hpp"
 #include "terrain/image_codec.hpp"
 #include "track/io/readers.hpp"
 
@@ -24,8 +24,7 @@ std::string text_or_empty(const nlohmann::json& j, const char* key) {
   return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
-// A pin as build_waypoints places one: the foot on the ground (else the neutral ground), the
-// marker at the elevation but never below the foot.
+// A pin placed as build_waypoints places one (scene::place_on_ground).
 bool place_pin(const nlohmann::json& j, scene::WaypointKind kind, double neutral_ground_m, scene::Waypoint& w) {
   if (!j.is_object()) return false;
   w.lat_deg = number_or_nan(j, "lat");
@@ -36,10 +35,7 @@ bool place_pin(const nlohmann::json& j, scene::WaypointKind kind, double neutral
   w.ele_m = number_or_nan(j, "ele");
   w.ground_m = number_or_nan(j, "ground");
   w.time_unix_s = number_or_nan(j, "time");
-  const double foot = std::isnan(w.ground_m) ? neutral_ground_m : w.ground_m;
-  const double marker = std::isnan(w.ele_m) ? foot : std::max(w.ele_m, foot);
-  w.ground_ecef = scene::ecef_from({w.lat_deg, w.lon_deg, foot});
-  w.marker_ecef = scene::ecef_from({w.lat_deg, w.lon_deg, marker});
+  scene::place_on_ground(w, neutral_ground_m);
   return true;
 }
 
