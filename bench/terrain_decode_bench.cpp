@@ -19,8 +19,8 @@
 #include <gdal/cpl_vsi.h>
 #include <gdal/gdal.h>
 
-#include "terrain/height_decode.hpp"
-#include "terrain/image_codec.hpp"
+#include "terrain/codecs/height_decode.hpp"
+#include "terrain/codecs/image_codec.hpp"
 
 namespace {
 

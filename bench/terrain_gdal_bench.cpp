@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "terrain/gdal_raster.hpp"
+#include "terrain/gdal/gdal_raster.hpp"
 
 namespace {
 

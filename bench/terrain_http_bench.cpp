@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "../tests/terrain/local_tile_server.hpp"
-#include "terrain/http_source.hpp"
+#include "terrain/sources/http_source.hpp"
 
 namespace {
 

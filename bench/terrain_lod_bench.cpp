@@ -13,7 +13,7 @@
 #include <optional>
 #include <utility>
 
-#include "terrain/lod_selection.hpp"
+#include "terrain/lod/lod_selection.hpp"
 
 namespace {
 

@@ -16,10 +16,10 @@
 
 #include "../tests/terrain/local_tile_server.hpp"
 #include "../tests/terrain/tile_fixtures.hpp"
-#include "terrain/encoded_sources.hpp"
-#include "terrain/lod_selection.hpp"
-#include "terrain/source_factory.hpp"
-#include "terrain/tile_loader.hpp"
+#include "terrain/sources/encoded_sources.hpp"
+#include "terrain/lod/lod_selection.hpp"
+#include "terrain/sources/source_factory.hpp"
+#include "terrain/loading/tile_loader.hpp"
 
 namespace {
 

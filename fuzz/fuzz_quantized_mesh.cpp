@@ -11,7 +11,7 @@
 #include <optional>
 #include <span>
 
-#include "terrain/quantized_mesh.hpp"
+#include "terrain/codecs/quantized_mesh.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace trailray::terrain;

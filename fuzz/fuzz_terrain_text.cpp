@@ -18,10 +18,10 @@
 #include <fstream>
 #include <string_view>
 
-#include "terrain/disk_cache.hpp"
-#include "terrain/http_client.hpp"
-#include "terrain/terrain_config.hpp"
-#include "terrain/url_template.hpp"
+#include "terrain/loading/disk_cache.hpp"
+#include "terrain/loading/http_client.hpp"
+#include "terrain/sources/terrain_config.hpp"
+#include "terrain/sources/url_template.hpp"
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include <cstdlib>
 #include <span>
 
-#include "terrain/height_decode.hpp"
-#include "terrain/image_codec.hpp"
+#include "terrain/codecs/height_decode.hpp"
+#include "terrain/codecs/image_codec.hpp"
 
 namespace {
 

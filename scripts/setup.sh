@@ -24,7 +24,7 @@ packages=(
   libsqlite3-dev         # MBTiles files (terrain/)
   libpng-dev             # PNG height and imagery tiles, 8 and 16 bit (terrain/)
   libturbojpeg0-dev      # JPEG imagery tiles (terrain/)
-  libheif-dev            # --photos: HEIC/HEIF photos decoded for their thumbnails (scene/photo_decode)
+  libheif-dev            # --photos: HEIC/HEIF photos decoded for their thumbnails (scene/pins/photo_decode)
   libwebp-dev            # WebP tiles (terrain/)
   libtomlplusplus-dev    # ~/.config/trailray/config.toml (terrain sources, cache size)
   libegl-dev             # EGL headers and libEGL (glvnd): headless GL contexts (render/)

@@ -11,9 +11,9 @@ packages=(
   geographiclib   # geodesics and local frames (geo/), as in the native build
   zlib            # .gz tracks, and KMZ through libzip
   libzip          # KMZ archives (track/io/zip_archive)
-  libpng1.6       # PNG tiles and pictures (terrain/image_codec)
-  libjpeg-turbo   # JPEG imagery tiles (terrain/image_codec, through its TurboJPEG API)
-  libwebp         # WebP tiles (terrain/image_codec)
+  libpng1.6       # PNG tiles and pictures (terrain/codecs/image_codec)
+  libjpeg-turbo   # JPEG imagery tiles (terrain/codecs/image_codec, through its TurboJPEG API)
+  libwebp         # WebP tiles (terrain/codecs/image_codec)
   freetype        # the legend's text (scene/)
   imgui           # Dear ImGui (the page's panels), the same 1.86 as libimgui-dev
 )

@@ -8,7 +8,7 @@
 #include "app/check_command.hpp"
 #include "app/terrain_options.hpp"
 #include "terrain/height_sampler.hpp"
-#include "terrain/source_factory.hpp"
+#include "terrain/sources/source_factory.hpp"
 
 namespace trailray::app {
 

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "geo/wgs84.hpp"
-#include "scene/airspace_volumes.hpp"
-#include "scene/volume_shapes.hpp"
+#include "scene/volumes/airspace_volumes.hpp"
+#include "scene/volumes/volume_shapes.hpp"
 #include "track/airspace/openair_reader.hpp"
 
 namespace trailray::app {

@@ -1,6 +1,6 @@
 #pragma once
 // `--airspace FILE` for the commands that draw (`render`, `view`): an OpenAir file's airspaces
-// drawn as translucent volumes around the tracks (scene/airspace_volumes.hpp), and the setup
+// drawn as translucent volumes around the tracks (scene/volumes/airspace_volumes.hpp), and the setup
 // that reads it into the scene's VolumeSet.
 
 #include <CLI/CLI.hpp>
@@ -13,10 +13,10 @@
 #include "app/camera_options.hpp"
 #include "geo/bounds.hpp"
 #include "scene/diagnostics.hpp"
-#include "scene/track_set.hpp"
-#include "scene/volumes.hpp"
-#include "scene/waypoints.hpp"
-#include "terrain/tile_source.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/volumes/volumes.hpp"
+#include "scene/pins/waypoints.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::app {
 

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::app {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "render/passes/track_buffer.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::app {
 

@@ -22,7 +22,7 @@
 #include "render/passes/track_buffer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "render/platform/gl_context.hpp"
-#include "scene/framing.hpp"
+#include "scene/camera/framing.hpp"
 #include "terrain/tile.hpp"
 
 namespace trailray::app {

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "app/bench_datasets.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::app {
 

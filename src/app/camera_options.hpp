@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::app {
 

@@ -77,7 +77,7 @@ void write(OutputFormat format, const track::TrackFile& file, std::ostream& out)
 }
 
 // Tracks, and routes, cleaned as `stats` and `render` clean them: a route's points are planned,
-// not measured, so they are never smoothed (render draws them so: scene/track_building).
+// not measured, so they are never smoothed (render draws them so: scene/tracks/track_building).
 void clean(track::TrackFile& file, const track::CleanOptions& options, std::size_t& dropped) {
   track::CleanReport report;
   for (track::Track& t : file.tracks) t = track::clean_track(t, options, report);

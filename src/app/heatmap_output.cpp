@@ -13,9 +13,9 @@
 
 #include "app/output_file.hpp"
 #include "geo/web_mercator.hpp"
-#include "terrain/image_codec.hpp"
-#include "terrain/mbtiles_writer.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/codecs/image_codec.hpp"
+#include "terrain/writers/mbtiles_writer.hpp"
+#include "terrain/sources/tile_source.hpp"
 #include "track/heatmap_exchange.hpp"
 #include "track/heatmap_pixels.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Where a heatmap goes and comes back from (`trailray heatmap -o`, trailray.Heatmap.write):
-//   X.tif     - the counts: one band, UInt32, EPSG:3857, a window of the grid (terrain/count_geotiff);
+//   X.tif     - the counts: one band, UInt32, EPSG:3857, a window of the grid (terrain/writers/count_geotiff);
 //   X.mbtiles - coloured XYZ tiles (PNG with alpha, zoom levels of the caller's choice), and the
 //   folder/     counts themselves beside them, exactly, so partial heatmaps merge without loss:
 //               MBTiles: the table `trailray_counts` (key "COL/ROW" of the grid's 256-cell tiles,
@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/heatmap_colors.hpp"
+#include "scene/pictures/heatmap_colors.hpp"
 #include "track/heatmap.hpp"
 #include "track/heatmap_exchange.hpp"
 

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "app/heatmap_output.hpp"
-#include "scene/heatmap_colors.hpp"
-#include "scene/heatmap_imagery.hpp"
+#include "scene/pictures/heatmap_colors.hpp"
+#include "scene/pictures/heatmap_imagery.hpp"
 
 namespace trailray::app {
 

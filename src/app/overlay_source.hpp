@@ -1,5 +1,5 @@
 #pragma once
-// --overlay SRC opened: a heatmap's counts GeoTIFF coloured here (scene/heatmap_imagery), a
+// --overlay SRC opened: a heatmap's counts GeoTIFF coloured here (scene/pictures/heatmap_imagery), a
 // heatmap's tiles (.mbtiles, folder) as they are with the legend their metadata describes, or
 // any other imagery source as it is, without a legend.
 
@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "app/terrain_options.hpp"
-#include "scene/legend.hpp"
-#include "terrain/source_factory.hpp"
+#include "scene/text/legend.hpp"
+#include "terrain/sources/source_factory.hpp"
 
 namespace trailray::app {
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "scene/photo_decode.hpp"
-#include "scene/photo_pins.hpp"
+#include "scene/pins/photo_decode.hpp"
+#include "scene/pins/photo_pins.hpp"
 #include "track/photos/exif_time.hpp"
 
 namespace trailray::app {

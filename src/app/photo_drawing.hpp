@@ -1,7 +1,7 @@
 #pragma once
 // --photos in the commands that draw (`render`, `video`, `view`): the photos read and placed on
-// the scene's tracks (app/photo_options), their thumbnails decoded (scene/photo_decode) and their
-// pins (scene/photo_pins) added to the scene's waypoints, where the labels pass draws them.
+// the scene's tracks (app/photo_options), their thumbnails decoded (scene/pins/photo_decode) and their
+// pins (scene/pins/photo_pins) added to the scene's waypoints, where the labels pass draws them.
 
 #include <memory>
 #include <optional>
@@ -10,10 +10,10 @@
 
 #include "app/photo_options.hpp"
 #include "scene/diagnostics.hpp"
-#include "scene/photo_image.hpp"
-#include "scene/track_set.hpp"
-#include "scene/waypoint_building.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/pins/photo_image.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/pins/waypoint_building.hpp"
+#include "scene/pins/waypoints.hpp"
 #include "track/photos/photo.hpp"
 
 namespace trailray::app {

@@ -7,7 +7,7 @@
 #include "app/track_reading.hpp"
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
-#include "scene/legend_content.hpp"
+#include "scene/text/legend_content.hpp"
 #include "scene/terrain_view.hpp"
 
 namespace trailray::app {

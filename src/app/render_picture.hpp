@@ -7,8 +7,8 @@
 
 #include "app/render_options.hpp"
 #include "scene/diagnostics.hpp"
-#include "scene/rgba_image.hpp"
-#include "scene/track_files.hpp"
+#include "scene/pictures/rgba_image.hpp"
+#include "scene/tracks/track_files.hpp"
 
 namespace trailray::app {
 

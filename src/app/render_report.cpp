@@ -4,7 +4,7 @@
 
 #include "render/gl/frame_profiler.hpp"
 #include "render/gl/gl_capabilities.hpp"
-#include "scene/sun_position.hpp"
+#include "scene/camera/sun_position.hpp"
 
 namespace trailray::app {
 

@@ -7,10 +7,10 @@
 
 #include "app/render_options.hpp"
 #include "render/renderer.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/scene.hpp"
-#include "terrain/tile_loader.hpp"
+#include "terrain/loading/tile_loader.hpp"
 
 namespace trailray::app {
 

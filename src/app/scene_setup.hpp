@@ -10,18 +10,18 @@
 #include "app/camera_options.hpp"
 #include "app/terrain_options.hpp"
 #include "app/waypoint_options.hpp"
-#include "scene/canopy_cut.hpp"
+#include "scene/tracks/canopy_cut.hpp"
 #include "scene/diagnostics.hpp"
-#include "scene/framing.hpp"
-#include "scene/legend.hpp"
-#include "scene/scored_route.hpp"
+#include "scene/camera/framing.hpp"
+#include "scene/text/legend.hpp"
+#include "scene/pins/scored_route.hpp"
 #include "scene/style.hpp"
-#include "scene/task_volumes.hpp"
-#include "scene/track_building.hpp"
-#include "scene/track_files.hpp"
-#include "scene/track_set.hpp"
-#include "scene/waypoints.hpp"
-#include "terrain/tile_source.hpp"
+#include "scene/volumes/task_volumes.hpp"
+#include "scene/tracks/track_building.hpp"
+#include "scene/tracks/track_files.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/pins/waypoints.hpp"
+#include "terrain/sources/tile_source.hpp"
 #include "track/places/place.hpp"
 
 namespace trailray::app {
@@ -77,7 +77,7 @@ SceneTracks build_scene_tracks(std::vector<scene::LoadedTrackFile> files, const 
                                const WaypointArgs& waypoints = {});
 
 // --places: the places of the OpenStreetMap `file` around the visible tracks (else the waypoints;
-// app/places_options: their bounds and 5 km) as place labels (scene/place_labels), with a note
+// app/places_options: their bounds and 5 km) as place labels (scene/pins/place_labels), with a note
 // saying how many. Throws std::runtime_error naming the file when it cannot be read.
 // The places themselves (the viewer also lists the summits and huts the tracks reached).
 std::vector<track::places::Place> places_around(const std::string& file, const scene::TrackSet& tracks,

@@ -29,7 +29,7 @@
 #include "app/track_arguments.hpp"
 #include "app/track_options.hpp"
 #include "app/track_reading.hpp"
-#include "scene/place_labels.hpp"
+#include "scene/pins/place_labels.hpp"
 
 #ifndef TRAILRAY_WEB_ROOT
 #define TRAILRAY_WEB_ROOT "web"

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "terrain/height_sampler.hpp"
-#include "terrain/source_factory.hpp"
+#include "terrain/sources/source_factory.hpp"
 
 namespace trailray::app {
 

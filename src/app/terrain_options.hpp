@@ -1,13 +1,13 @@
 #pragma once
 // Options about terrain and imagery sources, spelled the same in every command (DESIGN.md):
 // --terrain, --terrain-encoding, --terrain-scheme, --terrain-zoom, --offline, --config. They
-// override the configuration file (terrain/terrain_config.hpp), which overrides the defaults.
+// override the configuration file (terrain/sources/terrain_config.hpp), which overrides the defaults.
 
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
-#include "terrain/terrain_config.hpp"
+#include "terrain/sources/terrain_config.hpp"
 
 namespace trailray::app {
 
@@ -21,7 +21,7 @@ struct TerrainOptions {
   std::string imagery;  // --imagery, for commands that draw (add_imagery_option)
   std::string imagery_scheme;  // --imagery-scheme
   // --surface SRC: a surface model (canopy, buildings) drawn instead of the terrain, which the
-  // tracks still stand on; along the tracks under cover the canopy is cut away (scene/canopy_cut).
+  // tracks still stand on; along the tracks under cover the canopy is cut away (scene/tracks/canopy_cut).
   std::string surface;
   // --overlay SRC over the imagery (a heatmap: counts GeoTIFF, .mbtiles or folder `trailray
   // heatmap` wrote; or any imagery with transparency), its opacity and a count raster's colours.

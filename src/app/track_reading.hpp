@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "scene/diagnostics.hpp"
-#include "scene/track_building.hpp"
-#include "scene/track_files.hpp"
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_building.hpp"
+#include "scene/tracks/track_files.hpp"
+#include "scene/tracks/track_set.hpp"
 
 namespace trailray::app {
 

@@ -22,7 +22,7 @@
 #include "app/video_options.hpp"
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
-#include "scene/photo_decode.hpp"
+#include "scene/pins/photo_decode.hpp"
 #include "scene/terrain_view.hpp"
 
 namespace trailray::app {

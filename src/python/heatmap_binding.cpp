@@ -13,7 +13,7 @@
 #include "python/bindings.hpp"
 #include "python/text.hpp"
 #include "python/track_objects.hpp"
-#include "terrain/count_geotiff.hpp"
+#include "terrain/writers/count_geotiff.hpp"
 #include "track/heatmap.hpp"
 #include "track/io/load.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "render/gl/frame_profiler.hpp"
 #include "render/passes/terrain_pass.hpp"
-#include "scene/rgba_image.hpp"
+#include "scene/pictures/rgba_image.hpp"
 
 namespace trailray::render {
 

@@ -14,7 +14,7 @@
 #include "render/passes/track_buffer.hpp"
 #include "render/passes/track_pass.hpp"
 #include "scene/style.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/pins/waypoints.hpp"
 
 namespace trailray::render {
 

@@ -6,7 +6,7 @@
 
 #include "render/gl/gl_capabilities.hpp"
 #include "render/passes/shadow_pass.hpp"
-#include "scene/legend_content.hpp"
+#include "scene/text/legend_content.hpp"
 
 namespace trailray::render {
 namespace {

@@ -12,7 +12,7 @@
 //   compose    sun, sky light, shadows, AO, atmosphere: the lit frame
 //   overlays   the track overlay blended over it
 //   volumes    airspaces and task cylinders: translucent walls, floor and ceiling outlines
-//   labels     the names of waypoints, places and tracks (laid out by scene/label_layout.hpp)
+//   labels     the names of waypoints, places and tracks (laid out by scene/text/label_layout.hpp)
 //   output     the frame handed to its target (read back, copied into a window)
 //
 // Each pass runs in a KHR_debug group of its name and, with a profiler, is timed under it.
@@ -41,7 +41,7 @@
 #include "render/terrain_gpu.hpp"
 #include "render/track_gpu.hpp"
 #include "render/volume_gpu.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
 

@@ -16,7 +16,7 @@
 #include "render/gl/gpu_resource_cache.hpp"
 #include "render/passes/track_buffer.hpp"
 #include "render/passes/track_pass.hpp"
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_set.hpp"
 
 namespace trailray::render {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The scene's volumes (airspaces, task cylinders: scene/volumes.hpp) on the GPU: one vertex
+// The scene's volumes (airspaces, task cylinders: scene/volumes/volumes.hpp) on the GPU: one vertex
 // buffer of wall triangles and one of outline quads for the whole set, float offsets from one
 // origin (the set's centre: a few hundred kilometres at most once culled, centimetres of float
 // precision), made again only when the set, its revision or the neutral ground changes.
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "render/gl/gl_objects.hpp"
-#include "scene/volume_shapes.hpp"
-#include "scene/volumes.hpp"
+#include "scene/volumes/volume_shapes.hpp"
+#include "scene/volumes/volumes.hpp"
 
 namespace trailray::render {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/sun_position.hpp"
+#include "scene/camera/sun_position.hpp"
 
 namespace trailray::scene {
 

@@ -10,12 +10,12 @@
 #include <optional>
 #include <vector>
 
-#include "scene/image_paint.hpp"
-#include "scene/legend.hpp"
+#include "scene/pictures/image_paint.hpp"
+#include "scene/text/legend.hpp"
 #include "scene/style.hpp"
-#include "scene/track_set.hpp"
-#include "scene/volumes.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/volumes/volumes.hpp"
+#include "scene/pins/waypoints.hpp"
 #include "track/color_values.hpp"
 
 namespace trailray::scene {
@@ -34,7 +34,7 @@ struct Scene {
   std::optional<track::ValueRange> color_range;
   // The colour bar of what --overlay draws on the terrain (a heatmap), drawn above the tracks'.
   std::optional<ColorLegend> overlay_legend;
-  double sun_time_unix_s = 0.0;  // where the sun stands (scene/sun_position.hpp)
+  double sun_time_unix_s = 0.0;  // where the sun stands (scene/camera/sun_position.hpp)
   // A light from a fixed direction instead (unit, towards it, ECEF): a sun placed by azimuth and
   // elevation rather than by time.
   std::optional<glm::dvec3> sun_direction_ecef;

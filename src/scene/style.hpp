@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/camera.hpp"
-#include "scene/colormap.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/pictures/colormap.hpp"
 #include "track/color_values.hpp"
 
 namespace trailray::scene {
@@ -84,7 +84,7 @@ struct Shading {
   SnowCover snow;          // `--snow`, `--snowline M`
 };
 
-// The names drawn over the picture (scene/label_layout.hpp, the renderer's labels pass): of
+// The names drawn over the picture (scene/text/label_layout.hpp, the renderer's labels pass): of
 // waypoints, place labels and tracks (at their start).
 struct LabelStyle {
   bool enabled = true;  // `--no-labels`

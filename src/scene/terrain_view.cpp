@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "geo/tile_id.hpp"
-#include "terrain/lod_selection.hpp"
+#include "terrain/lod/lod_selection.hpp"
 #include "terrain/tile_sampling.hpp"
 
 namespace trailray::scene {

@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "terrain/tile.hpp"
-#include "terrain/tile_loader.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/loading/tile_loader.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::scene {
 

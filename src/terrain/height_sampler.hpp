@@ -24,9 +24,9 @@
 #include <vector>
 
 #include "geo/web_mercator.hpp"
-#include "terrain/tile_loader.hpp"
+#include "terrain/loading/tile_loader.hpp"
 #include "terrain/tile_sampling.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::terrain {
 

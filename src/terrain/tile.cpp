@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::terrain {
 

@@ -36,7 +36,7 @@ enum class ColorMetric {
 };
 
 // density and thermals: a count over all the tracks of a scene, not a value of one track's points
-// (scene/track_density.hpp computes them where the tracks are finished together).
+// (scene/tracks/track_density.hpp computes them where the tracks are finished together).
 inline bool counts_neighbours(ColorMetric m) { return m == ColorMetric::density || m == ColorMetric::thermals; }
 
 // Flight phases (`phase`, track/flight/phase_values.hpp): circling points carry their climb in
@@ -57,7 +57,7 @@ std::vector<std::string_view> color_metric_names();                    // every 
 // ground", "Heart rate", "Cadence", "Power", "Elapsed time"; and the unit: "km/h", "m/s", "%",
 // "m", "m", "bpm", "rpm", "W", "" (time is printed as h:mm, see format_color_value); phase:
 // "Climb in thermals", "m/s"; density: "Tracks nearby", "tracks"; thermals: "Flights climbing
-// nearby", "flights" (the legend names the radius: scene/track_density.hpp).
+// nearby", "flights" (the legend names the radius: scene/tracks/track_density.hpp).
 std::string_view color_metric_label(ColorMetric metric);
 std::string_view color_metric_unit(ColorMetric metric);
 
@@ -78,7 +78,7 @@ std::string format_color_value(ColorMetric metric, double value);
 // (NaN where unknown); agl = ele - ground. solid gives an all-NaN vector per segment.
 // Elapsed time counts from the track's first timestamp. phase needs the flight analysis and
 // gives all-NaN here: its values come from flight::phase_color_values; so do density and thermals
-// (their counts need every track: scene/track_density.hpp); cover too (the scene's tracks hold
+// (their counts need every track: scene/tracks/track_density.hpp); cover too (the scene's tracks hold
 // their class against the surface model: scene::Track::cover).
 // Throws std::invalid_argument when the shapes do not match the track (metrics only checked for
 // the metrics that read them: speed, vspeed, slope, time), or for agl without ground heights.

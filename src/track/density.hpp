@@ -2,7 +2,7 @@
 // How many distinct tracks passed near each point: the density view (`--color-by density`) and
 // the thermal map (`--color-by thermals`: how many flights climbed near each point). It needs
 // every track at once, so the scene computes it where the tracks are finished together
-// (scene/track_density.hpp); this file is only the geometry.
+// (scene/tracks/track_density.hpp); this file is only the geometry.
 //
 // "Near" is horizontal: the distance between the points' places on the WGS84 ellipsoid, heights
 // left out, measured as the straight line between those places in ECEF. Within the radii allowed

@@ -23,7 +23,7 @@ struct HeatmapDescription {
   HeatmapMeasure measure = HeatmapMeasure::tracks;
   std::uint64_t tracks = 0;
   std::uint32_t max_count = 0;
-  std::string colormap = "warm", scale = "log";  // the tiles' colours, by name (scene/heatmap_colors)
+  std::string colormap = "warm", scale = "log";  // the tiles' colours, by name (scene/pictures/heatmap_colors)
 };
 
 std::string heatmap_description_json(const HeatmapDescription& description);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <ctime>
 
-#include "scene/thermal_markers.hpp"
+#include "scene/pins/thermal_markers.hpp"
 
 namespace trailray::ui {
 namespace {

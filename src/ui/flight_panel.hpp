@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_set.hpp"
 #include "track/flight/flight_analysis.hpp"
 #include "ui/viewer_panels.hpp"
 

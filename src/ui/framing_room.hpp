@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "scene/framing.hpp"
+#include "scene/camera/framing.hpp"
 #include "ui/panel_layout.hpp"
 #include "ui/viewer_model.hpp"
 

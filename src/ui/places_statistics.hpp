@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_set.hpp"
 #include "track/places/summits.hpp"
 
 namespace trailray::ui {

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/colormap.hpp"
-#include "scene/track_building.hpp"
+#include "scene/pictures/colormap.hpp"
+#include "scene/tracks/track_building.hpp"
 #include "ui/flight_panel.hpp"
 #include "ui/waypoint_view.hpp"
 

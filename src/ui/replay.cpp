@@ -1,4 +1,4 @@
-// The replay: one clock for every track (where a track is at a time: scene/replay_position).
+// The replay: one clock for every track (where a track is at a time: scene/tracks/replay_position).
 #include <algorithm>
 #include <cmath>
 

@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <optional>
 
-#include "scene/replay_position.hpp"
-#include "scene/track_set.hpp"
+#include "scene/tracks/replay_position.hpp"
+#include "scene/tracks/track_set.hpp"
 
 namespace trailray::ui {
 

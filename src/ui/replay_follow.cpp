@@ -4,8 +4,8 @@
 #include <optional>
 
 #include "geo/wgs84.hpp"
-#include "scene/camera.hpp"
-#include "scene/replay_position.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/tracks/replay_position.hpp"
 
 namespace trailray::ui {
 

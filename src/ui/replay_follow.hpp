@@ -3,7 +3,7 @@
 // the pivot jumps to the followed track's marker; a chase camera also looks along the way the
 // track goes from there, from behind.
 
-#include "scene/camera_controller.hpp"
+#include "scene/camera/camera_controller.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::ui {

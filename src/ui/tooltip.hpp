@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_set.hpp"
 
 namespace trailray::ui {
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::ui {

@@ -2,8 +2,8 @@
 #include <cmath>
 
 #include "scene/scene.hpp"
-#include "scene/track_building.hpp"
-#include "scene/track_density.hpp"
+#include "scene/tracks/track_building.hpp"
+#include "scene/tracks/track_density.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::ui {
@@ -29,6 +29,13 @@ void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric, std:
   if (track::counts_neighbours(metric))
     scene::apply_neighbour_counts(tracks.tracks(), metric,
                                   neighbour_radius_m.value_or(scene::default_neighbour_radius_m(metric)), parallel);
+}
+
+void keep_clock_span(ViewerModel& model) {
+  const auto span = common_time_span(model.tracks);
+  if (!span) return;
+  const auto& current = model.clock.span();
+  if (!current || current->start != span->start || current->end != span->end) model.clock.set_span(*span);
 }
 
 void apply_curtain(scene::TrackSet& tracks, bool on, double neutral_ground_m) {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "scene/style.hpp"
-#include "scene/track_set.hpp"
-#include "scene/volumes.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/volumes/volumes.hpp"
+#include "scene/pins/waypoints.hpp"
 #include "track/color_values.hpp"
 #include "track/density.hpp"
 #include "track/statistics.hpp"
@@ -135,6 +135,9 @@ struct ViewerModel {
 void apply_color_metric(scene::TrackSet& tracks, track::ColorMetric metric,
                         std::optional<double> neighbour_radius_m = std::nullopt,
                         const track::ParallelFor& parallel = {});
+// The replay clock spans every track with times: tracks added later widen it (the panels keep it
+// so each frame, the session when tracks arrive).
+void keep_clock_span(ViewerModel& model);
 // Curtains on or off for every track.
 // Where the ground is unknown the walls go down to `neutral_ground_m` (NaN: no wall there).
 void apply_curtain(scene::TrackSet& tracks, bool on,

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "scene/volume_shapes.hpp"
+#include "scene/volumes/volume_shapes.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/track_picking.hpp"
 #include "ui/waypoint_view.hpp"

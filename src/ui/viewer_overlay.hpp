@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "scene/camera.hpp"
-#include "terrain/tile_loader.hpp"
+#include "scene/camera/camera.hpp"
+#include "terrain/loading/tile_loader.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::ui {

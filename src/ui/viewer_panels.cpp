@@ -13,8 +13,8 @@
 #include <string_view>
 #include <unordered_set>
 
-#include "scene/volume_shapes.hpp"
-#include "scene/waypoint_building.hpp"
+#include "scene/volumes/volume_shapes.hpp"
+#include "scene/pins/waypoint_building.hpp"
 #include "track/density.hpp"
 #include "ui/flight_panel.hpp"
 #include "ui/panel_layout.hpp"
@@ -477,14 +477,6 @@ void errors_window(ViewerModel& model) {
   for (const std::string& e : model.errors) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", e.c_str());
   if (ImGui::Button("dismiss")) model.errors.clear();
   ImGui::End();
-}
-
-// The clock spans every track with times: tracks dropped in later widen it.
-void keep_clock_span(ViewerModel& model) {
-  const auto span = common_time_span(model.tracks);
-  if (!span) return;
-  const auto& current = model.clock.span();
-  if (!current || current->start != span->start || current->end != span->end) model.clock.set_span(*span);
 }
 
 void window_menu(ViewerSettings& s, bool film) {

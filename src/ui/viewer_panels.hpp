@@ -5,7 +5,7 @@
 #include <functional>
 #include <optional>
 
-#include "scene/waypoints.hpp"
+#include "scene/pins/waypoints.hpp"
 #include "ui/panel_layout.hpp"
 #include "ui/viewer_model.hpp"
 

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/style.hpp"
-#include "scene/track_set.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/pins/waypoints.hpp"
 
 namespace trailray::ui {
 

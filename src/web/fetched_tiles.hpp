@@ -2,7 +2,7 @@
 // Tiles over the network in the page: the browser's fetch (Emscripten's emscripten_fetch), which
 // obeys CORS and the browser's HTTP cache. The page has no threads, so fetch() never waits: a
 // tile not yet here starts its request and answers "cancelled" (the tile loader asks again on a
-// later frame, terrain/tile_loader.hpp); once the bytes arrive `on_arrival` is called (the viewer
+// later frame, terrain/loading/tile_loader.hpp); once the bytes arrive `on_arrival` is called (the viewer
 // draws again) and the next fetch() hands them over. 404 is "no data"; other failures carry
 // the status. Requests in flight are bounded (`max_in_flight`); the others wait their turn. The
 // bound is above the browser's six connections a host: requests wait in the browser's queue, not
@@ -20,8 +20,8 @@
 #include <string>
 #include <unordered_map>
 
-#include "terrain/tile_source.hpp"
-#include "terrain/url_template.hpp"
+#include "terrain/sources/tile_source.hpp"
+#include "terrain/sources/url_template.hpp"
 
 struct emscripten_fetch_t;
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/legend_content.hpp"
-#include "scene/rgba_image.hpp"
+#include "scene/text/legend_content.hpp"
+#include "scene/pictures/rgba_image.hpp"
 
 namespace trailray::web {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/image_paint.hpp"
+#include "scene/pictures/image_paint.hpp"
 #include "scene/scene.hpp"
 
 namespace trailray::web {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/colormap.hpp"
-#include "terrain/height_encoding.hpp"
-#include "terrain/source_factory.hpp"
+#include "scene/pictures/colormap.hpp"
+#include "terrain/codecs/height_encoding.hpp"
+#include "terrain/sources/source_factory.hpp"
 #include "track/color_values.hpp"
 #include "track/io/parse_util.hpp"
 

@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/style.hpp"
-#include "scene/legend.hpp"
-#include "terrain/terrain_config.hpp"
+#include "scene/text/legend.hpp"
+#include "terrain/sources/terrain_config.hpp"
 
 namespace trailray::web {
 
@@ -23,7 +23,7 @@ struct PageOptions {
   std::optional<scene::CameraPlacement> camera;  // `camera`
   std::optional<double> time_unix_s;             // `time` (the sun's)
   // `terrain`, `imagery`: URL templates ({z} {x} {y} {-y} {s}) or "none"; by default the
-  // desktop's online sources (terrain/terrain_config.hpp). `terrain-encoding`, `*-max-zoom`.
+  // desktop's online sources (terrain/sources/terrain_config.hpp). `terrain-encoding`, `*-max-zoom`.
   terrain::SourceSettings terrain, imagery;
   // `overlay-legend`: the colour bar of a heatmap `trailray serve --overlay` composited into its
   // imagery, as JSON {"title", "colormap", "min", "max", "ticks": [[position, label], ...]}.

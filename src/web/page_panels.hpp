@@ -11,7 +11,7 @@
 
 #include <string>
 
-#include "scene/framing.hpp"
+#include "scene/camera/framing.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/panel_layout.hpp"
 #include "ui/viewer_model.hpp"

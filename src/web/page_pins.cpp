@@ -6,9 +6,9 @@
 #include <span>
 #include <stdexcept>
 
-#include "scene/photo_pins.hpp"
-#include "scene/waypoint_building.hpp"
-#include "terrain/image_codec.hpp"
+#include "scene/pins/photo_pins.hpp"
+#include "scene/pins/waypoint_building.hpp"
+#include "terrain/codecs/image_codec.hpp"
 #include "track/io/readers.hpp"
 
 namespace trailray::web {

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/photo_image.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/pins/photo_image.hpp"
+#include "scene/pins/waypoints.hpp"
 
 namespace trailray::web {
 

@@ -15,12 +15,12 @@
 #include <stdexcept>
 
 #include "scene/diagnostics.hpp"
-#include "scene/framing.hpp"
-#include "scene/legend_content.hpp"
+#include "scene/camera/framing.hpp"
+#include "scene/text/legend_content.hpp"
 #include "scene/scene.hpp"
-#include "scene/track_building.hpp"
-#include "terrain/encoded_sources.hpp"
-#include "terrain/height_encoding.hpp"
+#include "scene/tracks/track_building.hpp"
+#include "terrain/sources/encoded_sources.hpp"
+#include "terrain/codecs/height_encoding.hpp"
 #include "track/io/text_output.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/profile_chart.hpp"
@@ -30,7 +30,7 @@
 #include "ui/viewer_overlay.hpp"
 #include "ui/viewer_panels.hpp"
 #include "ui/waypoint_view.hpp"
-#include "terrain/image_codec.hpp"
+#include "terrain/codecs/image_codec.hpp"
 #include "web/fetched_tiles.hpp"
 #include "web/page_panels.hpp"
 

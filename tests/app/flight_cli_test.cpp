@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "../track/flight/synthetic_flight.hpp"
+#include "track/flight/synthetic_flight.hpp"
 #include "run_command.hpp"
 #include "test_support.hpp"
 

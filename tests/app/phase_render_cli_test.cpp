@@ -8,7 +8,7 @@
 #include <string>
 
 #include "run_command.hpp"
-#include "terrain/image_codec.hpp"
+#include "terrain/codecs/image_codec.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"
 #include "track/flight/flight_analysis.hpp"

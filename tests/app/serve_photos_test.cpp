@@ -11,8 +11,8 @@
 #include "app/serve/serve_config.hpp"
 #include "app/serve/serve_site.hpp"
 #include "app/serve/served_pins.hpp"
-#include "scene/waypoints.hpp"
-#include "terrain/image_codec.hpp"
+#include "scene/pins/waypoints.hpp"
+#include "terrain/codecs/image_codec.hpp"
 #include "test_support.hpp"
 
 using namespace trailray::app::serve;

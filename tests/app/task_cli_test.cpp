@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "run_command.hpp"
-#include "terrain/image_codec.hpp"
+#include "terrain/codecs/image_codec.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"
 

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.hpp"
-#include "scene/framing.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/camera/framing.hpp"
 #include "run_command.hpp"
-#include "terrain/image_codec.hpp"
+#include "terrain/codecs/image_codec.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "app/style_options.hpp"
-#include "scene/legend.hpp"
-#include "scene/legend_content.hpp"
-#include "scene/rgba_image.hpp"
-#include "scene/track_building.hpp"
+#include "scene/text/legend.hpp"
+#include "scene/text/legend_content.hpp"
+#include "scene/pictures/rgba_image.hpp"
+#include "scene/tracks/track_building.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/track_cli_support.hpp"
-#include "scene/track_files.hpp"
+#include "scene/tracks/track_files.hpp"
 #include "track/model.hpp"
 
 namespace trailray::app::test_tracks {

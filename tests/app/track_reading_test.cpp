@@ -17,8 +17,8 @@
 #include "app/parallel_jobs.hpp"
 #include "app/track_arguments.hpp"
 #include "app/track_cli_support.hpp"
-#include "scene/track_building.hpp"
-#include "scene/track_files.hpp"
+#include "scene/tracks/track_building.hpp"
+#include "scene/tracks/track_files.hpp"
 
 namespace trailray::app {
 namespace {

@@ -16,12 +16,12 @@
 #include <vector>
 
 #include "app/style_options.hpp"
-#include "scene/camera.hpp"
-#include "scene/colormap.hpp"
-#include "scene/legend.hpp"
-#include "scene/legend_content.hpp"
-#include "scene/text_raster.hpp"
-#include "scene/track_building.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/pictures/colormap.hpp"
+#include "scene/text/legend.hpp"
+#include "scene/text/legend_content.hpp"
+#include "scene/text/text_raster.hpp"
+#include "scene/tracks/track_building.hpp"
 #include "track/io/load.hpp"
 #include "track_cli_support.hpp"
 

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "app/style_options.hpp"
-#include "scene/camera.hpp"
-#include "scene/colormap.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/pictures/colormap.hpp"
 #include "scene/scene.hpp"
-#include "scene/track_building.hpp"
+#include "scene/tracks/track_building.hpp"
 #include "terrain/synthetic_height_source.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "track_cli_support.hpp"
 
 namespace trailray::test {

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "app/view/viewer_ui.hpp"
-#include "scene/legend.hpp"
-#include "scene/text_raster.hpp"
+#include "scene/text/legend.hpp"
+#include "scene/text/text_raster.hpp"
 #include "track_cli_support.hpp"
 #include "ui/panel_layout.hpp"
 #include "xvfb_command.hpp"

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Heights of points on a raster's own grid, computed with GDAL's Python bindings alone.
 
-The reference for trailray's GdalHeightSource::sample_native (tests/terrain/gdal_conformance_test.cpp);
-written independently of trailray's code, from the rule stated in src/terrain/gdal_raster.hpp:
+The reference for trailray's GdalHeightSource::sample_native (tests/terrain/gdal/gdal_conformance_test.cpp);
+written independently of trailray's code, from the rule stated in src/terrain/gdal/gdal_raster.hpp:
 
   1. WGS84 (EPSG:4326, longitude first) -> the raster's CRS with osr, then -> continuous pixel
      coordinates (px, py) by the inverse geotransform; pixel (i, j) is centred on (i + 0.5, j + 0.5).

@@ -11,7 +11,7 @@
 
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "render/gl/gl_capabilities.hpp"
 #include "render/renderer.hpp"
 #include "scene_test_support.hpp"

@@ -11,7 +11,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/renderer.hpp"
-#include "scene/label_raster.hpp"
+#include "scene/text/label_raster.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 

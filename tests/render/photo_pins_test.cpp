@@ -10,8 +10,8 @@
 
 #include "gl_test_support.hpp"
 #include "render/renderer.hpp"
-#include "scene/label_raster.hpp"
-#include "scene/photo_pins.hpp"
+#include "scene/text/label_raster.hpp"
+#include "scene/pins/photo_pins.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"
 

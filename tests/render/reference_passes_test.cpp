@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "render/gl/framebuffer_readback.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/passes/reference/reference_track.hpp"

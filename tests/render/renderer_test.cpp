@@ -11,9 +11,9 @@
 
 #include "geo/tile_id.hpp"
 #include "gl_test_support.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene_test_support.hpp"
-#include "terrain/source_factory.hpp"
+#include "terrain/sources/source_factory.hpp"
 #include "test_support.hpp"
 
 namespace trailray::render {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "render/renderer.hpp"
 #include "scene_test_support.hpp"
 

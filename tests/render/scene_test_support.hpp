@@ -18,11 +18,11 @@
 #include "render/frame_target.hpp"
 #include "render/gl/framebuffer_readback.hpp"
 #include "render/renderer.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
 #include "terrain/east_profile_source.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::render::test {
 

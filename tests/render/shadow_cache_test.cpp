@@ -9,7 +9,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/renderer.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render {

@@ -16,7 +16,7 @@
 #include "render/passes/ssao_pass.hpp"
 #include "render/passes/terrain_pass.hpp"
 #include "render/terrain_gpu.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/terrain_view.hpp"
 #include "scene_test_support.hpp"
 

@@ -8,8 +8,8 @@
 
 #include "geo/tile_id.hpp"
 #include "geo/wgs84.hpp"
-#include "scene/camera.hpp"
-#include "terrain/lod_selection.hpp"
+#include "scene/camera/camera.hpp"
+#include "terrain/lod/lod_selection.hpp"
 
 namespace trailray::render {
 namespace {

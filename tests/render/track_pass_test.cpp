@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
-#include "scene/colormap.hpp"
+#include "scene/pictures/colormap.hpp"
 #include "render/renderer.hpp"
 #include "scene_test_support.hpp"
 #include "track_test_support.hpp"

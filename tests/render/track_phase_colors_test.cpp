@@ -11,7 +11,7 @@
 
 #include "gl_test_support.hpp"
 #include "render/renderer.hpp"
-#include "scene/colormap.hpp"
+#include "scene/pictures/colormap.hpp"
 #include "scene_test_support.hpp"
 #include "track/color_values.hpp"
 #include "track_test_support.hpp"

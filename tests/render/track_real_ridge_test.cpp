@@ -17,7 +17,7 @@
 #include "render/passes/track_pass.hpp"
 #include "scene_test_support.hpp"
 #include "terrain/height_sampler.hpp"
-#include "terrain/source_factory.hpp"
+#include "terrain/sources/source_factory.hpp"
 #include "test_support.hpp"
 #include "track_test_support.hpp"
 

@@ -22,10 +22,10 @@
 #include <utility>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "render/gl/framebuffer_readback.hpp"
 #include "scene/scene.hpp"
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_set.hpp"
 #include "scene_test_support.hpp"
 
 namespace trailray::render::test {

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "terrain/gdal_raster.hpp"
+#include "terrain/gdal/gdal_raster.hpp"
 #include "terrain/tile_fixtures.hpp"
 
 namespace trailray::test {

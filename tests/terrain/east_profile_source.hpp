@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "geo/tile_id.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::test {
 

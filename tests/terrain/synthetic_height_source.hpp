@@ -9,7 +9,7 @@
 #include <set>
 #include <thread>
 
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::test {
 

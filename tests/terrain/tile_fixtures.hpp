@@ -26,9 +26,9 @@
 #include <utility>
 #include <vector>
 
-#include "terrain/directory_source.hpp"
-#include "terrain/height_decode.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/directory_source.hpp"
+#include "terrain/codecs/height_decode.hpp"
+#include "terrain/sources/tile_source.hpp"
 #include "test_support.hpp"
 
 namespace trailray::test {

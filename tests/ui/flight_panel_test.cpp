@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "../track/flight/synthetic_flight.hpp"
-#include "scene/track_building.hpp"
+#include "track/flight/synthetic_flight.hpp"
+#include "scene/tracks/track_building.hpp"
 
 namespace trailray::ui {
 namespace {

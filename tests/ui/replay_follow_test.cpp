@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "../track/flight/synthetic_flight.hpp"
-#include "scene/replay_position.hpp"
-#include "scene/track_building.hpp"
+#include "track/flight/synthetic_flight.hpp"
+#include "scene/tracks/replay_position.hpp"
+#include "scene/tracks/track_building.hpp"
 
 namespace trailray::ui {
 namespace {

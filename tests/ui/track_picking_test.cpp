@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "ui/track_picking.hpp"
 
 namespace trailray::ui {

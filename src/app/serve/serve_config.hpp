@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "app/serve/serve_site.hpp"
-#include "scene/legend.hpp"
-#include "terrain/tile_source.hpp"
+#include "scene/text/legend.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::app::serve {
 

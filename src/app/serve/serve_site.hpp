@@ -18,7 +18,7 @@
 #include "app/serve/http_server.hpp"
 #include "app/serve/served_pins.hpp"
 #include "app/serve/web_root.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::app::serve {
 

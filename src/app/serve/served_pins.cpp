@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "scene/photo_decode.hpp"
-#include "terrain/image_codec.hpp"
+#include "scene/pins/photo_decode.hpp"
+#include "terrain/codecs/image_codec.hpp"
 
 namespace trailray::app::serve {
 namespace {

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "app/serve/http_server.hpp"
-#include "scene/rgba_image.hpp"
-#include "scene/waypoints.hpp"
-#include "terrain/stop_token.hpp"
+#include "scene/pictures/rgba_image.hpp"
+#include "scene/pins/waypoints.hpp"
+#include "terrain/loading/stop_token.hpp"
 
 namespace trailray::app::serve {
 
@@ -45,8 +45,8 @@ HttpResponse photo_thumbnail_response(const ServedPhoto& photo);
 // milliseconds); 404 when it can no longer be read.
 HttpResponse large_photo_response(const ServedPhoto& photo, terrain::StopToken stop);
 
-// "photos" above from the photos' pins (scene/photo_pins, in the order served) and whether each
-// has a thumbnail; "places" from the places' pins (scene/place_labels).
+// "photos" above from the photos' pins (scene/pins/photo_pins, in the order served) and whether each
+// has a thumbnail; "places" from the places' pins (scene/pins/place_labels).
 nlohmann::json photos_json(const std::vector<scene::Waypoint>& pins, const std::vector<ServedPhoto>& photos);
 nlohmann::json places_json(const std::vector<scene::Waypoint>& pins);
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "app/serve/http_server.hpp"
-#include "terrain/stop_token.hpp"
-#include "terrain/tile_source.hpp"
+#include "terrain/loading/stop_token.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::app::serve {
 

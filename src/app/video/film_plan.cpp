@@ -10,7 +10,7 @@
 #include "app/scene_setup.hpp"
 #include "geo/wgs84.hpp"
 #include "scene/film/camera_path.hpp"
-#include "scene/replay_position.hpp"
+#include "scene/tracks/replay_position.hpp"
 #include "terrain/height_sampler.hpp"
 
 namespace trailray::app {

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "app/video_options.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/film/film_camera.hpp"
 #include "scene/film/film_timing.hpp"
-#include "scene/track_set.hpp"
-#include "terrain/tile_source.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "terrain/sources/tile_source.hpp"
 
 namespace trailray::app {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "scene/legend_content.hpp"
+#include "scene/text/legend_content.hpp"
 
 namespace trailray::app {
 namespace {

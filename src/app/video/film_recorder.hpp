@@ -20,7 +20,7 @@
 #include "scene/film/film_photos.hpp"
 #include "scene/film/film_profile.hpp"
 #include "scene/film/film_tracks.hpp"
-#include "scene/photo_image.hpp"
+#include "scene/pins/photo_image.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/rgba_image.hpp"
+#include "scene/pictures/rgba_image.hpp"
 
 namespace trailray::app {
 

@@ -13,9 +13,9 @@
 #include "app/video/film_recorder.hpp"
 #include "render/renderer.hpp"
 #include "scene/terrain_view.hpp"
-#include "scene/track_set.hpp"
-#include "scene/volumes.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/volumes/volumes.hpp"
+#include "scene/pins/waypoints.hpp"
 
 namespace trailray::app::view {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "scene/track_set.hpp"
+#include "scene/tracks/track_set.hpp"
 #include "ui/film_state.hpp"
 
 namespace trailray::app::view {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "scene/colormap.hpp"
+#include "scene/pictures/colormap.hpp"
 
 namespace trailray::app::view {
 namespace {

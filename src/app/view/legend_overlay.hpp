@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene/legend.hpp"
+#include "scene/text/legend.hpp"
 
 namespace trailray::app::view {
 

@@ -10,7 +10,7 @@
 
 #include <optional>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/style.hpp"
 
 namespace trailray::app::view {

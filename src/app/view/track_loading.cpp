@@ -5,8 +5,8 @@
 
 #include "app/track_arguments.hpp"
 #include "app/track_reading.hpp"
-#include "scene/thermal_markers.hpp"
-#include "scene/waypoint_building.hpp"
+#include "scene/pins/thermal_markers.hpp"
+#include "scene/pins/waypoint_building.hpp"
 
 namespace trailray::app::view {
 

@@ -9,20 +9,16 @@
 #include <vector>
 
 #include "scene/style.hpp"
-#include "scene/track_building.hpp"
-#include "scene/track_files.hpp"
-#include "scene/track_set.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/tracks/track_building.hpp"
+#include "scene/tracks/track_files.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/pins/waypoints.hpp"
+#include "ui/loaded_tracks.hpp"
 
 namespace trailray::app::view {
 
-struct LoadedViewerTracks {
-  std::vector<scene::Track> tracks;
-  std::vector<scene::Waypoint> waypoints;  // the files' waypoints (scene::file_waypoints)
-  scene::RecordedPoints recorded;          // the readable files' points (framing, the sun's time)
-  std::vector<std::string> errors;         // one per file that failed, naming it
-  std::vector<std::string> warnings;
-};
+// What a load gives, as the session adopts it (ui/loaded_tracks.hpp: the page's loads too).
+using LoadedViewerTracks = ui::LoadedTracks;
 
 struct TrackLoadInputs {
   track::ReadOptions read;

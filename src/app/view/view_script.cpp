@@ -32,6 +32,7 @@ constexpr Syntax kSyntax[] = {
     {"print-hover", Kind::print_hover, 0, false, "print-hover"},
     {"print-marker", Kind::print_marker, 0, false, "print-marker"},
     {"print-camera", Kind::print_camera, 0, false, "print-camera"},
+    {"print-state", Kind::print_state, 0, false, "print-state"},
     {"play", Kind::play, 1, true, "play SECONDS"},
     {"speed", Kind::speed, 1, true, "speed X"},
     {"wait", Kind::wait, 1, true, "wait FRAMES"},
@@ -84,7 +85,7 @@ ViewScript parse_view_script(std::string_view text, const std::string& file) {
       fail(
           fmt::format("unknown command '{}' (orbit, pan, zoom, select, select-waypoint, print-waypoints, hover, "
                       "print-hover, print-marker, "
-                      "print-camera, play, speed, wait, screenshot, window-screenshot, hide-panels, "
+                      "print-camera, print-state, play, speed, wait, screenshot, window-screenshot, hide-panels, "
                       "print-frame-times, record-film, start-film, cancel-film, film-size, film-fps, film-camera)",
                       w[0]));
     ScriptCommand c;

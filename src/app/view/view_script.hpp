@@ -12,6 +12,9 @@
 //   print-hover       prints the hovered point's tooltip to standard output
 //   print-marker      prints each track's replay marker position (pixels) to standard output
 //   print-camera      prints the camera's pivot, distance, heading and pitch
+//   print-state       prints what the viewer shows as one line of JSON (ui/session_state.hpp: the
+//                     tracks, the selected track's statistics, the hover, the camera, the
+//                     enlarged photo, warnings), as the page's status gives it
 //   play SECONDS      the replay runs SECONDS of wall time at its speed, then pauses
 //   speed X           the replay's speed (1..1000 times real time)
 //   wait FRAMES       renders FRAMES frames
@@ -55,6 +58,7 @@ struct ScriptCommand {
     print_hover,
     print_marker,
     print_camera,
+    print_state,
     play,
     speed,
     wait,

@@ -19,9 +19,9 @@
 #include "app/view/profiler_table.hpp"
 #include "app/view/viewer_shell.hpp"
 #include "app/view/viewer_ui.hpp"
-#include "scene/legend_content.hpp"
-#include "scene/place_labels.hpp"
-#include "scene/waypoint_building.hpp"
+#include "scene/text/legend_content.hpp"
+#include "scene/pins/place_labels.hpp"
+#include "scene/pins/waypoint_building.hpp"
 #include "ui/viewer_overlay.hpp"
 #include "ui/viewer_panels.hpp"
 #include "ui/waypoint_view.hpp"
@@ -65,8 +65,7 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
       window_(window_options(o)),
       imgui_(window_),
       terrain_(sources_.drawn(), sources_.imagery.get()),
-      profiler_(window_.capabilities(), 60),
-      controller_(scene::LookAt{}, o.lens) {
+      profiler_(window_.capabilities(), 60) {
   for (const std::string& line : window_.describe()) diagnostics_.note(line);
   // Tracks are read before the first frame (like `render`); later files load in the background.
   TrackLoadInputs first_inputs = load_inputs(std::numeric_limits<double>::quiet_NaN());
@@ -82,6 +81,10 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   model_.parallel_for = parallel_for();
   model_.settings.show_waypoints = !o.no_waypoints;
   model_.settings.moving_frame = o.moving_frame;
+  // What the session leaves to the window: where the panels and the legend leave room for a
+  // framing, and a photo's larger picture (decoded from its file).
+  session_.set_framing_room([this](const scene::Lens& lens) { return framing_room(lens); });
+  session_.set_larger_photo([this](scene::Waypoint& w, int long_side_px) { decode_larger_photo(w, long_side_px); });
   // The tracks first: the legend they call for is kept clear by the first view's framing.
   adopt(std::move(first));
   // --surface: the canopy cut along the first tracks under cover, before any tile is drawn
@@ -120,9 +123,10 @@ ViewerApp::ViewerApp(const ViewerOptions& o)
   // The task's cylinders, then the airspaces; every volume placed on the terrain.
   add_airspace_volumes(model_.volumes, o.airspace_files, airspace_region(model_.tracks, model_.waypoints, o.camera),
                        sources_.heights.get(), diagnostics_);
-  controller_ = first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_, framing_room(o.lens),
-                           &diagnostics_);
-  controller_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
+  session_.place_camera(first_view(o, model_.tracks, model_.waypoints, sources_.heights.get(), neutral_,
+                                   framing_room(o.lens), &diagnostics_),
+                        o.lens);
+  session_.set_ground([this](double lat, double lon) { return terrain_.height_in_memory(lat, lon); });
 }
 
 TrackLoadInputs ViewerApp::load_inputs(double neutral) const {
@@ -137,31 +141,10 @@ double ViewerApp::sun_unix_time() const {
 }
 
 void ViewerApp::adopt(LoadedViewerTracks loaded) {
+  // Said on the terminal too; the session keeps them for the window.
   for (const std::string& w : loaded.warnings) diagnostics_.warning(w);
-  for (std::string& e : loaded.errors) {
-    diagnostics_.error(e);
-    model_.errors.push_back(std::move(e));
-  }
-  // Density and thermals count every track open: files added to open ones change all the counts
-  // (the first files were counted together as they were built).
-  const bool recount = !loaded.tracks.empty() && !model_.tracks.empty();
-  for (scene::Track& t : loaded.tracks) model_.tracks.add(std::move(t));
-  const scene::TrackStyle& style = model_.settings.style.tracks;
-  if (recount && track::counts_neighbours(style.color_by)) {
-    try {
-      apply_color_metric(model_.tracks, style.color_by, style.neighbour_radius_m, model_.parallel_for);
-    } catch (const std::exception& e) {
-      model_.errors.emplace_back(e.what());
-    }
-  }
-  if (!loaded.waypoints.empty()) {
-    for (scene::Waypoint& w : loaded.waypoints) {
-      if (w.kind != scene::WaypointKind::Thermal) w.visible = model_.settings.show_waypoints;  // --thermals' own
-      model_.waypoints.points.push_back(std::move(w));
-    }
-    ++model_.waypoints.revision;
-  }
-  if (model_.selected_track < 0 && !model_.tracks.empty()) model_.selected_track = 0;
+  for (const std::string& e : loaded.errors) diagnostics_.error(e);
+  session_.adopt(std::move(loaded));
 }
 
 // The legend window's key: the tracks' names (several solid tracks), then the airspace classes.
@@ -207,13 +190,13 @@ void ViewerApp::frame(double wall_s, bool scripted) {
                             : std::array<float, 2>{nan, nan};
   }
   imgui_.begin_frame(cursor);
-  if (width > 0 && height > 0) controller_.set_image_size(width, height);
+  if (width > 0 && height > 0) camera().set_image_size(width, height);
   if (!scripted) {
-    handle_mouse(controller_.camera());
+    handle_mouse();
     handle_keys(wall_s);
   }
-  controller_.update(wall_s);
-  follow_replay();
+  session_.update(wall_s);
+  session_.follow_replay();
   static const FilmPanel film{film_button, film_window};
   const PanelActions actions = panels_ ? draw_panels(model_, scripted ? 0.0 : wall_s, &film) : PanelActions{};
   if (actions.record_film) {
@@ -224,19 +207,14 @@ void ViewerApp::frame(double wall_s, bool scripted) {
     }
   }
   if (actions.cancel_film) cancel_film();
-  if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
-  if (actions.fly_to_waypoint >= 0) fly_to_waypoint(actions.fly_to_waypoint);
-  if (actions.fly_to_point) {
-    const scene::LookAt& now = controller_.view();
-    controller_.fly_to(look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
-  }
-  const scene::Camera camera = controller_.camera();
-  frame_moving_ = motion_.moving(camera, scripted ? kScriptedFrameS : wall_s);
-  if (scripted && script_cursor_) update_hover(script_cursor_->x, script_cursor_->y, camera);
+  session_.apply(actions);
+  const scene::Camera seen = camera().camera();  // as this frame draws it
+  frame_moving_ = motion_.moving(seen, scripted ? kScriptedFrameS : wall_s);
+  if (scripted && script_cursor_) session_.hover_at(script_cursor_->x, script_cursor_->y, seen);
 
   OverlayState overlay{
-      model_, camera, progress_, status_, controller_.view().heading_deg, scripted ? script_cursor_ : std::nullopt};
-  if (panels_ && draw_overlays(overlay)) controller_.reset_north();
+      model_, seen, progress_, status_, camera().view().heading_deg, scripted ? script_cursor_ : std::nullopt};
+  if (panels_ && draw_overlays(overlay)) camera().reset_north();
   if (panels_ && model_.settings.style.legend) {
     const scene::TrackStyle& style = model_.settings.style.tracks;
     const auto legend = scene::color_legend_for(style, model_.color_range());
@@ -264,7 +242,7 @@ void ViewerApp::draw_scene_into_window(double wall_s, bool reduced) {
   render::DefaultFramebufferTarget window;
   window.profiler = &profiler_;
   window.pixel_ratio = window_.content_scale();
-  const scene::Camera full = controller_.camera();
+  const scene::Camera full = camera().camera();
   render::FrameReport drawn;
   if (reduced) {
     // Fewer pixels, scaled up into the window; labels shrink with them to keep their place.
@@ -301,7 +279,7 @@ void ViewerApp::screenshot(const std::string& path, bool status) {
   terrain_.set_policy(wait);
   render::ImageTarget picture;
   picture.pixel_ratio = window_.content_scale();
-  const render::FrameReport drawn = renderer_.draw(s, controller_.camera(), picture);
+  const render::FrameReport drawn = renderer_.draw(s, camera().camera(), picture);
   if (drawn.terrain.timed_out)
     diagnostics_.warning(
         fmt::format("tiles still loading after {} s: the picture has what had arrived", options_.timeout_s));

@@ -14,7 +14,7 @@
 #include "app/camera_options.hpp"
 #include "app/photo_options.hpp"
 #include "app/terrain_options.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/style.hpp"
 #include "track/io/load.hpp"
 #include "track/metrics.hpp"

@@ -1,86 +1,53 @@
-// The viewer's camera: the first view, flights to a track, the replay's follow, and where a
-// framing may put the tracks (clear of the panels and the legend).
+// The viewer's camera as the window sees it: the first view, where a framing may put the tracks
+// (clear of the panels and the legend), and a photo decoded larger; the flights, the follow and the
+// rest are the session's (ui/viewer_session.hpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>  // the camera options' error, as the other commands' first camera
 
 #include "app/view/legend_overlay.hpp"
 #include "app/view/viewer_shell.hpp"
-#include "scene/photo_decode.hpp"
+#include "scene/pins/photo_decode.hpp"
 #include "app/view/viewer_ui.hpp"
-#include "scene/legend_content.hpp"
+#include "scene/text/legend_content.hpp"
+#include "ui/first_camera.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/panel_layout.hpp"
-#include "ui/replay_follow.hpp"
-#include "ui/waypoint_view.hpp"
 
 namespace trailray::app::view {
 
-// The first view: the options' camera, else framed on the tracks where the panels and the
-// legend leave the window free; the pivot on the ground.
-scene::CameraController first_view(const ViewerOptions& o, const scene::TrackSet& tracks,
-                                   const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
-                                   const FramingRoom& room, scene::Diagnostics* diagnostics) {
-  if (o.camera.look_at) return scene::CameraController(*o.camera.look_at, o.lens);
-  if (tracks.empty() && waypoints.points.empty() && !o.camera.placement)
-    throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
-  const scene::Camera camera =
-      initial_camera(o.camera, o.lens, tracks, neutral, heights, room.keep_clear, room.area, &waypoints, diagnostics);
-  // The pivot where the view's centre meets the tracks' lowest level (no tile read for it).
-  return scene::CameraController(scene::CameraController::look_at_from_camera(camera, neutral), o.lens);
-}
-
-void ViewerApp::fly_to_track(int index) {
-  if (index < 0 || index >= static_cast<int>(model_.tracks.size())) return;
-  const scene::Track& t = model_.tracks[static_cast<std::size_t>(index)];
-  scene::FramingOptions framing;
-  framing.lens = controller_.lens();
-  framing.preferred_heading_deg = controller_.view().heading_deg;
-  const FramingRoom room = framing_room(framing.lens);
-  framing.keep_clear = room.keep_clear;
-  framing.area = room.area;
-  // The ground under the track when no terrain is in memory: its lowest recorded point, else the
-  // neutral ground.
-  framing.ground_height_m = t.lowest_altitude();
-  if (std::isnan(framing.ground_height_m)) framing.ground_height_m = neutral_;
-  const scene::Track* const one[] = {&t};
-  const auto framed = scene::frame_tracks(one, framing);
-  if (!framed.ok()) return;
-  double ground = terrain_.height_in_memory(framed.value->look_at.target.lat_deg, framed.value->look_at.target.lon_deg);
-  if (std::isnan(ground)) ground = framed.value->ground_height_m;
-  controller_.fly_to(scene::CameraController::look_at_from_camera(framed.value->camera, ground));
-}
-
-void ViewerApp::fly_to_waypoint(int index) {
-  if (index < 0 || index >= static_cast<int>(model_.waypoints.points.size())) return;
-  if (model_.waypoints.points[static_cast<std::size_t>(index)].kind == scene::WaypointKind::Photo) enlarge_photo(index);
-  const scene::LookAt& now = controller_.view();
-  controller_.fly_to(
-      look_at_waypoint(model_.waypoints.points[static_cast<std::size_t>(index)], now.heading_deg, now.pitch_deg));
-}
-
-void ViewerApp::enlarge_photo(int index) {
-  for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
-    scene::Waypoint& w = model_.waypoints.points[i];
-    w.enlarged = static_cast<int>(i) == index && w.kind == scene::WaypointKind::Photo && w.thumbnail != nullptr;
-    if (!w.enlarged) continue;
-    // The thumbnail has 128 texels on its long side; drawn four times larger it wants more.
-    const int long_side = static_cast<int>(model_.settings.style.pins.photo_px * scene::kEnlargedPhotoScale * 2.0);
-    if (std::max(w.thumbnail->pixels.width, w.thumbnail->pixels.height) >= static_cast<std::uint32_t>(long_side / 2))
-      continue;
-    try {
-      // The orientation is in the pixels already: the file's own, read again with them.
-      const auto orientation = photo_orientations_.find(w.source);
-      w.thumbnail = scene::make_photo_image(scene::decode_photo(
-          w.source, long_side, orientation != photo_orientations_.end() ? orientation->second : 1));
-    } catch (const scene::PhotoDecodeError& e) {
-      diagnostics_.warning(e.what());
-    }
+// The first view: ui::first_view, as the page's, with the heights under a requested camera read
+// from the terrain (tiles loaded for it).
+scene::LookAt first_view(const ViewerOptions& o, const scene::TrackSet& tracks, const scene::WaypointSet& waypoints,
+                         terrain::HeightSource* heights, double neutral, const FramingRoom& room,
+                         scene::Diagnostics* diagnostics) {
+  ui::CameraRequest request{o.camera.placement, o.camera.look_at};
+  const ui::GroundHeight ground = [heights](double lat, double lon) { return ground_height_at(heights, lat, lon); };
+  std::optional<scene::LookAt> view;
+  try {
+    view = ui::first_view(request, o.lens, tracks, waypoints, neutral, ground, room, diagnostics);
+  } catch (const ui::FirstCameraError& e) {
+    if (e.option().empty()) throw std::runtime_error(e.what());
+    throw CLI::ValidationError(e.option(), e.why());
   }
-  ++model_.waypoints.revision;
+  if (!view) throw std::runtime_error("no track could be read and no camera was given (--camera or --look-at)");
+  return *view;
 }
 
-void ViewerApp::follow_replay() { ui::follow_replay(model_, controller_); }
+void ViewerApp::decode_larger_photo(scene::Waypoint& w, int long_side_px) {
+  try {
+    // The orientation is in the pixels already: the file's own, read again with them.
+    const auto orientation = photo_orientations_.find(w.source);
+    w.thumbnail = scene::make_photo_image(scene::decode_photo(
+        w.source, long_side_px, orientation != photo_orientations_.end() ? orientation->second : 1));
+  } catch (const scene::PhotoDecodeError& e) {
+    diagnostics_.warning(e.what());
+  }
+}
 
 // The corner a framing keeps the tracks out of: the legend's, large enough for the legend window
 // (where it first appears, in the bottom-left corner) and for the legend of screenshots (drawn

@@ -48,7 +48,7 @@ void ViewerApp::start_film() {
   const std::size_t followed = film_follow_track(s, session->tracks, preferred);
   const VideoArgs a = film_args(s, session->tracks, followed);
   const FilmCameraMode mode = check_video_args(a);
-  scene::Lens lens = controller_.lens();
+  scene::Lens lens = camera().lens();
   lens.width_px = static_cast<std::uint32_t>(s.width);
   lens.height_px = static_cast<std::uint32_t>(s.height);
 
@@ -57,7 +57,7 @@ void ViewerApp::start_film() {
   if (mode == FilmCameraMode::fixed) {
     // The view now, at the film's size.
     CameraRequest request;
-    request.look_at = controller_.view();
+    request.look_at = camera().view();
     setup.cameras.assign(setup.clock.timing.frames,
                          initial_camera(request, lens, session->tracks, neutral_, sources_.heights.get()));
   } else {

@@ -7,7 +7,8 @@
 #include "app/interrupt_guard.hpp"
 #include "app/view/viewer_shell.hpp"
 #include "app/view/viewer_ui.hpp"
-#include "scene/volume_shapes.hpp"
+#include "scene/volumes/volume_shapes.hpp"
+#include "ui/session_state.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/track_picking.hpp"
 #include "ui/waypoint_view.hpp"
@@ -25,7 +26,7 @@ void ViewerApp::run_script(const ViewScript& script) {
 }
 
 int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& script) {
-  const glm::dvec2 centre(controller_.lens().width_px / 2.0, controller_.lens().height_px / 2.0);
+  const glm::dvec2 centre(camera().lens().width_px / 2.0, camera().lens().height_px / 2.0);
   {
     using Kind = ScriptCommand::Kind;
     const auto fail = [&](const std::string& why) {
@@ -34,13 +35,13 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
     int frames = 1;
     switch (c.kind) {
       case Kind::orbit:
-        controller_.orbit(c.x, c.y);
+        session_.orbit(c.x, c.y);
         break;
       case Kind::pan:
-        controller_.pan(centre.x, centre.y, centre.x + c.x, centre.y + c.y);
+        session_.pan(centre.x, centre.y, centre.x + c.x, centre.y + c.y);
         break;
       case Kind::zoom:
-        controller_.zoom(c.x, centre.x, centre.y);
+        session_.zoom(c.x, centre.x, centre.y);
         break;
       case Kind::select:
         if (c.x >= static_cast<double>(model_.tracks.size()) || c.x != std::floor(c.x))
@@ -48,24 +49,24 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
                            model_.tracks.size(), model_.tracks.size() == 1 ? "" : "s",
                            static_cast<int>(model_.tracks.size()) - 1));
         model_.selected_track = static_cast<int>(c.x);
-        fly_to_track(model_.selected_track);
-        controller_.update(1e9);  // scripted flights arrive at once
+        session_.fly_to_track(model_.selected_track);
+        session_.update(1e9);  // scripted flights arrive at once
         break;
       case Kind::select_waypoint:
         if (c.x >= static_cast<double>(model_.waypoints.points.size()) || c.x != std::floor(c.x))
           fail(fmt::format("select-waypoint {}: there are {} waypoints", c.x, model_.waypoints.points.size()));
-        fly_to_waypoint(static_cast<int>(c.x));
-        controller_.update(1e9);  // scripted flights arrive at once
+        session_.fly_to_waypoint(static_cast<int>(c.x));
+        session_.update(1e9);  // scripted flights arrive at once
         break;
       case Kind::print_waypoints: {
-        const scene::Camera camera = controller_.camera();
+        const scene::Camera seen = camera().camera();
         const int chart = model_.tracks.empty() ? -1 : std::max(0, model_.selected_track);
         std::vector<ChartWaypoint> on_chart;
         if (chart >= 0) on_chart = chart_waypoints(model_.tracks[static_cast<std::size_t>(chart)], model_.waypoints);
         for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
           const scene::Waypoint& w = model_.waypoints.points[i];
           std::string where = "behind the camera";
-          if (const auto s = pin_screen_position(camera, w, model_.settings.style.pins))
+          if (const auto s = pin_screen_position(seen, w, model_.settings.style.pins))
             where = fmt::format("pin at {:.1f} {:.1f}", s->x, s->y);
           std::string chart_text = "not on the chart";
           for (const ChartWaypoint& cw : on_chart)
@@ -99,10 +100,10 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
         break;
       }
       case Kind::print_marker: {
-        const scene::Camera camera = controller_.camera();
+        const scene::Camera seen = camera().camera();
         for (std::size_t i = 0; i < model_.tracks.size(); ++i) {
           const TrackPosition p = position_at(model_.tracks[i], model_.clock.time());
-          const auto s = p.valid ? screen_position(camera, p.ecef) : std::nullopt;
+          const auto s = p.valid ? screen_position(seen, p.ecef) : std::nullopt;
           if (s)
             fmt::print("marker: track {} point {} at {:.1f} {:.1f}\n", i, p.point, s->x, s->y);
           else
@@ -111,11 +112,14 @@ int ViewerApp::run_script_command(const ScriptCommand& c, const ViewScript& scri
         break;
       }
       case Kind::print_camera: {
-        const scene::LookAt& v = controller_.view();
+        const scene::LookAt& v = camera().view();
         fmt::print("camera: pivot {:.6f},{:.6f},{:.1f} distance {:.1f} heading {:.2f} pitch {:.2f}\n", v.target.lat_deg,
                    v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
         break;
       }
+      case Kind::print_state:
+        fmt::print("{}\n", ui::session_state_json(session_));
+        break;
       case Kind::play:
         model_.clock.play();
         model_.clock.advance(c.x);

@@ -1,8 +1,11 @@
 #pragma once
 // The viewer's shell (internal to app/view): the window, the renderer and the model together.
-// Its parts live in viewer_app.cpp (start, frame, pictures, loop), viewer_input.cpp (mouse, keys,
-// dropped files, hover), viewer_camera.cpp (first view, fly-to, replay follow, where framing may
-// put the tracks), viewer_film.cpp (record film) and viewer_script_runner.cpp (--script).
+// What a viewer is (the model, the camera, hover, keys, fly-to, the first view) is ui::ViewerSession,
+// shared with the page; this shell hands it the window's input and time and draws what it holds.
+// Its parts live in viewer_app.cpp (start, frame, pictures, loop), viewer_input.cpp (mouse and
+// keys handed to the session, dropped files), viewer_camera.cpp (the first view, where framing may
+// put the tracks, photos decoded larger), viewer_film.cpp (record film) and
+// viewer_script_runner.cpp (--script).
 
 #include <future>
 #include <optional>
@@ -23,14 +26,15 @@
 #include "render/platform/imgui_layer.hpp"
 #include "render/platform/window.hpp"
 #include "render/renderer.hpp"
-#include "scene/camera_controller.hpp"
-#include "scene/framing.hpp"
-#include "scene/legend.hpp"
+#include "scene/camera/camera_controller.hpp"
+#include "scene/camera/framing.hpp"
+#include "scene/text/legend.hpp"
 #include "scene/scene.hpp"
 #include "scene/terrain_view.hpp"
-#include "scene/volume_shapes.hpp"
+#include "scene/volumes/volume_shapes.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/viewer_model.hpp"
+#include "ui/viewer_session.hpp"
 
 namespace trailray::app::view {
 
@@ -45,23 +49,17 @@ class ViewerApp {
   void frame(double wall_s, bool scripted);
   // `reduced`: the moving frame (moving_frame.hpp).
   void draw_scene_into_window(double wall_s, bool reduced);
-  void handle_mouse(const scene::Camera& camera);
+  void handle_mouse();
   void handle_keys(double wall_s);
   void take_dropped_files();
   void adopt(LoadedViewerTracks loaded);
   scene::Scene scene();
   scene::KeptClearCorner legend_corner(const scene::Lens& lens);
   FramingRoom framing_room(const scene::Lens& lens);
-  void update_hover(double x_px, double y_px, const scene::Camera& camera);
-  // The airspace wall under the pixel, in front of the terrain `ground_m` away (infinity: none).
-  int pick_airspace(double x_px, double y_px, const scene::Camera& camera, double ground_m);
   std::vector<scene::TrackKeyEntry> legend_key(const scene::TrackStyle& style) const;
-  void fly_to_track(int index);
-  void fly_to_waypoint(int index);  // index into model_.waypoints (a photo's: also shown larger)
-  // The photo of waypoint `index` shown larger over its pin (decoded again at the size it is
-  // drawn), every other photo at its thumbnail's size.
-  void enlarge_photo(int index);
-  void follow_replay();             // the replay's camera follow (chase, or orbit round the marker)
+  // A photo's picture decoded again at `long_side_px` for its enlarged pin (the session's hook).
+  void decode_larger_photo(scene::Waypoint& photo, int long_side_px);
+  scene::CameraController& camera() { return session_.camera(); }
   // `status`: say so in the window too (the P key; not scripted pictures).
   void screenshot(const std::string& path, bool status = false);
   void run_script(const ViewScript& script);
@@ -84,18 +82,15 @@ class ViewerApp {
   TerminalDiagnostics diagnostics_;
   TerrainSources sources_;
   double neutral_ = 0.0;
-  // The airspaces' walls as the hover picks them, made again when the set's revision changes.
-  std::vector<scene::VolumeShape> volume_shapes_;
-  std::uint64_t volume_shapes_revision_ = ~std::uint64_t{0};
   scene::RecordedPoints recorded_;
-  ViewerModel model_;
+  ui::ViewerSession session_;        // the model, the camera, what input does to them
+  ViewerModel& model_ = session_.model();  // the session's model by its short name
   // GL objects after the window (the context) and before nothing else: destroyed first.
   render::Window window_;
   render::ImGuiLayer imgui_;
   scene::TerrainView terrain_;  // the tiles for a camera (GL-free; its loaders read sources_)
   render::Renderer renderer_;
   render::FrameProfiler profiler_;
-  scene::CameraController controller_;
   MotionWatch motion_;
   bool frame_moving_ = false;  // the last frame's camera was moving
   struct TimedFrame {
@@ -114,10 +109,12 @@ class ViewerApp {
   std::unique_ptr<FilmSession> film_;        // a film recording; last: destroyed with the context current
 };
 
-// The first view: the options' camera, else framed on the tracks where the panels and the
-// legend leave the window free; the pivot on the ground.
-scene::CameraController first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
-                                   const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
-                                   const FramingRoom& room, scene::Diagnostics* diagnostics = nullptr);
+// The first view (ui::first_view, as the page's) from the options' camera, else framed on the
+// tracks where the panels and the legend leave the window free; the pivot on the ground. Throws
+// std::runtime_error when there is nothing to look at, CLI::ValidationError for a camera that
+// cannot be made.
+scene::LookAt first_view(const ViewerOptions& options, const scene::TrackSet& tracks,
+                         const scene::WaypointSet& waypoints, terrain::HeightSource* heights, double neutral,
+                         const FramingRoom& room, scene::Diagnostics* diagnostics = nullptr);
 
 }  // namespace trailray::app::view

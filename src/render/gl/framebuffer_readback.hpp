@@ -1,9 +1,9 @@
 #pragma once
 // Pixels out of GL: read an RGBA8 framebuffer (GL's rows run bottom-up, images' top-down) into a
-// scene::RgbaImage, which encodes and writes it (scene/rgba_image.hpp).
+// scene::RgbaImage, which encodes and writes it (scene/pictures/rgba_image.hpp).
 
 #include "render/gl/gl_api.hpp"
-#include "scene/rgba_image.hpp"
+#include "scene/pictures/rgba_image.hpp"
 
 namespace trailray::render {
 

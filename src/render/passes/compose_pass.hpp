@@ -11,7 +11,7 @@
 #include "render/passes/atmosphere.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/passes/shadow_maps.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::render {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "render/gl/render_error.hpp"
-#include "scene/label_raster.hpp"
+#include "scene/text/label_raster.hpp"
 
 namespace trailray::render {
 

@@ -1,8 +1,8 @@
 #pragma once
 // The labels pass (after the overlays, before the output): the names the layout placed
-// (scene/label_layout.hpp) drawn over the composed frame as textured quads in screen space.
+// (scene/text/label_layout.hpp) drawn over the composed frame as textured quads in screen space.
 //
-// Each label is rasterized once on the CPU (scene/label_raster.hpp: the text's coverage and a
+// Each label is rasterized once on the CPU (scene/text/label_raster.hpp: the text's coverage and a
 // dark halo, at the picture's pixel size) into an atlas texture kept between frames, so a viewer
 // uploads only names it has not drawn before; one draw call takes them all. The vertex shader
 // reads the G-buffer's distances around each label's anchor: a label whose point the terrain
@@ -23,7 +23,7 @@
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
 #include "render/passes/gbuffer.hpp"
-#include "scene/label_layout.hpp"
+#include "scene/text/label_layout.hpp"
 #include "scene/style.hpp"
 
 namespace trailray::render {

@@ -16,7 +16,7 @@
 
 #include "render/passes/shadow_cascades.hpp"
 #include "render/passes/shadow_pass.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::render {
 

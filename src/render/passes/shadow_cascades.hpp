@@ -25,7 +25,7 @@
 #include <array>
 #include <cstddef>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::render {
 

@@ -11,7 +11,7 @@
 #include "render/passes/shadow_maps.hpp"
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_pass.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::render {
 

@@ -16,7 +16,7 @@
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
 #include "render/passes/gbuffer.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::render {
 

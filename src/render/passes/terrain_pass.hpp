@@ -12,7 +12,7 @@
 #include "render/gl/shader_program.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/passes/terrain_mesh.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/style.hpp"
 
 namespace trailray::render {

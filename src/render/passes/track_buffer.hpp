@@ -42,7 +42,7 @@
 
 #include "render/gl/gl_objects.hpp"
 #include "render/passes/track_lod.hpp"
-#include "scene/track_geometry.hpp"
+#include "scene/tracks/track_geometry.hpp"
 
 namespace trailray::render {
 

@@ -45,8 +45,8 @@
 #include "render/passes/terrain_pass.hpp"
 #include "render/passes/track_buffer.hpp"
 #include "render/passes/track_pieces.hpp"
-#include "scene/camera.hpp"
-#include "scene/colormap.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/pictures/colormap.hpp"
 #include "scene/style.hpp"
 #include "track/color_values.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The volumes pass (after the overlays, before the labels): airspaces and task cylinders
-// (scene/volumes.hpp) as translucent walls over the composed frame, with the outlines of their
+// (scene/volumes/volumes.hpp) as translucent walls over the composed frame, with the outlines of their
 // floors and ceilings as lines a few pixels wide. Blended (premultiplied, over the frame's sRGB
 // values, as the labels are), never writing depth, and tested against the G-buffer's distances
 // in the fragment shader: the terrain (and a track tube) in front of a wall hides it, so a wall
@@ -14,7 +14,7 @@
 #include "render/gl/shader_program.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/volume_gpu.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::render {
 

@@ -7,7 +7,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "scene/embedded_fonts.hpp"
+#include "scene/text/embedded_fonts.hpp"
 
 namespace trailray::render {
 

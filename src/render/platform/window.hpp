@@ -15,7 +15,7 @@
 
 #include "render/gl/gl_capabilities.hpp"
 #include "render/gl/render_error.hpp"
-#include "scene/rgba_image.hpp"
+#include "scene/pictures/rgba_image.hpp"
 
 struct GLFWwindow;
 

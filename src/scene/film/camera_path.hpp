@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "scene/film/film_camera.hpp"
 
 namespace trailray::scene {

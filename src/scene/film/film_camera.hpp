@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "geo/web_mercator.hpp"
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::scene {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "scene/film/film_profile.hpp"
-#include "scene/legend.hpp"
+#include "scene/text/legend.hpp"
 
 namespace trailray::scene {
 namespace {

@@ -9,12 +9,12 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/camera.hpp"
-#include "scene/image_paint.hpp"
-#include "scene/replay_position.hpp"
-#include "scene/rgba_image.hpp"
-#include "scene/text_raster.hpp"
-#include "scene/track_set.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/pictures/image_paint.hpp"
+#include "scene/tracks/replay_position.hpp"
+#include "scene/pictures/rgba_image.hpp"
+#include "scene/text/text_raster.hpp"
+#include "scene/tracks/track_set.hpp"
 
 namespace trailray::scene {
 

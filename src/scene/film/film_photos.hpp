@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "scene/film/film_timing.hpp"
-#include "scene/image_paint.hpp"
-#include "scene/rgba_image.hpp"
-#include "scene/text_raster.hpp"
+#include "scene/pictures/image_paint.hpp"
+#include "scene/pictures/rgba_image.hpp"
+#include "scene/text/text_raster.hpp"
 
 namespace trailray::scene {
 

@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "scene/image_paint.hpp"
-#include "scene/replay_position.hpp"
-#include "scene/rgba_image.hpp"
-#include "scene/track_set.hpp"
+#include "scene/pictures/image_paint.hpp"
+#include "scene/tracks/replay_position.hpp"
+#include "scene/pictures/rgba_image.hpp"
+#include "scene/tracks/track_set.hpp"
 
 namespace trailray::scene {
 

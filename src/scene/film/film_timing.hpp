@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "scene/camera.hpp"
-#include "scene/replay_position.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/tracks/replay_position.hpp"
 
 namespace trailray::scene {
 

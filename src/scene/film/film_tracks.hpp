@@ -8,10 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/camera.hpp"
-#include "scene/replay_position.hpp"
-#include "scene/track_set.hpp"
-#include "scene/waypoints.hpp"
+#include "scene/camera/camera.hpp"
+#include "scene/tracks/replay_position.hpp"
+#include "scene/tracks/track_set.hpp"
+#include "scene/pins/waypoints.hpp"
 
 namespace trailray::scene {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/view/viewer_ui.hpp"
-#include "scene/track_files.hpp"
+#include "scene/tracks/track_files.hpp"
 #include "test_support.hpp"
 #include "ui/profile_chart.hpp"
 #include "ui/tooltip.hpp"

@@ -10,7 +10,7 @@
 
 #include "app/view/viewer_ui.hpp"
 #include "scene/scene.hpp"
-#include "scene/track_building.hpp"
+#include "scene/tracks/track_building.hpp"
 #include "track/summary.hpp"
 #include "ui/tooltip.hpp"
 #include "ui/viewer_model.hpp"

@@ -16,7 +16,7 @@
 #include "app/view/profiler_table.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "render/gl/frame_profiler.hpp"
-#include "scene/colormap.hpp"
+#include "scene/pictures/colormap.hpp"
 #include "ui/profile_chart.hpp"
 #include "ui/viewer_model.hpp"
 #include "ui/viewer_panels.hpp"

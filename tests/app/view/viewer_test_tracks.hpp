@@ -7,7 +7,7 @@
 #include "app/style_options.hpp"
 #include "app/track_model_builders.hpp"
 #include "app/view/viewer_ui.hpp"
-#include "scene/track_building.hpp"
+#include "scene/tracks/track_building.hpp"
 #include "ui/viewer_model.hpp"
 
 namespace trailray::app::view::test_tracks {

@@ -8,7 +8,7 @@
 
 #include <cstddef>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/shader_program.hpp"
 #include "render/passes/track_buffer.hpp"

@@ -13,7 +13,7 @@
 
 #include <cstddef>
 
-#include "scene/camera.hpp"
+#include "scene/camera/camera.hpp"
 #include "render/passes/gbuffer.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader_program.hpp"
