@@ -1,6 +1,6 @@
 // Neighbour counts for the density view (`--color-by density`): 10,000 tracks of 1,000 points,
 // every point counted against every track (the index built, then all points asked), on one
-// thread and on every core (app/parallel_jobs, as `render` and `view` run it).
+// thread and on every core (app/common/parallel_jobs, as `render` and `view` run it).
 // - city: runs through a 20 x 20 km city, random walks from random starts, a fix every 5 to 15 m
 //   (each track about 10 km);
 // - club: 1,000 (club/1000/...) or 10,000 (club/10000/...) flights from one take-off, a fix every
@@ -20,7 +20,7 @@
 #include <span>
 #include <vector>
 
-#include "app/parallel_jobs.hpp"
+#include "app/common/parallel_jobs.hpp"
 #include "track/density.hpp"
 
 namespace {

@@ -14,7 +14,7 @@
 #include <map>
 #include <string>
 
-#include "app/scene_setup.hpp"
+#include "app/drawing/scene_setup.hpp"
 #include "scene/diagnostics.hpp"
 
 namespace {

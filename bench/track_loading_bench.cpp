@@ -1,5 +1,5 @@
 // Reading many track files as `render`, `video` and `view` do (parse, then each file's tracks
-// cleaned, measured and placed; app/track_reading), one file after the other (threads 1) against
+// cleaned, measured and placed; app/common/track_reading), one file after the other (threads 1) against
 // all cores (threads 0: std::thread::hardware_concurrency()). Two inputs of 1000 files:
 // - generated: 1000 GPX files of 1000 timed points each (written once into a temporary folder);
 // - real: the IGC and GPX files of ../shared/data (those that read), named again and again up to
@@ -18,8 +18,8 @@
 #include <thread>
 #include <vector>
 
-#include "app/track_arguments.hpp"
-#include "app/track_reading.hpp"
+#include "app/common/track_arguments.hpp"
+#include "app/common/track_reading.hpp"
 #include "scene/diagnostics.hpp"
 
 namespace {

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "app/airspace_check.hpp"
-#include "app/check_report.hpp"
-#include "app/elevation_report.hpp"
-#include "app/flight_report.hpp"
-#include "app/score_report.hpp"
-#include "app/task_report.hpp"
-#include "app/terrain_heights.hpp"
+#include "app/flight/airspace_check.hpp"
+#include "app/flight/check_report.hpp"
+#include "app/pictures/elevation_report.hpp"
+#include "app/flight/flight_report.hpp"
+#include "app/flight/score_report.hpp"
+#include "app/flight/task_report.hpp"
+#include "app/pictures/terrain_heights.hpp"
 #include "python/bindings.hpp"
 #include "python/json_objects.hpp"
 #include "python/text.hpp"

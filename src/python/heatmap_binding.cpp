@@ -9,7 +9,7 @@
 #include <cstring>
 #include <string>
 
-#include "app/heatmap_output.hpp"
+#include "app/pictures/heatmap_output.hpp"
 #include "python/bindings.hpp"
 #include "python/text.hpp"
 #include "python/track_objects.hpp"

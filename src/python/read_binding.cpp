@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "app/track_arguments.hpp"
+#include "app/common/track_arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/text.hpp"
 #include "python/track_objects.hpp"

@@ -1,4 +1,4 @@
-// trailray._core.render: `trailray render`'s picture (app/render_picture) as a NumPy array. The
+// trailray._core.render: `trailray render`'s picture (app/pictures/render_picture) as a NumPy array. The
 // keyword arguments arrive as the command's own options, parsed by the command's own definitions
 // (add_render_options), so they are spelled, defaulted and checked exactly as on the command line.
 
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "app/render_picture.hpp"
-#include "app/track_arguments.hpp"
+#include "app/pictures/render_picture.hpp"
+#include "app/common/track_arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/text.hpp"
 #include "python/track_objects.hpp"

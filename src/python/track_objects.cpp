@@ -6,7 +6,7 @@
 #include <cmath>
 #include <functional>
 
-#include "app/stats_report.hpp"
+#include "app/tracks/stats_report.hpp"
 #include "python/json_objects.hpp"
 #include "python/text.hpp"
 #include "track/clean.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Where warnings, errors, notes and progress go: one sink handed to the code that has something
-// to say. A terminal prints them to standard error (app/terminal_diagnostics); the viewer also
+// to say. A terminal prints them to standard error (app/common/terminal_diagnostics); the viewer also
 // shows errors in its window; the browser and the video encoder will route them their own way.
 
 #include <string>

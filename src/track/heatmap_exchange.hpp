@@ -1,6 +1,6 @@
 #pragma once
 // The heatmap's own exchange format, what `trailray heatmap` writes beside its coloured tiles so
-// that partial heatmaps add up exactly later (app/heatmap_output puts it into an MBTiles file or a
+// that partial heatmaps add up exactly later (app/pictures/heatmap_output puts it into an MBTiles file or a
 // folder): a description (JSON: the cell, the measure, how many tracks, the largest count, the
 // tiles' colours) and the grid's 256 x 256-cell tiles of counts (zlib-compressed little-endian
 // UInt32), each named "COL/ROW" (or "COL_ROW" as a file name). Read from files anyone may hand

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A terrain model and a surface model of one made-up place, for tests/app/surface_render_cli_test.cpp.
+"""A terrain model and a surface model of one made-up place, for tests/app/pictures/surface_render_cli_test.cpp.
 
 Flat ground at 600 m, 400 x 200 pixels of 0.00005 degrees from 46.700-46.710 N, 7.850-7.870 E
 (EPSG:4326): in its west half a forest block 20 m tall (the surface only), in its east half an

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/scene_setup.hpp"
+#include "app/drawing/scene_setup.hpp"
 #include "geo/wgs84.hpp"
 #include "scene/film/camera_path.hpp"
 #include "scene/tracks/replay_position.hpp"

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "app/video_options.hpp"
+#include "app/video/video_options.hpp"
 #include "scene/camera/camera.hpp"
 #include "scene/film/film_camera.hpp"
 #include "scene/film/film_timing.hpp"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_setup.hpp"
+#include "app/drawing/scene_setup.hpp"
 #include "app/video/film_plan.hpp"
 #include "app/video/film_writer.hpp"
 #include "render/renderer.hpp"

@@ -16,7 +16,7 @@ extern "C" {
 #include <filesystem>
 #include <stdexcept>
 
-#include "app/output_file.hpp"
+#include "app/common/output_file.hpp"
 #include "app/video/film_writer.hpp"
 
 namespace trailray::app {

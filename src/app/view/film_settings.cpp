@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "app/camera_options.hpp"
+#include "app/options/camera_options.hpp"
 #include "app/video/film_writer.hpp"
 
 namespace trailray::app::view {

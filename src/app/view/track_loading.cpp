@@ -3,8 +3,8 @@
 #include <cmath>
 #include <exception>
 
-#include "app/track_arguments.hpp"
-#include "app/track_reading.hpp"
+#include "app/common/track_arguments.hpp"
+#include "app/common/track_reading.hpp"
 #include "scene/pins/thermal_markers.hpp"
 #include "scene/pins/waypoint_building.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Track files into scene tracks without GL (so a background thread can do it while the window
-// keeps drawing): the files read and built on all cores (app/track_reading), each on its own, so
+// keeps drawing): the files read and built on all cores (app/common/track_reading), each on its own, so
 // one that cannot be read becomes an error line and the others still load (everything already
 // open stays). A folder or a pattern among the paths stands for its track files.
 

@@ -10,10 +10,10 @@
 #include <limits>
 #include <numeric>
 
-#include "app/interrupt_guard.hpp"
-#include "app/parallel_jobs.hpp"
-#include "app/photo_drawing.hpp"
-#include "app/places_options.hpp"
+#include "app/common/interrupt_guard.hpp"
+#include "app/common/parallel_jobs.hpp"
+#include "app/drawing/photo_drawing.hpp"
+#include "app/options/places_options.hpp"
 #include "app/view/film_panel.hpp"
 #include "app/view/legend_overlay.hpp"
 #include "app/view/profiler_table.hpp"

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_options.hpp"
-#include "app/photo_options.hpp"
-#include "app/terrain_options.hpp"
+#include "app/options/camera_options.hpp"
+#include "app/options/photo_options.hpp"
+#include "app/options/terrain_options.hpp"
 #include "scene/camera/camera.hpp"
 #include "scene/style.hpp"
 #include "track/io/load.hpp"

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "app/video/film_plan.hpp"
-#include "app/video_options.hpp"
+#include "app/video/video_options.hpp"
 #include "app/view/film_settings.hpp"
 #include "app/view/viewer_shell.hpp"
 

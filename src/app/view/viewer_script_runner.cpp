@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/interrupt_guard.hpp"
+#include "app/common/interrupt_guard.hpp"
 #include "app/view/viewer_shell.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "scene/volumes/volume_shapes.hpp"

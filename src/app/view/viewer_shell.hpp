@@ -13,9 +13,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "app/airspace_options.hpp"
-#include "app/scene_setup.hpp"
-#include "app/terminal_diagnostics.hpp"
+#include "app/options/airspace_options.hpp"
+#include "app/drawing/scene_setup.hpp"
+#include "app/common/terminal_diagnostics.hpp"
 #include "app/view/film_session.hpp"
 #include "app/view/moving_frame.hpp"
 #include "app/view/track_loading.hpp"

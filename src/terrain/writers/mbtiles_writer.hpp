@@ -2,7 +2,7 @@
 // Writes an MBTiles file (the tile pyramid in one SQLite file: `metadata` name/value pairs and a
 // `tiles` table, rows numbered from the south as the spec's TMS scheme has them), and reads back
 // the extra tables a writer added beside them. The caller writes into a temporary path and renames
-// it into place (app/output_file): an MBTiles file is never seen half written.
+// it into place (app/common/output_file): an MBTiles file is never seen half written.
 
 #include <cstdint>
 #include <filesystem>

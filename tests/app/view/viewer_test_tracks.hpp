@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/style_options.hpp"
+#include "app/options/style_options.hpp"
 #include "app/track_model_builders.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "scene/tracks/track_building.hpp"

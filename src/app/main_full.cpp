@@ -1,4 +1,0 @@
-// trailray-full: every command (app/program_router hands it view, video, serve and the help).
-#include "app/cli.hpp"
-
-int main(int argc, char** argv) { return trailray::app::run_cli(argc, argv, trailray::app::add_all_commands); }
