@@ -13,10 +13,10 @@
 
 #include "app/flight/airspace_check.hpp"
 #include "app/flight/check_report.hpp"
-#include "app/pictures/elevation_report.hpp"
 #include "app/flight/flight_report.hpp"
 #include "app/flight/score_report.hpp"
 #include "app/flight/task_report.hpp"
+#include "app/pictures/elevation_report.hpp"
 #include "app/pictures/terrain_heights.hpp"
 #include "python/bindings.hpp"
 #include "python/json_objects.hpp"

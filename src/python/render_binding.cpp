@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "app/pictures/render_picture.hpp"
 #include "app/common/track_arguments.hpp"
+#include "app/pictures/render_picture.hpp"
 #include "python/bindings.hpp"
 #include "python/text.hpp"
 #include "python/track_objects.hpp"

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
+#include "run_command.hpp"
 #include "scene/camera/camera.hpp"
 #include "scene/camera/framing.hpp"
-#include "run_command.hpp"
 #include "terrain/codecs/image_codec.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"

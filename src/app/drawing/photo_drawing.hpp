@@ -11,9 +11,9 @@
 #include "app/options/photo_options.hpp"
 #include "scene/diagnostics.hpp"
 #include "scene/pins/photo_image.hpp"
-#include "scene/tracks/track_set.hpp"
 #include "scene/pins/waypoint_building.hpp"
 #include "scene/pins/waypoints.hpp"
+#include "scene/tracks/track_set.hpp"
 #include "track/photos/photo.hpp"
 
 namespace trailray::app {

@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "app/options/airspace_options.hpp"
-#include "app/drawing/overlay_source.hpp"
-#include "app/options/places_options.hpp"
 #include "app/common/track_reading.hpp"
+#include "app/drawing/overlay_source.hpp"
+#include "app/options/airspace_options.hpp"
+#include "app/options/places_options.hpp"
 #include "scene/pictures/overlaid_imagery.hpp"
 #include "scene/pins/place_labels.hpp"
 #include "scene/pins/scored_route.hpp"

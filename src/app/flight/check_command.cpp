@@ -8,11 +8,11 @@
 #include <iostream>
 #include <memory>
 
+#include "app/common/terminal_diagnostics.hpp"
+#include "app/common/track_arguments.hpp"
 #include "app/flight/airspace_check.hpp"
 #include "app/flight/check_report.hpp"
-#include "app/common/terminal_diagnostics.hpp"
 #include "app/options/terrain_options.hpp"
-#include "app/common/track_arguments.hpp"
 #include "app/options/track_options.hpp"
 #include "track/airspace/openair_reader.hpp"
 #include "track/io/load.hpp"

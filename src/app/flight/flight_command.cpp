@@ -7,10 +7,10 @@
 #include <memory>
 #include <optional>
 
-#include "app/flight/flight_report.hpp"
 #include "app/common/ordered_jobs.hpp"
 #include "app/common/terminal_diagnostics.hpp"
 #include "app/common/track_arguments.hpp"
+#include "app/flight/flight_report.hpp"
 #include "app/options/track_options.hpp"
 #include "track/task/task_reader.hpp"
 

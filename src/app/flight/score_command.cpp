@@ -6,8 +6,8 @@
 #include <iostream>
 #include <memory>
 
-#include "app/flight/score_report.hpp"
 #include "app/common/terminal_diagnostics.hpp"
+#include "app/flight/score_report.hpp"
 #include "track/scoring/score.hpp"
 
 namespace trailray::app {

@@ -5,9 +5,9 @@
 #include <iostream>
 #include <memory>
 
-#include "app/flight/task_report.hpp"
 #include "app/common/terminal_diagnostics.hpp"
 #include "app/common/track_arguments.hpp"
+#include "app/flight/task_report.hpp"
 #include "track/io/load.hpp"
 #include "track/task/task_reader.hpp"
 

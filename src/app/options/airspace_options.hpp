@@ -13,9 +13,9 @@
 #include "app/options/camera_options.hpp"
 #include "geo/bounds.hpp"
 #include "scene/diagnostics.hpp"
+#include "scene/pins/waypoints.hpp"
 #include "scene/tracks/track_set.hpp"
 #include "scene/volumes/volumes.hpp"
-#include "scene/pins/waypoints.hpp"
 #include "terrain/sources/tile_source.hpp"
 
 namespace trailray::app {

@@ -1,10 +1,9 @@
 #include "app/options/picture_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
-
-#include "app/options/track_options.hpp"
 
 namespace trailray::app {
 
@@ -17,15 +16,7 @@ void add_picture_options(CLI::App& cmd, PictureArgs& args, const PictureHelp& he
   cmd.add_flag("--verbose", args.verbose, help.verbose);
   add_shading_options(cmd, args.style);
   if (extra) extra();
-  add_terrain_options(cmd, args.terrain);
-  add_imagery_option(cmd, args.terrain);
-  add_track_style_options(cmd, args.style);
-  add_waypoint_options(cmd, args.waypoints);
-  add_photo_options(cmd, args.photos);
-  add_airspace_options(cmd, args.airspace);
-  add_label_options(cmd, args.style);
-  add_read_options(cmd, args.read);
-  add_cleaning_options(cmd, args.analysis);
+  add_scene_options(cmd, args);
 }
 
 void check_picture_args(const PictureArgs& a) {

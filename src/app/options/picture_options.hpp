@@ -1,43 +1,35 @@
 #pragma once
 // The options every command that draws pictures of the scene shares (`render` and `video`): the
-// picture's size and pixel ratio, the camera, the look (shading, track style, labels), terrain and
-// imagery, waypoints and airspace, how the tracks are read and cleaned, the wait for tiles and
-// --verbose. Defined once, so the two commands cannot drift apart; each command's own options
-// come beside them (RenderArgs, VideoArgs derive from PictureArgs).
-
-#include <CLI/CLI.hpp>
+// picture's size and pixel ratio, the camera, the wait for tiles and --verbose, the shading, and
+// the scene's options (app/options/scene_options: terrain and imagery, track style, waypoints,
+// photos, airspace, labels, how the tracks are read and cleaned). Defined once, so the two
+// commands cannot drift apart; each command's own options come beside them (RenderArgs,
+// VideoArgs derive from PictureArgs).
 
 #include <chrono>
 #include <functional>
 #include <string>
 #include <utility>
 
-#include "app/options/airspace_options.hpp"
 #include "app/options/camera_options.hpp"
-#include "app/options/photo_options.hpp"
-#include "app/options/style_options.hpp"
-#include "app/options/terrain_options.hpp"
-#include "app/options/waypoint_options.hpp"
-#include "track/io/load.hpp"
-#include "track/summary.hpp"
+#include "app/options/scene_options.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace trailray::app {
 
-struct PictureArgs {
+// The scene's options (SceneArgs: style, terrain, waypoints, photos, airspace, track) and the
+// picture's own.
+struct PictureArgs : SceneArgs {
   explicit PictureArgs(std::string default_size) : size(std::move(default_size)) {}
 
   std::string size;          // --size WxH
   double pixel_ratio = 1.0;  // device pixels per label pixel (high-DPI output)
   CameraArgs camera;
-  StyleArgs style;
   double timeout_s = 120.0;  // --timeout: seconds to wait for terrain tiles
   bool verbose = false;
-  track::ReadOptions read;
-  track::AnalysisOptions analysis;
-  TerrainOptions terrain;
-  WaypointArgs waypoints;
-  AirspaceArgs airspace;
-  PhotoArgs photos;  // --photos, --photo-tz, --photo-time-offset
 };
 
 // What the help says where the commands differ.
@@ -48,9 +40,8 @@ struct PictureHelp {
   std::string verbose;      // "Log the GL context, camera, sun and tiles"
 };
 
-// Adds the picture's size, pixel ratio, camera, --timeout and --verbose, then the look, terrain
-// and imagery, waypoints, airspace, labels, reading and cleaning options, in the help in that
-// order. `extra` (may be empty) adds the command's own options between the shading and the
+// Adds the picture's size, pixel ratio, camera, --timeout, --verbose and the shading, then the
+// scene's options (add_scene_options), in the help in that order. `extra` (may be empty) adds the command's own options between the shading and the
 // terrain, where they read best in --help.
 void add_picture_options(CLI::App& command, PictureArgs& args, const PictureHelp& help,
                          const std::function<void()>& extra = {});

@@ -10,10 +10,10 @@
 #include <optional>
 #include <string>
 
+#include "app/common/terminal_diagnostics.hpp"
+#include "app/options/camera_options.hpp"
 #include "app/pictures/bench_datasets.hpp"
 #include "app/pictures/bench_runner.hpp"
-#include "app/options/camera_options.hpp"
-#include "app/common/terminal_diagnostics.hpp"
 
 namespace trailray::app {
 namespace {

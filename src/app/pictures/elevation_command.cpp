@@ -1,5 +1,5 @@
-#include "app/pictures/elevation_command.hpp"
 #include "app/common/terminal_diagnostics.hpp"
+#include "app/pictures/elevation_command.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -13,10 +13,10 @@
 #include <iostream>
 #include <memory>
 
-#include "app/pictures/elevation_report.hpp"
-#include "app/pictures/terrain_heights.hpp"
 #include "app/options/terrain_options.hpp"
 #include "app/options/track_options.hpp"
+#include "app/pictures/elevation_report.hpp"
+#include "app/pictures/terrain_heights.hpp"
 #include "track/io/gpx_writer.hpp"
 #include "track/io/load.hpp"
 

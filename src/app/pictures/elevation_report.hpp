@@ -3,8 +3,8 @@
 // their difference (height above ground), and a summary of the differences. Formatting as JSON,
 // CSV and a short table.
 
-#include <nlohmann/json.hpp>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>

@@ -11,15 +11,15 @@
 #include <optional>
 #include <sstream>
 
-#include "app/pictures/heatmap_output.hpp"
 #include "app/common/output_file.hpp"
 #include "app/common/parallel_jobs.hpp"
 #include "app/common/terminal_diagnostics.hpp"
 #include "app/common/track_arguments.hpp"
 #include "app/options/track_options.hpp"
-#include "terrain/writers/count_geotiff.hpp"
+#include "app/pictures/heatmap_output.hpp"
 #include "scene/pictures/colormap.hpp"
 #include "scene/pictures/heatmap_colors.hpp"
+#include "terrain/writers/count_geotiff.hpp"
 #include "track/heatmap.hpp"
 #include "track/heatmap_pixels.hpp"
 #include "track/io/load.hpp"

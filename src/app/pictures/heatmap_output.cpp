@@ -14,8 +14,8 @@
 #include "app/common/output_file.hpp"
 #include "geo/web_mercator.hpp"
 #include "terrain/codecs/image_codec.hpp"
-#include "terrain/writers/mbtiles_writer.hpp"
 #include "terrain/sources/tile_source.hpp"
+#include "terrain/writers/mbtiles_writer.hpp"
 #include "track/heatmap_exchange.hpp"
 #include "track/heatmap_pixels.hpp"
 

@@ -4,10 +4,10 @@
 
 #include <memory>
 
-#include "app/pictures/render_options.hpp"
-#include "app/pictures/render_picture.hpp"
 #include "app/common/terminal_diagnostics.hpp"
 #include "app/common/track_arguments.hpp"
+#include "app/pictures/render_options.hpp"
+#include "app/pictures/render_picture.hpp"
 
 namespace trailray::app {
 namespace {

@@ -1,14 +1,14 @@
 #include "app/pictures/render_picture.hpp"
 
-#include "app/options/camera_options.hpp"
-#include "app/drawing/photo_drawing.hpp"
-#include "app/pictures/render_report.hpp"
-#include "app/drawing/scene_setup.hpp"
 #include "app/common/track_reading.hpp"
+#include "app/drawing/photo_drawing.hpp"
+#include "app/drawing/scene_setup.hpp"
+#include "app/options/camera_options.hpp"
+#include "app/pictures/render_report.hpp"
 #include "render/platform/gl_context.hpp"
 #include "render/renderer.hpp"
-#include "scene/text/legend_content.hpp"
 #include "scene/terrain_view.hpp"
+#include "scene/text/legend_content.hpp"
 
 namespace trailray::app {
 
@@ -25,12 +25,12 @@ scene::RgbaImage render_picture(const RenderArgs& a, scene::Diagnostics& diagnos
   scene::TerrainView terrain(sources.drawn(), sources.imagery.get());
   terrain.set_policy(
       {true, timeout_of(a), [&diagnostics](const terrain::LoadProgress& p) { diagnostics.progress(tiles_status(p)); }});
-  std::vector<scene::LoadedTrackFile> files = read_track_files_parallel(a.tracks, a.read, diagnostics);
+  std::vector<scene::LoadedTrackFile> files = read_track_files_parallel(a.tracks, a.track_options.read, diagnostics);
   for (scene::LoadedTrackFile& f : more) files.push_back(std::move(f));
-  scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.analysis};
+  scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.track_options.analysis};
   build.surface = sources.surface.get();
   SceneTracks tracks =
-      build_scene_tracks(std::move(files), a.tracks, a.read, style.tracks, build, diagnostics, a.waypoints);
+      build_scene_tracks(std::move(files), a.tracks, a.track_options.read, style.tracks, build, diagnostics, a.waypoints);
   sources.cut_canopy(tracks.tracks);
   // --photos: pins with thumbnails on the tracks.
   add_scene_photos(a.photos, tracks.tracks, tracks.waypoints,

@@ -1,10 +1,10 @@
 #include "app/program/cli.hpp"
 
-#include <fmt/format.h>
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
-#include "app/program/option_suggestion.hpp"
 #include "app/common/terminal_diagnostics.hpp"
+#include "app/program/option_suggestion.hpp"
 
 namespace trailray::app {
 

@@ -1,17 +1,17 @@
 // trailray-render's commands: those that need the terrain and a headless GL context, not the
 // films' encoders, the window or the HTTP server (app/program/program_router sends it render, elevation,
 // bench and check with --terrain). The track commands come along: they cost nothing more here.
-#include "app/pictures/bench_command.hpp"
 #include "app/flight/check_command.hpp"
-#include "app/program/cli.hpp"
-#include "app/tracks/convert_command.hpp"
-#include "app/pictures/elevation_command.hpp"
 #include "app/flight/flight_command.hpp"
+#include "app/flight/score_command.hpp"
+#include "app/flight/task_command.hpp"
+#include "app/pictures/bench_command.hpp"
+#include "app/pictures/elevation_command.hpp"
 #include "app/pictures/heatmap_command.hpp"
 #include "app/pictures/render_command.hpp"
-#include "app/flight/score_command.hpp"
+#include "app/program/cli.hpp"
+#include "app/tracks/convert_command.hpp"
 #include "app/tracks/stats_command.hpp"
-#include "app/flight/task_command.hpp"
 
 namespace trailray::app {
 

@@ -12,23 +12,23 @@
 #include <memory>
 #include <thread>
 
-#include "app/options/camera_options.hpp"
 #include "app/common/interrupt_guard.hpp"
 #include "app/common/parallel_jobs.hpp"
+#include "app/common/terminal_diagnostics.hpp"
+#include "app/common/track_arguments.hpp"
+#include "app/common/track_reading.hpp"
 #include "app/drawing/photo_drawing.hpp"
+#include "app/drawing/scene_setup.hpp"
+#include "app/options/camera_options.hpp"
 #include "app/options/photo_options.hpp"
 #include "app/options/places_options.hpp"
-#include "app/drawing/scene_setup.hpp"
+#include "app/options/style_options.hpp"
+#include "app/options/terrain_options.hpp"
+#include "app/options/track_options.hpp"
 #include "app/serve/http_server.hpp"
 #include "app/serve/serve_config.hpp"
 #include "app/serve/serve_site.hpp"
 #include "app/serve/served_pins.hpp"
-#include "app/options/style_options.hpp"
-#include "app/common/terminal_diagnostics.hpp"
-#include "app/options/terrain_options.hpp"
-#include "app/common/track_arguments.hpp"
-#include "app/options/track_options.hpp"
-#include "app/common/track_reading.hpp"
 #include "scene/pins/place_labels.hpp"
 
 #ifndef TRAILRAY_WEB_ROOT
@@ -48,8 +48,7 @@ struct ServeArgs {
   unsigned idle_timeout_s = 30;
   CameraArgs camera;
   StyleArgs style;
-  track::ReadOptions read;
-  track::AnalysisOptions analysis;
+  TrackOptions track_options;  // --strict, --igc-altitude and the cleaning
   TerrainOptions terrain;
   PhotoArgs photos;         // --photos: pins with thumbnails on the page
   std::string places_file;  // --places: labels on the page
@@ -64,7 +63,7 @@ std::vector<serve::ServedTrack> read_served_tracks(const ServeArgs& a, TerminalD
   const std::vector<std::string> paths = expand_track_arguments(a.tracks);
   for (const std::string& path : paths)
     if (path == "-") throw CLI::ValidationError("TRACK", "- (standard input) cannot be served: give files");
-  std::vector<TrackFileOutcome> outcomes = read_track_file_outcomes(paths, a.read, {}, &diagnostics);
+  std::vector<TrackFileOutcome> outcomes = read_track_file_outcomes(paths, a.track_options.read, {}, &diagnostics);
   diagnostics.progress_done();
   std::vector<serve::ServedTrack> tracks;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
@@ -136,7 +135,7 @@ int run_serve(const ServeArgs& a) {
     const scene::RecordedPoints recorded = scene::recorded_points(files);
     scene::TrackBuildOptions build{sources.heights.get(), 0.0, {}};
     build.surface = sources.surface.get();
-    build.analysis = a.analysis;
+    build.analysis = a.track_options.analysis;
     build.neutral_ground_m = recorded.lowest_or_sea_level();
     scene::TrackSet served;
     for (scene::Track& t : scene::build_tracks(files, parse_style(a.style).tracks, build, diagnostics))
@@ -250,8 +249,7 @@ void add_serve_command(CLI::App& app, int& exit_code) {
   add_track_style_options(*cmd, args->style);
   add_shading_options(*cmd, args->style);
   add_label_options(*cmd, args->style);
-  add_read_options(*cmd, args->read);
-  add_cleaning_options(*cmd, args->analysis);
+  add_track_options(*cmd, args->track_options);
   args->page_options = serve::options_added_since(*cmd, before_page_options);
   cmd->callback([args, &exit_code] { exit_code = run_serve(*args); });
 }

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "app/serve/request_path.hpp"
-#include "terrain/sources/encoded_sources.hpp"
 #include "terrain/codecs/height_decode.hpp"
 #include "terrain/codecs/image_codec.hpp"
+#include "terrain/sources/encoded_sources.hpp"
 
 namespace trailray::app::serve {
 namespace {

@@ -1,5 +1,5 @@
-#include "app/tracks/stats_command.hpp"
 #include "app/common/terminal_diagnostics.hpp"
+#include "app/tracks/stats_command.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -9,11 +9,11 @@
 #include <memory>
 
 #include "app/common/ordered_jobs.hpp"
+#include "app/common/track_arguments.hpp"
 #include "app/options/photo_options.hpp"
 #include "app/options/places_options.hpp"
-#include "app/tracks/stats_report.hpp"
-#include "app/common/track_arguments.hpp"
 #include "app/options/track_options.hpp"
+#include "app/tracks/stats_report.hpp"
 
 namespace trailray::app {
 namespace {

@@ -9,14 +9,14 @@
 #include <optional>
 #include <vector>
 
-#include "app/options/airspace_options.hpp"
 #include "app/common/interrupt_guard.hpp"
 #include "app/common/output_file.hpp"
-#include "app/drawing/photo_drawing.hpp"
-#include "app/pictures/render_report.hpp"
-#include "app/drawing/scene_setup.hpp"
 #include "app/common/terminal_diagnostics.hpp"
 #include "app/common/track_arguments.hpp"
+#include "app/drawing/photo_drawing.hpp"
+#include "app/drawing/scene_setup.hpp"
+#include "app/options/airspace_options.hpp"
+#include "app/pictures/render_report.hpp"
 #include "app/video/film_recorder.hpp"
 #include "app/video/film_writer.hpp"
 #include "app/video/video_options.hpp"
@@ -73,9 +73,9 @@ int run_video(const VideoArgs& a) {
 
   const TerrainSources sources = open_terrain_sources(a.terrain, diagnostics);
   scene::TerrainView terrain(sources.drawn(), sources.imagery.get());
-  scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.analysis};
+  scene::TrackBuildOptions build{sources.heights.get(), 0.0, a.track_options.analysis};
   build.surface = sources.surface.get();
-  SceneTracks loaded = load_scene_tracks(a.tracks, a.read, style.tracks, build, diagnostics, a.waypoints);
+  SceneTracks loaded = load_scene_tracks(a.tracks, a.track_options.read, style.tracks, build, diagnostics, a.waypoints);
   sources.cut_canopy(loaded.tracks);
   if (sources.heights)  // the markers' stems reach down to the ground
     for (scene::Track& t : loaded.tracks.tracks()) scene::set_ground_heights(t, *sources.heights);

@@ -1,17 +1,16 @@
 #include "app/view/view_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>
 
-#include "app/options/airspace_options.hpp"
+#include "app/common/track_arguments.hpp"
 #include "app/options/camera_options.hpp"
 #include "app/options/picture_options.hpp"
+#include "app/options/scene_options.hpp"
 #include "app/options/style_options.hpp"
-#include "app/common/track_arguments.hpp"
-#include "app/options/track_options.hpp"
 #include "app/view/viewer_app.hpp"
-#include "app/options/waypoint_options.hpp"
 
 namespace trailray::app {
 namespace {
@@ -22,13 +21,7 @@ struct ViewArgs {
   std::vector<std::string> tracks;
   std::string size = "1280x720";
   CameraArgs camera;
-  StyleArgs style;
-  track::ReadOptions read;
-  track::AnalysisOptions analysis;
-  TerrainOptions terrain;
-  WaypointArgs waypoints;
-  PhotoArgs photos;
-  AirspaceArgs airspace;
+  SceneArgs scene;  // what is drawn and how: as `render` and `video` (app/options/scene_options)
   bool verbose = false;
   int frames = 0;
   std::string script, screenshot;
@@ -43,26 +36,26 @@ int run_view(const ViewArgs& a) {
   if (a.frames < 0 || a.frames > kMaxFrames)
     throw CLI::ValidationError("--frames", fmt::format("'{}' is not a frame count in 0..{}", a.frames, kMaxFrames));
   check_timeout_option(a.timeout_s);
-  o.sun_time_unix = parse_sun_time(a.style.time);  // a bad --time is a usage error, before any window
+  o.sun_time_unix = parse_sun_time(a.scene.style.time);  // a bad --time is a usage error, before any window
   o.tracks = a.tracks;
-  o.style = parse_style(a.style);
-  o.read = a.read;
-  o.analysis = a.analysis;
-  o.terrain = a.terrain;
+  o.style = parse_style(a.scene.style);
+  o.read = a.scene.track_options.read;
+  o.analysis = a.scene.track_options.analysis;
+  o.terrain = a.scene.terrain;
   o.verbose = a.verbose;
   o.frames = a.frames;
   o.script = a.script;
   o.screenshot = a.screenshot;
   o.timeout_s = a.timeout_s;
-  o.label_files = a.waypoints.label_files;
-  o.places_file = a.waypoints.places_file;
-  o.no_waypoints = a.waypoints.no_waypoints;
-  o.score = a.waypoints.score;
-  o.score_rules = a.waypoints.score_rules;
-  o.task_file = a.waypoints.task_file;
-  o.photos = a.photos;
-  o.airspace_files = a.airspace.files;
-  o.thermals = a.waypoints.thermals_for(o.style.tracks.color_by);
+  o.label_files = a.scene.waypoints.label_files;
+  o.places_file = a.scene.waypoints.places_file;
+  o.no_waypoints = a.scene.waypoints.no_waypoints;
+  o.score = a.scene.waypoints.score;
+  o.score_rules = a.scene.waypoints.score_rules;
+  o.task_file = a.scene.waypoints.task_file;
+  o.photos = a.scene.photos;
+  o.airspace_files = a.scene.airspace.files;
+  o.thermals = a.scene.waypoints.thermals_for(o.style.tracks.color_by);
   o.moving_frame = !a.no_moving_frame;
   return view::run_viewer(o);
 }
@@ -92,7 +85,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
       ->type_name("FILE");
   cmd->add_option("--size", args->size, "Window size in pixels (default 1280x720)")->type_name("WxH");
   add_camera_options(*cmd, args->camera);
-  add_shading_options(*cmd, args->style);
+  add_shading_options(*cmd, args->scene.style);
   cmd->add_option("--timeout", args->timeout_s, "Seconds a scripted screenshot waits for terrain tiles (default 120)")
       ->type_name("S");
   cmd->add_flag("--verbose", args->verbose, "Log the GL context");
@@ -105,15 +98,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--script", args->script, "Run the commands in FILE, one per line, then exit")->type_name("FILE");
   cmd->add_option("--screenshot", args->screenshot, "At the end of a scripted run, write the view as a PNG and exit")
       ->type_name("OUT.png");
-  add_terrain_options(*cmd, args->terrain);
-  add_imagery_option(*cmd, args->terrain);
-  add_track_style_options(*cmd, args->style);
-  add_waypoint_options(*cmd, args->waypoints);
-  add_photo_options(*cmd, args->photos);
-  add_airspace_options(*cmd, args->airspace);
-  add_label_options(*cmd, args->style);
-  add_read_options(*cmd, args->read);
-  add_cleaning_options(*cmd, args->analysis);
+  add_scene_options(*cmd, args->scene);
   cmd->callback([args, &exit_code] {
     args->tracks = expand_track_arguments(args->tracks);
     exit_code = run_view(*args);

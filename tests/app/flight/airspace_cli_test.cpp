@@ -9,9 +9,9 @@
 #include <string>
 
 #include "app/run_command.hpp"
+#include "app/xvfb_command.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"
-#include "app/xvfb_command.hpp"
 
 using trailray::test::run_command;
 using trailray::test::shell_quote;

@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "track/flight/synthetic_flight.hpp"
 #include "app/run_command.hpp"
 #include "test_support.hpp"
+#include "track/flight/synthetic_flight.hpp"
 
 using nlohmann::json;
 using trailray::test::run_command;

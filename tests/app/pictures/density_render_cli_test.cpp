@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera/camera.hpp"
 #include "app/track_cli_support.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::test {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera/camera.hpp"
 #include "app/track_cli_support.hpp"
 #include "app/xvfb_command.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::test {
 namespace {

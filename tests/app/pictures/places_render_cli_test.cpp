@@ -7,9 +7,9 @@
 #include <regex>
 #include <string>
 
+#include "app/track_cli_support.hpp"
 #include "test_support.hpp"
 #include "track/places/osm_places_reader.hpp"
-#include "app/track_cli_support.hpp"
 
 namespace trailray::test {
 namespace {

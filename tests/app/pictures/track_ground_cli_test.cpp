@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera/camera.hpp"
 #include "app/track_cli_support.hpp"
+#include "scene/camera/camera.hpp"
 
 namespace trailray::test {
 namespace {

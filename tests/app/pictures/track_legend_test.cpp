@@ -12,14 +12,14 @@
 #include <vector>
 
 #include "app/options/style_options.hpp"
+#include "app/track_cli_support.hpp"
+#include "scene/pictures/rgba_image.hpp"
 #include "scene/text/legend.hpp"
 #include "scene/text/legend_content.hpp"
-#include "scene/pictures/rgba_image.hpp"
 #include "scene/tracks/track_building.hpp"
 #include "track/clean.hpp"
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
-#include "app/track_cli_support.hpp"
 
 namespace trailray::app {
 namespace {

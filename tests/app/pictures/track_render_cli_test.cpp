@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/options/style_options.hpp"
+#include "app/track_cli_support.hpp"
 #include "scene/camera/camera.hpp"
 #include "scene/pictures/colormap.hpp"
 #include "scene/text/legend.hpp"
@@ -23,7 +24,6 @@
 #include "scene/text/text_raster.hpp"
 #include "scene/tracks/track_building.hpp"
 #include "track/io/load.hpp"
-#include "app/track_cli_support.hpp"
 
 namespace trailray::test {
 namespace {

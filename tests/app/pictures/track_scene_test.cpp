@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/options/style_options.hpp"
+#include "app/track_model_builders.hpp"
 #include "scene/camera/camera.hpp"
 #include "scene/pictures/colormap.hpp"
 #include "scene/scene.hpp"
@@ -20,7 +21,6 @@
 #include "track/color_values.hpp"
 #include "track/metrics.hpp"
 #include "track/summary.hpp"
-#include "app/track_model_builders.hpp"
 
 namespace trailray::app {
 namespace {

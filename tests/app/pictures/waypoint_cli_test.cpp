@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "app/view/viewer_ui.hpp"
-#include "scene/style.hpp"
 #include "app/track_cli_support.hpp"
-#include "ui/waypoint_view.hpp"
+#include "app/view/viewer_ui.hpp"
 #include "app/xvfb_command.hpp"
+#include "scene/style.hpp"
+#include "ui/waypoint_view.hpp"
 
 namespace trailray::test {
 namespace {

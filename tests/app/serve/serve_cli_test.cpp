@@ -12,13 +12,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "geo/tile_id.hpp"
 #include "app/raw_http.hpp"
 #include "app/run_command.hpp"
 #include "app/serve_process.hpp"
-#include "terrain/gdal/gdal_raster.hpp"
+#include "geo/tile_id.hpp"
 #include "terrain/codecs/height_decode.hpp"
 #include "terrain/codecs/image_codec.hpp"
+#include "terrain/gdal/gdal_raster.hpp"
 #include "terrain/local_tile_server.hpp"
 #include "terrain/tile_fixtures.hpp"
 #include "test_support.hpp"
