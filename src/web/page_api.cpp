@@ -127,6 +127,13 @@ EMSCRIPTEN_KEEPALIVE const std::uint8_t* trailray_legend_pixels() {
   return viewer && !viewer->legend().rgba.empty() ? viewer->legend().rgba.data() : nullptr;
 }
 
+// A script of the desktop's `view --script` commands run on the viewer (PageViewer::run_script):
+// {"output", "error"} as JSON. The same script run by `trailray view --script` prints the same
+// (print-state, print-hover, print-camera, ...): the browser tests compare them.
+EMSCRIPTEN_KEEPALIVE const char* trailray_run_script(const char* text) {
+  return kept(viewer ? viewer->run_script(text) : R"({"output":"","error":"not started"})");
+}
+
 EMSCRIPTEN_KEEPALIVE const char* trailray_view_state() { return kept(viewer ? viewer->view_state() : ""); }
 EMSCRIPTEN_KEEPALIVE const char* trailray_status() { return kept(viewer ? viewer->status_json() : "{}"); }
 

@@ -11,8 +11,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "scene/diagnostics.hpp"
 #include "scene/camera/framing.hpp"
@@ -24,9 +26,9 @@
 #include "track/io/text_output.hpp"
 #include "ui/framing_room.hpp"
 #include "ui/profile_chart.hpp"
-#include "ui/replay_follow.hpp"
-#include "ui/tooltip.hpp"
-#include "ui/track_picking.hpp"
+#include "ui/script_session.hpp"
+#include "ui/session_state.hpp"
+#include "ui/view_script.hpp"
 #include "ui/viewer_overlay.hpp"
 #include "ui/viewer_panels.hpp"
 #include "ui/waypoint_view.hpp"
@@ -76,6 +78,7 @@ std::string plain_file_name(const std::string& name) {
 
 PageViewer::PageViewer() {
   model_.offers_moving_frame = false;
+  session_.set_framing_room([this](const scene::Lens& lens) { return framing_room(lens); });
   open_terrain();
 }
 
@@ -130,10 +133,12 @@ std::string PageViewer::open_track(const std::string& name, std::string_view byt
       loaded = scene::read_track_file(file, track::ReadOptions{}, diagnostics);
     }
     files_.push_back(std::move(loaded));
+    std::vector<std::string> read_before = std::exchange(read_warnings_, diagnostics.warnings);
     try {
       rebuild_tracks();
     } catch (...) {
       files_.pop_back();  // what was open stays as it was
+      read_warnings_ = std::move(read_before);
       rebuild_tracks();
       throw;
     }
@@ -143,7 +148,6 @@ std::string PageViewer::open_track(const std::string& name, std::string_view byt
     for (const std::string& w : diagnostics.warnings) message += "\n" + w;
     return message;
   }
-  warnings_ = diagnostics.warnings;
   if (!camera_moved_) place_camera();
   dirty_ = true;
   return {};
@@ -222,25 +226,6 @@ std::string PageViewer::set_photo_picture(int index, bool large, std::string_vie
   return {};
 }
 
-void PageViewer::fly_to_waypoint(int index) {
-  if (index < 0 || index >= static_cast<int>(model_.waypoints.points.size())) return;
-  const scene::Waypoint& w = model_.waypoints.points[static_cast<std::size_t>(index)];
-  if (w.kind == scene::WaypointKind::Photo) enlarge_photo(index);
-  if (!camera_) return;
-  const scene::LookAt& now = camera_->view();
-  camera_->fly_to(ui::look_at_waypoint(w, now.heading_deg, now.pitch_deg));
-  camera_moved_ = dirty_ = true;
-}
-
-void PageViewer::enlarge_photo(int waypoint) {
-  for (std::size_t i = 0; i < model_.waypoints.points.size(); ++i) {
-    scene::Waypoint& w = model_.waypoints.points[i];
-    w.enlarged = static_cast<int>(i) == waypoint && w.kind == scene::WaypointKind::Photo && w.thumbnail != nullptr;
-  }
-  ++model_.waypoints.revision;
-  dirty_ = true;
-}
-
 void PageViewer::rebuild_tracks() {
   recorded_ = scene::recorded_points(files_);
   model_.neutral_ground_m = recorded_.lowest_or_sea_level();
@@ -251,14 +236,12 @@ void PageViewer::rebuild_tracks() {
   build.inspect = true;
   build.analysis = model_.analysis;
   scene::CollectedDiagnostics diagnostics;
-  scene::TrackSet fresh;
-  for (scene::Track& t : scene::build_tracks(files_, options_.style.tracks, build, diagnostics))
-    fresh.add(std::move(t));
-  model_.tracks = std::move(fresh);
-  model_.hover = ui::HoverState{};
-  model_.selection = ui::ChartSelection{};
-  if (model_.selected_track >= static_cast<int>(model_.tracks.size())) model_.selected_track = -1;
-  if (model_.selected_track < 0 && !model_.tracks.empty()) model_.selected_track = 0;
+  ui::LoadedTracks built;
+  built.tracks = scene::build_tracks(files_, options_.style.tracks, build, diagnostics);
+  // The last file's reader's warnings, then those of building the tracks (as the desktop's).
+  built.warnings = read_warnings_;
+  for (std::string& w : diagnostics.warnings) built.warnings.push_back(std::move(w));
+  session_.replace_tracks(std::move(built));
   legend_dirty_ = true;
 }
 
@@ -270,22 +253,18 @@ scene::Lens PageViewer::lens() const {
 }
 
 void PageViewer::place_camera() {
-  const scene::Lens l = lens();
-  const double ground = recorded_.lowest_or_sea_level();
-  if (options_.look_at) {
-    camera_.emplace(*options_.look_at, l);
-    return;
+  // The first view every front end makes (ui/first_camera.hpp): the options' camera, else the
+  // tracks framed where the panels and the legend leave room (none yet: no camera).
+  const ui::CameraRequest request{options_.camera, options_.look_at};
+  if (!request.placement && !request.look_at && model_.tracks.empty()) return;
+  try {
+    session_.place_first_camera(request, lens());
+  } catch (const ui::FirstCameraError& e) {
+    throw std::runtime_error(e.why());
   }
-  if (options_.camera) {
-    const auto camera = scene::camera_at(*options_.camera, l, ground);
-    if (!camera.ok()) throw std::runtime_error(camera.error);
-    camera_.emplace(scene::CameraController::look_at_from_camera(*camera.value, ground), l);
-    return;
-  }
-  if (model_.tracks.empty()) return;
-  scene::FramingOptions framing;
-  framing.lens = l;
-  // Where neither the panels nor the legend cover the tracks.
+}
+
+ui::FramingRoom PageViewer::framing_room(const scene::Lens& l) {
   scene::Scene legend_scene;
   legend_scene.tracks = &model_.tracks;
   legend_scene.style = options_.style;
@@ -293,29 +272,26 @@ void PageViewer::place_camera() {
   legend_scene.overlay_legend = options_.overlay_legend;
   const scene::KeptClearCorner legend =
       scene::legend_clearance(scene::scene_legend_panel(l.width_px, l.height_px, legend_scene), l.height_px);
-  const ui::FramingRoom room = panels_ ? page_framing_room(model_.settings, l, legend, pixel_ratio_)
-                                       : ui::FramingRoom{legend, std::nullopt};
-  framing.keep_clear = room.keep_clear;
-  framing.area = room.area;
-  const auto framed = scene::frame_tracks(model_.tracks, framing);
-  if (!framed.ok()) throw std::runtime_error(framed.error);
-  camera_.emplace(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m), l);
+  return panels_ ? page_framing_room(model_.settings, l, legend, pixel_ratio_) : ui::FramingRoom{legend, std::nullopt};
+}
+
+void PageViewer::take_camera_moves() {
+  if (session_.camera_moves() == camera_moves_seen_) return;
+  camera_moves_seen_ = session_.camera_moves();
+  camera_moved_ = dirty_ = true;
 }
 
 void PageViewer::orbit(double dx, double dy) {
-  if (!camera_) return;
-  camera_->orbit(dx, dy);
-  camera_moved_ = dirty_ = true;
+  session_.orbit(dx, dy);
+  take_camera_moves();
 }
 void PageViewer::pan(double x0, double y0, double x1, double y1) {
-  if (!camera_) return;
-  camera_->pan(x0, y0, x1, y1);
-  camera_moved_ = dirty_ = true;
+  session_.pan(x0, y0, x1, y1);
+  take_camera_moves();
 }
 void PageViewer::zoom(double steps, double x, double y) {
-  if (!camera_) return;
-  camera_->zoom(steps, x, y);
-  camera_moved_ = dirty_ = true;
+  session_.zoom(steps, x, y);
+  take_camera_moves();
 }
 
 bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds) {
@@ -324,14 +300,14 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
     pixel_ratio_ = pixel_ratio > 0.0 ? pixel_ratio : 1.0;
     width_px_ = width_px;
     height_px_ = height_px;
-    if (camera_)
-      camera_->set_image_size(width_px, height_px);
+    if (session_.has_camera())
+      session_.camera().set_image_size(width_px, height_px);
     else if (!model_.tracks.empty() || options_.look_at || options_.camera)
       place_camera();
     dirty_ = legend_dirty_ = true;
   }
-  if (camera_ && camera_->animating()) {
-    camera_->update(seconds);
+  if (session_.has_camera() && session_.camera().animating()) {
+    session_.update(seconds);
     dirty_ = true;
   }
   since_drawn_s_ += seconds;
@@ -350,7 +326,7 @@ bool PageViewer::frame(std::uint32_t width_px, std::uint32_t height_px, double p
   // again with them, so "Loading terrain" goes away once the last tile is in, view moving or not.
   const terrain::LoadProgress& now = terrain_report_.progress;
   const terrain::LoadProgress& shown = shown_progress_;
-  if (panels_ && camera_ &&
+  if (panels_ && session_.has_camera() &&
       (now.wanted != shown.wanted || now.loaded != shown.loaded || now.no_data != shown.no_data ||
        now.failed != shown.failed))
     ui_frames_ = std::max(ui_frames_, 1);
@@ -367,15 +343,16 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
   if (pressed || input_.moved()) ui_frames_ = std::max(ui_frames_, kUiFramesAfterInput);
   model_.settings.sun_time_unix = sun_time();  // what the shading panel starts from
   imgui_.begin_frame();
-  if (camera_ && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
+  if (session_.has_camera() && !io.WantCaptureKeyboard && handle_keys(seconds)) ui_frames_ = std::max(ui_frames_, 1);
   // A click on a photo's pin in the picture (not on a panel; with or without the panels) shows it
-  // larger and flies to it, as its line in the Tracks panel does.
-  if (camera_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse)
+  // larger and flies to it, as its line in the Tracks panel does. (Drags, the wheel and pinches
+  // come from the page's JavaScript as gestures: orbit, pan, zoom.)
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse)
     if (const auto at = input_.position()) {
-      const int pin = ui::pick_waypoint(model_.waypoints, camera_->camera(), model_.settings.style.pins, at->x * ratio,
-                                        at->y * ratio, ui::kPickRadiusPx);
-      if (pin >= 0 && model_.waypoints.points[static_cast<std::size_t>(pin)].kind == scene::WaypointKind::Photo)
-        fly_to_waypoint(pin);
+      const std::uint64_t photos = model_.waypoints.revision;
+      session_.click(at->x * ratio, at->y * ratio);
+      if (model_.waypoints.revision != photos) dirty_ = true;
+      take_camera_moves();
     }
   if (!panels_) return false;  // nothing drawn: the frame's draw data is empty
   if (!panels_placed_) {
@@ -407,96 +384,57 @@ bool PageViewer::interface_frame(std::uint32_t width_px, std::uint32_t height_px
       given_options_.emplace_back("time", track::format_iso_time(std::round(sun)));
     }
   }
-  if (actions.fly_to_track >= 0) fly_to_track(actions.fly_to_track);
-  fly_to_waypoint(actions.fly_to_waypoint);
-  if (camera_ && actions.fly_to_point) {
-    const scene::LookAt& now = camera_->view();
-    camera_->fly_to(ui::look_at_waypoint(*actions.fly_to_point, now.heading_deg, now.pitch_deg));
-  }
+  const std::uint64_t photos = model_.waypoints.revision;
+  session_.apply(actions);
+  if (model_.waypoints.revision != photos) dirty_ = true;  // a photo shown larger
   // The replay's camera follow: the scene is drawn again each frame it moves the camera.
-  if (camera_) {
-    const scene::LookAt before = camera_->view();
-    if (ui::follow_replay(model_, *camera_)) {
-      const scene::LookAt& now = camera_->view();
-      if (now.target.lat_deg != before.target.lat_deg || now.target.lon_deg != before.target.lon_deg ||
-          now.target.height_m != before.target.height_m || now.heading_deg != before.heading_deg ||
-          now.distance_m != before.distance_m || now.pitch_deg != before.pitch_deg)
-        camera_moved_ = dirty_ = true;
-    }
-  }
-  if (camera_) {
+  session_.follow_replay();
+  take_camera_moves();
+  if (session_.has_camera()) {
     // The hover follows the pointer over the picture (not over a panel), in device pixels.
     if (input_.moved() && !io.WantCaptureMouse) {
       if (const auto at = input_.position())
-        update_hover(at->x * ratio, at->y * ratio);
-      else if (!model_.hover.from_chart)
-        model_.hover = ui::HoverState{};
+        session_.hover_at(at->x * ratio, at->y * ratio);
+      else
+        session_.clear_hover();
     }
-    const scene::Camera camera = camera_->camera();
+    scene::CameraController& controller = session_.camera();
     const ui::OverlayState overlay{
-        model_, camera, terrain_report_.progress, status_line_, camera_->view().heading_deg, std::nullopt};
+        model_, controller.camera(), terrain_report_.progress, status_line_, controller.view().heading_deg, std::nullopt};
     shown_progress_ = terrain_report_.progress;
-    if (ui::draw_overlays(overlay)) camera_->reset_north();
+    if (ui::draw_overlays(overlay)) controller.reset_north();
   }
   return edited;
 }
 
 bool PageViewer::handle_keys(double seconds) {
-  // The DOM's key codes (page_input.hpp): letters as upper case, 187/189 for =/- (107/109 keypad).
-  const auto down = [](int code) { return ImGui::IsKeyDown(code); };
-  const auto pressed = [](int code) { return ImGui::IsKeyPressed(code, false); };
-  const double step = std::min(0.1, 0.8 * seconds);  // fractions of the distance per frame
-  bool held = false;
-  const auto when = [&](bool on, auto&& action) {
-    if (!on) return;
-    action();
-    held = camera_moved_ = dirty_ = true;
+  // The DOM's key codes (page_input.hpp): letters as upper case, 37-40 the arrows, 33/34 page up
+  // and down, 187/189 for =/- (107/109 keypad).
+  using ui::ViewerKey;
+  ui::KeyInput keys;
+  const auto held = [&](ViewerKey key, std::initializer_list<int> codes) {
+    for (const int code : codes)
+      if (ImGui::IsKeyDown(code)) keys.hold(key);
   };
-  when(down('W') || down(38), [&] { camera_->move(0.0, step); });
-  when(down('S') || down(40), [&] { camera_->move(0.0, -step); });
-  when(down('D') || down(39), [&] { camera_->move(step, 0.0); });
-  when(down('A') || down(37), [&] { camera_->move(-step, 0.0); });
-  when(down('Q'), [&] { camera_->orbit(-200.0 * seconds, 0.0); });
-  when(down('E'), [&] { camera_->orbit(200.0 * seconds, 0.0); });
-  when(down(33), [&] { camera_->tilt(40.0 * seconds); });
-  when(down(34), [&] { camera_->tilt(-40.0 * seconds); });
-  const double cx = width_px_ / 2.0, cy = height_px_ / 2.0;
-  when(down(187) || down(107), [&] { camera_->zoom(4.0 * seconds, cx, cy); });
-  when(down(189) || down(109), [&] { camera_->zoom(-4.0 * seconds, cx, cy); });
-  if (pressed('N')) camera_->reset_north();
-  if (pressed('F')) fly_to_track(std::max(0, model_.selected_track));
-  if (pressed(' ')) model_.clock.toggle();
-  return held;
-}
-
-void PageViewer::update_hover(double x_px, double y_px) {
-  const scene::Camera camera = camera_->camera();
-  std::optional<double> ground_depth_m;
-  if (const auto ground = camera_->ground_point_at(x_px, y_px))
-    if (const auto seen = camera.project(scene::ecef_from(*ground))) ground_depth_m = seen->depth_m;
-  const ui::HoverState picked =
-      ui::pick_track_point(model_.tracks, camera, x_px, y_px, ui::kPickRadiusPx, ground_depth_m);
-  if (picked.track >= 0 || !model_.hover.from_chart) model_.hover = picked;
-}
-
-void PageViewer::fly_to_track(int index) {
-  if (!camera_ || index < 0 || index >= static_cast<int>(model_.tracks.size())) return;
-  const scene::Track& t = model_.tracks[static_cast<std::size_t>(index)];
-  scene::FramingOptions framing;
-  framing.lens = lens();
-  framing.preferred_heading_deg = camera_->view().heading_deg;
-  if (panels_) {
-    const ui::FramingRoom room = page_framing_room(model_.settings, framing.lens, {}, pixel_ratio_);
-    framing.keep_clear = room.keep_clear;
-    framing.area = room.area;
-  }
-  framing.ground_height_m = t.lowest_altitude();
-  if (std::isnan(framing.ground_height_m)) framing.ground_height_m = recorded_.lowest_or_sea_level();
-  const scene::Track* const one[] = {&t};
-  const auto framed = scene::frame_tracks(one, framing);
-  if (!framed.ok()) return;
-  camera_moved_ = true;
-  camera_->fly_to(scene::CameraController::look_at_from_camera(framed.value->camera, framed.value->ground_height_m));
+  const auto pressed = [&](ViewerKey key, int code) {
+    if (ImGui::IsKeyPressed(code, false)) keys.press(key);
+  };
+  held(ViewerKey::forward, {'W', 38});
+  held(ViewerKey::back, {'S', 40});
+  held(ViewerKey::right, {'D', 39});
+  held(ViewerKey::left, {'A', 37});
+  held(ViewerKey::orbit_left, {'Q'});
+  held(ViewerKey::orbit_right, {'E'});
+  held(ViewerKey::tilt_up, {33});
+  held(ViewerKey::tilt_down, {34});
+  held(ViewerKey::zoom_in, {187, 107});
+  held(ViewerKey::zoom_out, {189, 109});
+  pressed(ViewerKey::north, 'N');
+  pressed(ViewerKey::fly_to_selected, 'F');
+  pressed(ViewerKey::play_pause, ' ');
+  const bool held_any = session_.keys(keys, seconds);
+  take_camera_moves();
+  return held_any;
 }
 
 bool PageViewer::draw_picture() {
@@ -535,8 +473,8 @@ void PageViewer::draw_scene(std::uint32_t width_px, std::uint32_t height_px, dou
   target_.pixel_ratio = pixel_ratio;
   target_.window_width_px = static_cast<int>(width_px);
   target_.window_height_px = static_cast<int>(height_px);
-  if (camera_) {
-    terrain_report_ = renderer_.draw(scene, camera_->camera(), target_).terrain;
+  if (session_.has_camera()) {
+    terrain_report_ = renderer_.draw(scene, session_.camera().camera(), target_).terrain;
   } else {
     // Nothing to look at yet: the neutral ground from above a place, so the page is not black.
     scene::LookAt overview;
@@ -554,10 +492,42 @@ void PageViewer::draw_scene(std::uint32_t width_px, std::uint32_t height_px, dou
   ++frames_drawn_;
 }
 
+std::string PageViewer::run_script(std::string_view text) {
+  nlohmann::json result = {{"output", ""}, {"error", nullptr}};
+  std::string printed;
+  try {
+    const ui::ViewScript script = ui::parse_view_script(text, "script");
+    std::optional<glm::dvec2> cursor;  // the last `hover`: the desktop hovers there each frame
+    for (const ui::ScriptCommand& c : script.commands) {
+      using Kind = ui::ScriptCommand::Kind;
+      if (c.kind == Kind::print_hover && cursor) session_.hover_at(cursor->x, cursor->y);
+      if (const std::optional<std::string> out = ui::run_session_command(session_, c, script.file)) {
+        printed += *out;
+      } else if (c.kind == Kind::hover) {
+        cursor = glm::dvec2(c.x, c.y);
+      } else if (c.kind == Kind::hide_panels) {
+        panels_ = false;
+      } else if (c.kind != Kind::wait) {
+        throw ui::ScriptError(fmt::format("{}:{}: the page has no pictures, frame times or films of its own to "
+                                          "script (the desktop's `view --script` has)",
+                                          script.file, c.line));
+      }
+      if (cursor) session_.hover_at(cursor->x, cursor->y);
+    }
+  } catch (const std::exception& e) {
+    result["error"] = e.what();
+  }
+  result["output"] = printed;
+  take_camera_moves();
+  dirty_ = legend_dirty_ = true;
+  ui_frames_ = kUiFramesAfterInput;
+  return result.dump();
+}
+
 std::string PageViewer::view_state() const {
   std::string out;
-  if (camera_) {
-    const scene::LookAt& v = camera_->view();
+  if (session_.has_camera()) {
+    const scene::LookAt& v = session_.camera().view();
     out = fmt::format("look-at={:.6f},{:.6f},{:.1f}&distance={:.1f}&heading={:.2f}&pitch={:.2f}", v.target.lat_deg,
                       v.target.lon_deg, v.target.height_m, v.distance_m, v.heading_deg, v.pitch_deg);
   }
@@ -577,7 +547,7 @@ std::string PageViewer::status_json() const {
                            {"color", fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b))}});
   }
   if (color_range_) j["color_range"] = {color_range_->min, color_range_->max};
-  j["warnings"] = warnings_;
+  j["warnings"] = session_.warnings();
   const terrain::LoadProgress& p = terrain_report_.progress;
   j["tiles"] = {{"wanted", p.wanted}, {"loaded", p.loaded}, {"no_data", p.no_data}, {"failed", p.failed}};
   // Fetched tiles held until the loader takes them (those that arrived after the view moved on
@@ -624,13 +594,10 @@ std::string PageViewer::status_json() const {
   }
   j["photos"] = photos;
   j["places"] = {{"count", places}, {"names", place_names}};
-  // What the pointer is over: a track point (its tooltip's lines) or a panel.
-  nlohmann::json hover = {{"track", model_.hover.track}};
-  if (model_.hover.track >= 0 && model_.hover.track < static_cast<int>(model_.tracks.size())) {
-    hover["point"] = model_.hover.point;
-    hover["lines"] = ui::tooltip_lines(model_.tracks[static_cast<std::size_t>(model_.hover.track)], model_.hover.point);
-  }
-  j["hover"] = hover;
+  // What a viewer shows, as the desktop's `print-state` prints it; what the pointer is over (a track
+  // point, a pin or an airspace wall, with its tooltip's lines) also as "hover".
+  j["session"] = nlohmann::json::parse(ui::session_state_json(session_));
+  j["hover"] = j["session"]["hover"];
   // What the Statistics panel shows for its track, and the profile's range selection (the same
   // lines the panels draw).
   nlohmann::json statistics = {{"track", model_.selected_track}, {"lines", nlohmann::json::array()}};

@@ -1,7 +1,8 @@
 #pragma once
 // The page's viewer: the tracks opened in the page (files dropped or picked, or fetched from
 // `?track=` URLs, handed over as bytes), drawn with the desktop's renderer into the page's
-// WebGL 2 canvas, from a camera the person moves (scene::CameraController, as on the desktop).
+// WebGL 2 canvas. What a viewer is (the model, the camera, hover, keys, fly-to, the first view)
+// is ui::ViewerSession, the desktop's too: this shell hands it the page's input and time.
 // The page's JavaScript (page/app.js) owns the DOM: it passes files, options and gestures in
 // through page_api.cpp and asks for a frame each animation frame; a frame is drawn only when
 // something changed.
@@ -21,6 +22,7 @@
 #include "scene/tracks/track_files.hpp"
 #include "scene/tracks/track_set.hpp"
 #include "ui/viewer_model.hpp"
+#include "ui/viewer_session.hpp"
 #include "web/fetched_tiles.hpp"
 #include "web/page_input.hpp"
 #include "web/page_legend.hpp"
@@ -71,13 +73,21 @@ class PageViewer {
   // it drew.
   bool frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds_since_last);
 
+  // Runs a script of the desktop's `view --script` commands (ui/view_script.hpp) on the viewer:
+  // the session's as the desktop runs them (ui/script_session.hpp), `hover X Y` at once (and again
+  // after each later command, as the desktop's cursor stays), `hide-panels`; `wait` draws nothing
+  // (the page draws its frames as they come); pictures and films are the desktop's (an error).
+  // JSON: {"output": what the prints printed, "error": null or "script:LINE: ..."}.
+  std::string run_script(std::string_view text);
   // The view as option text for the fragment ("look-at=LAT,LON,ALT&distance=M&heading=D&pitch=D"
   // plus the style options given), so a copied address reproduces it.
   std::string view_state() const;
   // What the page shows beside the picture, as JSON: the tracks (name, points, colour), the colour
-  // scale, the warnings of the last file opened, the frames drawn, the tiles (wanted, in, and the
-  // fetched ones kept), and what the panels show (the Statistics panel's and the range
-  // selection's lines, the tile figures the interface was drawn with, each panel's place).
+  // scale, the warnings of the last file opened (reading it and building the tracks), the frames
+  // drawn, the tiles (wanted, in, and the fetched ones kept), what the panels show (the Statistics
+  // panel's and the range selection's lines, the tile figures the interface was drawn with, each
+  // panel's place), and under "session" what a viewer shows (ui/session_state.hpp: the same JSON
+  // as the desktop's `print-state`).
   std::string status_json() const;
   // The legend drawn with the last frame (its place is in status_json, with a version that
   // changes whenever it does).
@@ -90,21 +100,16 @@ class PageViewer {
   scene::Lens lens() const;
   // The panels and overlays (ImGui) for this frame; true when an edit may have changed the scene.
   bool interface_frame(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio, double seconds);
-  void update_hover(double x_px, double y_px);
-  // The desktop viewer's keys (app/view/viewer_input.cpp) from ImGui's key state: true while one
-  // that moves the camera is held (frames must go on).
+  // The DOM's key codes as the session's keys (ui/viewer_keys.hpp), from ImGui's key state: true
+  // while one that moves the camera is held (frames must go on).
   bool handle_keys(double seconds);
+  // The room the panels (at their first places) and the legend leave for a framing.
+  ui::FramingRoom framing_room(const scene::Lens& lens);
+  // After the session moved the camera: drawn again, and opening a track keeps the view.
+  void take_camera_moves();
   // The sun's time: the `time` option (or the shading panel's), else the tracks' day at noon, or
   // today's noon where the page looks before any track is open.
   double sun_time() const;
-  void fly_to_track(int index);
-  // A waypoint clicked (its pin, or its line in the Tracks panel): the camera flies to it; a
-  // photo is shown larger too.
-  void fly_to_waypoint(int index);
-  // A photo's pin (index into the model's waypoints) shown larger (the others back to their
-  // size), as the desktop viewer's click on it; its larger picture is asked for (status_json's
-  // "photos"."wanted") until it arrives.
-  void enlarge_photo(int waypoint);
   void draw_scene(std::uint32_t width_px, std::uint32_t height_px, double pixel_ratio);
 
   // Frames of the interface drawn after an input (ImGui settles hover and active items over a
@@ -129,7 +134,10 @@ class PageViewer {
   PageOptions options_;
   std::vector<std::pair<std::string, std::string>> given_options_;  // as given, for view_state
   std::vector<scene::LoadedTrackFile> files_;
-  ui::ViewerModel model_;  // the tracks, the panels' settings, hover, selection, replay
+  ui::ViewerSession session_;            // the tracks, the panels' settings, hover, selection, replay, camera
+  ui::ViewerModel& model_ = session_.model();  // the session's model by its short name
+  std::uint64_t camera_moves_seen_ = 0;  // session_.camera_moves() as last taken
+  std::vector<std::string> read_warnings_;  // of the last file opened (its reader's)
   // serve's photos: photo i is waypoint first_photo_ + i; its larger picture's URL, and whether
   // it is in (the thumbnail replaced by it).
   std::size_t first_photo_ = 0;
@@ -137,12 +145,10 @@ class PageViewer {
   std::vector<bool> large_in_;
   int photos_in_ = 0;  // thumbnails arrived
   scene::RecordedPoints recorded_;
-  std::optional<scene::CameraController> camera_;
   bool camera_moved_ = false;  // by a gesture or an option: opening another track keeps the view
   bool dirty_ = true;
   std::uint32_t width_px_ = 0, height_px_ = 0;
   double pixel_ratio_ = 1.0;
-  std::vector<std::string> warnings_;
   std::string status_line_;  // the overlay's line at the bottom (nothing to say yet)
   std::uint64_t frames_drawn_ = 0;
   PageLegend legend_;

@@ -19,7 +19,6 @@
 #include "app/view/film_session.hpp"
 #include "app/view/moving_frame.hpp"
 #include "app/view/track_loading.hpp"
-#include "app/view/view_script.hpp"
 #include "app/view/viewer_app.hpp"
 #include "app/view/viewer_ui.hpp"
 #include "render/gl/frame_profiler.hpp"
@@ -35,6 +34,7 @@
 #include "ui/framing_room.hpp"
 #include "ui/viewer_model.hpp"
 #include "ui/viewer_session.hpp"
+#include "ui/view_script.hpp"
 
 namespace trailray::app::view {
 

@@ -59,6 +59,8 @@ function bindApi() {
     picture: c('trailray_picture', 'number', []),
     setServedPins: c('trailray_set_served_pins', 'string', ['string']),
     photoPicture: c('trailray_photo_picture', 'string', ['number', 'number', 'number', 'number']),
+    // The desktop's `view --script` commands on the viewer (the tests run one script in both).
+    runScript: c('trailray_run_script', 'string', ['string']),
   };
 }
 

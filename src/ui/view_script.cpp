@@ -1,13 +1,15 @@
-#include "app/view/view_script.hpp"
+#include "ui/view_script.hpp"
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
-namespace trailray::app::view {
+#include "track/io/parse_util.hpp"
+
+namespace trailray::ui {
 namespace {
 
 using Kind = ScriptCommand::Kind;
@@ -60,9 +62,12 @@ std::vector<std::string_view> words(std::string_view line) {
   return out;
 }
 
+// Through the track readers' parse_double: the browser's libc++ has no from_chars for doubles.
 bool parse_number(std::string_view text, double& value) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+  const std::optional<double> parsed = track::parse_double(text);
+  if (!parsed) return false;
+  value = *parsed;
+  return true;
 }
 
 }  // namespace
@@ -120,4 +125,4 @@ ViewScript load_view_script(const std::string& path) {
   return parse_view_script(text.str(), path);
 }
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

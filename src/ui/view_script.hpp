@@ -1,6 +1,8 @@
 #pragma once
-// `trailray view --script FILE`: simple commands, one per line, that drive the viewer for tests
-// and scripted pictures. Blank lines and lines starting with '#' are skipped.
+// `trailray view --script FILE` (and the page's trailray_run_script): simple commands, one per
+// line, that drive the viewer for tests and scripted pictures. Blank lines and lines starting with
+// '#' are skipped. The commands on the session (script_session.hpp) run alike in both front ends;
+// pictures, frames, panels and films are the desktop's.
 //
 //   orbit DX DY       a left drag of DX, DY pixels (heading and pitch around the pivot)
 //   pan DX DY         a right drag of DX, DY pixels from the image centre
@@ -39,7 +41,7 @@
 #include <string_view>
 #include <vector>
 
-namespace trailray::app::view {
+namespace trailray::ui {
 
 class ScriptError : public std::runtime_error {
  public:
@@ -90,4 +92,4 @@ ViewScript parse_view_script(std::string_view text, const std::string& file);
 // Reads and parses a file; ScriptError names it when it cannot be read.
 ViewScript load_view_script(const std::string& path);
 
-}  // namespace trailray::app::view
+}  // namespace trailray::ui

@@ -1,11 +1,11 @@
 // The viewer's script language: what each line becomes, and errors that name FILE:LINE.
-#include "app/view/view_script.hpp"
+#include "ui/view_script.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-namespace trailray::app::view {
+namespace trailray::ui {
 namespace {
 
 using Kind = ScriptCommand::Kind;
@@ -105,4 +105,4 @@ TEST(ViewScript, AMissingFileIsNamed) {
 }
 
 }  // namespace
-}  // namespace trailray::app::view
+}  // namespace trailray::ui
