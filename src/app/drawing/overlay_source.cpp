@@ -1,5 +1,6 @@
 #include "app/drawing/overlay_source.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/pictures/heatmap_output.hpp"

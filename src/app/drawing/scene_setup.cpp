@@ -1,5 +1,6 @@
 #include "app/drawing/scene_setup.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <cmath>

@@ -3,10 +3,12 @@
 // track/airspace/infringement.hpp for how each limit is compared). Exit status 1 when any
 // infringement is found, 0 when none, 2 for a usage error.
 
-#include <CLI/CLI.hpp>
-
 #include "app/flight/airspace_check.hpp"
 #include "app/options/terrain_options.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

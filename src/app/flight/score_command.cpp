@@ -1,5 +1,6 @@
 #include "app/flight/score_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <chrono>

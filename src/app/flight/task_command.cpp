@@ -1,5 +1,6 @@
 #include "app/flight/task_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <iostream>

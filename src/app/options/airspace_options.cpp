@@ -1,5 +1,6 @@
 #include "app/options/airspace_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -3,8 +3,6 @@
 // drawn as translucent volumes around the tracks (scene/volumes/airspace_volumes.hpp), and the setup
 // that reads it into the scene's VolumeSet.
 
-#include <CLI/CLI.hpp>
-
 #include <limits>
 #include <optional>
 #include <string>
@@ -17,6 +15,10 @@
 #include "scene/tracks/track_set.hpp"
 #include "scene/volumes/volumes.hpp"
 #include "terrain/sources/tile_source.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,6 @@
 #include "app/options/camera_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <charconv>

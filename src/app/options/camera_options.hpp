@@ -2,14 +2,16 @@
 // Where the picture is taken from, as options spelled the same in `render` and `view`: --camera,
 // --look-at, --distance, --heading, --pitch, --fov, and the image's --size.
 
-#include <CLI/CLI.hpp>
-
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "scene/camera/camera.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

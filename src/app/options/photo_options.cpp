@@ -1,5 +1,6 @@
 #include "app/options/photo_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <filesystem>

@@ -4,8 +4,6 @@
 // placed on the command's tracks (track/photos/photo_placement). One function reads and places
 // for a set of tracks and says on the diagnostics what it could not do, photo by photo.
 
-#include <CLI/CLI.hpp>
-
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,6 +11,10 @@
 #include "scene/diagnostics.hpp"
 #include "track/model.hpp"
 #include "track/photos/photo_placement.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

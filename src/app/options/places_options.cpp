@@ -1,5 +1,6 @@
 #include "app/options/places_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 
 #include "track/places/osm_places_reader.hpp"

@@ -4,13 +4,15 @@
 // summits each track reached and the huts it passed; the drawing commands label the peaks,
 // saddles, passes, huts, settlements and lakes around the tracks.
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
 #include "geo/bounds.hpp"
 #include "track/places/place.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -6,13 +6,15 @@
 // (--no-labels, --label-size, --hidden-labels). Parsing checks
 // every value and names the option in its error.
 
-#include <CLI/CLI.hpp>
-
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/style.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

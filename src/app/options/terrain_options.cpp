@@ -1,5 +1,6 @@
 #include "app/options/terrain_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cctype>
 
 namespace trailray::app {

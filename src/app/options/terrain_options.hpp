@@ -3,11 +3,14 @@
 // --terrain, --terrain-encoding, --terrain-scheme, --terrain-zoom, --offline, --config. They
 // override the configuration file (terrain/sources/terrain_config.hpp), which overrides the defaults.
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
 #include "terrain/sources/terrain_config.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,6 @@
 #include "app/options/track_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cctype>
 #include <map>
 

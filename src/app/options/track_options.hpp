@@ -1,10 +1,12 @@
 #pragma once
 // Options about reading and cleaning tracks, spelled the same in every command.
 
-#include <CLI/CLI.hpp>
-
 #include "track/diagnostics.hpp"
 #include "track/summary.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,7 @@
 #include "app/options/waypoint_options.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include "app/options/places_options.hpp"
 
 #include "track/scoring/rules.hpp"

@@ -8,12 +8,14 @@
 // climb: on by default with --color-by phase, off otherwise); --places FILE (OpenStreetMap places
 // labelled around the tracks: app/options/places_options).
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
 #include "track/color_values.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

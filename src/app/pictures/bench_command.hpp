@@ -6,13 +6,15 @@
 // table, or with --json one document; progress goes to standard error. A benchmark: it prints
 // figures and never judges them (the exit status says only whether it ran).
 
-#include <CLI/CLI.hpp>
-
 #include <cstddef>
 #include <string_view>
 #include <vector>
 
 #include "scene/camera/camera.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,7 +1,9 @@
 #pragma once
 // `trailray elevation`: terrain height and height above ground at every point of a track.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -2,7 +2,9 @@
 // `trailray heatmap TRACK... -o OUT.tif`: how many tracks passed through each cell of a Web
 // Mercator grid (track/heatmap.hpp), as a GeoTIFF.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,6 @@
 #include "app/pictures/render_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

@@ -2,7 +2,9 @@
 // `trailray render`: a picture of the tracks on the terrain (or of the terrain from a camera) as
 // an sRGB PNG.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

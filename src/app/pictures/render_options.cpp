@@ -1,5 +1,6 @@
 #include "app/pictures/render_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 namespace trailray::app {

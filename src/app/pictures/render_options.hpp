@@ -2,12 +2,14 @@
 // `trailray render`'s options: what to draw (tracks, terrain, style), from where (camera), into
 // what (size, output) and how to report (verbose, profile).
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
 #include "app/options/picture_options.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

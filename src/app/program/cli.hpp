@@ -2,7 +2,9 @@
 // The command line: `trailray <command> [options]`. One parser (run_cli) over a table of commands;
 // each program of the split (app/program/program_router) runs the table of the commands it links.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

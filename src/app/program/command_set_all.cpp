@@ -1,5 +1,7 @@
 // trailray-full's commands: all of them, in the order `trailray --help` lists them.
 #include "app/flight/check_command.hpp"
+
+#include <CLI/CLI.hpp>
 #include "app/flight/flight_command.hpp"
 #include "app/flight/score_command.hpp"
 #include "app/flight/task_command.hpp"

@@ -2,6 +2,8 @@
 // films' encoders, the window or the HTTP server (app/program/program_router sends it render, elevation,
 // bench and check with --terrain). The track commands come along: they cost nothing more here.
 #include "app/flight/check_command.hpp"
+
+#include <CLI/CLI.hpp>
 #include "app/flight/flight_command.hpp"
 #include "app/flight/score_command.hpp"
 #include "app/flight/task_command.hpp"

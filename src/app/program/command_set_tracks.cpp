@@ -2,6 +2,8 @@
 // needs the terrain, GL, the encoders, the window or the server, so the program loads none of
 // their libraries (app/program/program_router hands every other command line to a program that does).
 #include "app/flight/check_command.hpp"
+
+#include <CLI/CLI.hpp>
 #include "app/flight/flight_command.hpp"
 #include "app/flight/score_command.hpp"
 #include "app/flight/task_command.hpp"

@@ -1,5 +1,6 @@
 #include "app/program/option_suggestion.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

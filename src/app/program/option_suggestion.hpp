@@ -4,10 +4,14 @@
 // something else the parser checks before it looks at what it did not know (CLI11 reports a
 // missing --output first).
 
-#include <CLI/CLI.hpp>
-
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,6 @@
 #include "app/serve/serve_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <sys/resource.h>
 
 #include <fmt/format.h>

@@ -2,7 +2,9 @@
 // `trailray serve`: the web app, the tracks of the command line and the terrain and imagery
 // sources as tiles, over HTTP (app/serve/), until SIGINT or SIGTERM.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,7 @@
 #include "app/serve/serve_config.hpp"
 
+#include <CLI/CLI.hpp>
+
 namespace trailray::app::serve {
 
 std::vector<const CLI::Option*> options_added_since(const CLI::App& command, std::size_t before) {

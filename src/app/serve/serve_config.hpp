@@ -10,7 +10,6 @@
 // and cleaning options given on the command line, by their long names, exactly as given: a
 // string, an array of strings for an option given several times, true for a flag.
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -20,6 +19,11 @@
 #include "app/serve/serve_site.hpp"
 #include "scene/text/legend.hpp"
 #include "terrain/sources/tile_source.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace trailray::app::serve {
 

@@ -1,5 +1,6 @@
 #include "app/tracks/convert_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

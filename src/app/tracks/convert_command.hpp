@@ -2,7 +2,9 @@
 // `trailray convert IN... -o OUT`: reads track files (any format trailray reads) and writes them
 // as one GPX, GeoJSON, CSV or KML file, chosen by OUT's extension (or --format).
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

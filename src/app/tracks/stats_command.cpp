@@ -1,6 +1,7 @@
 #include "app/common/terminal_diagnostics.hpp"
 #include "app/tracks/stats_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 

@@ -1,7 +1,9 @@
 #pragma once
 // `trailray stats [--json] TRACK...`: distance, time, climb and speeds per track.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,5 +1,6 @@
 #include "app/video/film_plan.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 #include "app/video/video_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,7 +1,9 @@
 #pragma once
 // `trailray video`: a film of tracks replayed on the terrain (MP4, WebM or PNG frames).
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

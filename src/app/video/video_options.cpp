@@ -1,5 +1,6 @@
 #include "app/video/video_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 namespace trailray::app {

@@ -3,12 +3,14 @@
 // for a fixed camera) added by the same functions, and the film's own: its length and frame
 // rate, the part of the tracks filmed, the camera's mode, the trail, the output.
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
 #include "app/options/picture_options.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -2,7 +2,9 @@
 // `trailray view`: the tracks in a window, to fly around, inspect and replay. The
 // window and its loop are app/view/viewer_app.hpp's; this file is the command line.
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace trailray::app {
 

@@ -1,6 +1,7 @@
 // A mistyped option is named first, with the nearest one that exists (app/program/option_suggestion).
 #include "app/program/option_suggestion.hpp"
 
+#include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
 #include "app/run_command.hpp"

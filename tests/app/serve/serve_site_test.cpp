@@ -1,6 +1,7 @@
 // The pieces of `trailray serve` that decide what a request names: the strict reading of the
 // target, the web root's containment, tile ids in paths, loopback hosts, content types, the
 // configuration's options.
+#include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
 #include <fstream>
