@@ -13,6 +13,7 @@
 #include "app/drawing/overlay_source.hpp"
 #include "app/options/airspace_options.hpp"
 #include "app/options/places_options.hpp"
+#include "scene/camera/first_camera.hpp"
 #include "scene/pictures/overlaid_imagery.hpp"
 #include "scene/pins/place_labels.hpp"
 #include "scene/pins/scored_route.hpp"
@@ -194,51 +195,14 @@ scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& le
                              double neutral_ground_m, terrain::HeightSource* heights,
                              const scene::KeptClearCorner& keep_clear, const std::optional<scene::ImageArea>& area,
                              const scene::WaypointSet* waypoints, scene::Diagnostics* diagnostics) {
-  if (request.placement || request.look_at) {
-    const scene::GeoPosition& where = request.placement ? request.placement->position : request.look_at->target;
-    double ground = ground_height_at(heights, where.lat_deg, where.lon_deg);
-    if (std::isnan(ground)) ground = neutral_ground_m;
-    auto made = request.placement ? scene::camera_at(*request.placement, lens, ground)
-                                  : scene::camera_looking_at(*request.look_at, lens, ground);
-    if (!made.ok()) throw CLI::ValidationError(request.placement ? "--camera" : "--look-at", made.error);
-    return std::move(*made.value);
+  const scene::GroundHeight ground = [heights](double lat, double lon) { return ground_height_at(heights, lat, lon); };
+  try {
+    return scene::first_camera(request, lens, tracks, waypoints, neutral_ground_m, ground, {keep_clear, area},
+                               diagnostics);
+  } catch (const scene::FirstCameraError& e) {
+    if (e.option().empty()) throw std::runtime_error(e.what());
+    throw CLI::ValidationError(e.option(), e.why());  // a usage error naming the option
   }
-  scene::FramingOptions framing;
-  framing.lens = lens;
-  framing.keep_clear = keep_clear;
-  framing.area = area;
-  bool any_track_point = false;
-  for (const scene::Track& t : tracks.tracks()) any_track_point = any_track_point || (t.visible && t.point_count() > 0);
-  if (!any_track_point && waypoints != nullptr && !waypoints->points.empty()) {
-    std::vector<scene::GeoPosition> points;
-    for (const scene::Waypoint& w : waypoints->points) {
-      const double height = std::isnan(w.ele_m) ? w.ground_m : w.ele_m;
-      points.push_back({w.lat_deg, w.lon_deg, std::isnan(height) ? neutral_ground_m : height});
-    }
-    auto framed = scene::frame_points(points, framing);
-    if (!framed.ok()) throw std::runtime_error("cannot frame the waypoints: " + framed.error);
-    return framed.value->camera;
-  }
-  // Tracks far apart (a pilot's flights over several countries, or both sides of the Earth): the
-  // largest group of them near each other, as one view of them all would show little but the
-  // globe; the others are a fly-to away in the viewer, or a --camera away.
-  const std::vector<const scene::Track*> group = scene::largest_track_group(tracks);
-  std::size_t visible = 0;
-  for (const scene::Track& t : tracks.tracks()) visible += t.visible && t.point_count() > 0 ? 1 : 0;
-  if (!group.empty() && group.size() < visible) {
-    auto grouped = scene::frame_tracks(group, framing);
-    if (grouped.ok()) {
-      if (diagnostics != nullptr)
-        diagnostics->warning(
-            fmt::format("the tracks lie too far apart for one view: it shows the {} of {} within "
-                        "{:.0f} km of each other",
-                        group.size(), visible, scene::kTrackGroupRadiusM / 1000.0));
-      return grouped.value->camera;
-    }
-  }
-  auto framed = scene::frame_tracks(tracks, framing);
-  if (!framed.ok()) throw std::runtime_error("cannot frame the tracks: " + framed.error);
-  return framed.value->camera;
 }
 
 }  // namespace trailray::app

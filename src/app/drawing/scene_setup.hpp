@@ -105,12 +105,11 @@ scene::TaskDrawing task_drawing_of(const std::string& task_file, double highest_
 // The sun's time: --time when given, else the tracks' day at noon (scene::default_sun_time).
 double sun_time(const std::optional<double>& given, const scene::RecordedPoints& recorded);
 
-// The first camera: the request's (never changed; on the terrain's height there, else on the
-// neutral ground), else one framing the visible tracks out of `keep_clear` (where the legend will
-// be drawn), into `area` of the image (nullopt: all of it); without a track point, the waypoints
-// (files of waypoints alone). Tracks too far apart for one view: the largest group of them near
-// each other (scene::largest_track_group), with a warning to `diagnostics`. Throws CLI::ValidationError for a camera
-// the options make impossible, std::runtime_error when nothing can be framed.
+// The first camera as the command line makes it: scene::first_camera (scene/camera/first_camera:
+// the request's, else the visible tracks framed out of `keep_clear` into `area`, else the
+// waypoints) with the ground's height under a requested camera sampled from `heights`. Throws
+// CLI::ValidationError naming --camera or --look-at for a camera the options make impossible,
+// std::runtime_error when nothing can be framed.
 scene::Camera initial_camera(const CameraRequest& request, const scene::Lens& lens, const scene::TrackSet& tracks,
                              double neutral_ground_m, terrain::HeightSource* heights,
                              const scene::KeptClearCorner& keep_clear = {},

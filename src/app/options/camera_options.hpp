@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "scene/camera/camera.hpp"
+#include "scene/camera/first_camera.hpp"
 
 namespace CLI {
 class App;
@@ -23,10 +24,7 @@ struct CameraArgs {
 void add_camera_options(CLI::App& command, CameraArgs& args);
 
 // The camera the options ask for: a placement, a look-at, or neither (frame the tracks).
-struct CameraRequest {
-  std::optional<scene::CameraPlacement> placement;
-  std::optional<scene::LookAt> look_at;
-};
+using CameraRequest = scene::CameraRequest;
 // Throws CLI::ValidationError naming the option: --camera with --look-at, --distance/--heading/
 // --pitch without --look-at, no camera and no track (`have_tracks` false), unparsable text.
 CameraRequest parse_camera_request(const CameraArgs& args, bool have_tracks);
