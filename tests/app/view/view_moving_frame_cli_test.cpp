@@ -9,8 +9,8 @@
 #include <regex>
 #include <string>
 
-#include "track_cli_support.hpp"
-#include "xvfb_command.hpp"
+#include "app/track_cli_support.hpp"
+#include "app/xvfb_command.hpp"
 
 namespace trailray::test {
 namespace {

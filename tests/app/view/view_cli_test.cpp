@@ -16,9 +16,9 @@
 #include "app/view/viewer_ui.hpp"
 #include "scene/text/legend.hpp"
 #include "scene/text/text_raster.hpp"
-#include "track_cli_support.hpp"
+#include "app/track_cli_support.hpp"
 #include "ui/panel_layout.hpp"
-#include "xvfb_command.hpp"
+#include "app/xvfb_command.hpp"
 
 namespace trailray::test {
 namespace {
