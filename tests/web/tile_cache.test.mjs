@@ -112,7 +112,11 @@ test('a reload with the server stopped starts the page and draws the terrain see
   const after = await status(page);
   assert.equal(after.tracks.length, 1, 'the served track, from the cache');
   assert.deepEqual(after.tile_failures, []);
-  assert.deepEqual(after.tiles, before.tiles, 'the same tiles, every one from the cache');
+  // The tiles the view has; not `kept`/`dropped`, the fetched tiles waiting for the loader at that
+  // moment (those that arrive after the view moved on wait there, bounded), which depend on
+  // when the answers came: from the cache, faster than from serve.
+  const drawn = ({ wanted, loaded, no_data, failed }) => ({ wanted, loaded, no_data, failed });
+  assert.deepEqual(drawn(after.tiles), drawn(before.tiles), 'the same tiles, every one from the cache');
   const again = await canvasPixels(page);
   // The same tiles, view and renderer (SwiftShader is deterministic): the same picture, up to
   // rounding in the blending of the frame (well under 1 of 255 on average).
